@@ -1,0 +1,60 @@
+// Collision handlers: after the integrator's prediction, detect and respond to collisions.
+#pragma once
+
+#include "fosssim/core/collision_log.h"
+#include "fosssim/core/scene.h"
+#include "fosssim/core/state.h"
+#include "fosssim/core/status.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace fosssim {
+
+/// Receives the state in the middle of collision handling (handlers whose layout has midStep):
+/// a trajectory writer records it; the grader compares it and may replace it with its own.
+class StepObserver {
+ public:
+  virtual ~StepObserver() = default;
+  virtual void midStep(const CollisionLog& log, State& state) = 0;
+};
+
+/// Choices that do not belong to the scene file.
+struct HandlerOptions {
+  /// Reproduce the reference simulator's own formulas where they differ from exact mathematics
+  /// (the particle-edge approach quintic; see README "Course compatibility").
+  bool compat = false;
+};
+
+/// Everything a handler may use during one step besides the scene and the two states.
+struct StepContext {
+  double dt = 0;
+  CollisionLog* log = nullptr;          ///< never null; polynomials only if log->polynomials.enabled()
+  StepObserver* observer = nullptr;     ///< may be null
+};
+
+class CollisionHandler {
+ public:
+  virtual ~CollisionHandler() = default;
+  /// start: the state at the beginning of the step; state: the integrator's prediction, changed
+  /// in place into the collision-free end of the step.
+  virtual Status handle(const Scene& scene, const State& start, State& state, StepContext& ctx) = 0;
+};
+
+/// One row of the collision table: the keyword of <collision type="..."> and what it builds.
+struct CollisionEntry {
+  const char* keyword;
+  /// Builds the handler; nullptr for types without one ("none", "penalty").
+  std::unique_ptr<CollisionHandler> (*make)(const CollisionSettings&, const HandlerOptions&);
+  bool addsPenaltyForce;   ///< the loader adds a PenaltyForce with the defaults below
+  double defaultK;         ///< penalty stiffness when the scene gives none
+  double defaultThickness; ///< penalty thickness when the scene gives none
+  RecordLayout layout;     ///< what this type writes into trajectory records
+  const char* summary;
+};
+
+const std::vector<CollisionEntry>& collisionTable();
+const CollisionEntry* findCollisionType(const std::string& keyword);
+
+}  // namespace fosssim

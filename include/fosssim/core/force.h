@@ -1,0 +1,39 @@
+// The force interface. Forces follow the reference's convention of "gradient of the potential":
+// each adds dE/dx = -F to a gradient vector, also forces that have no potential (damping, vortex),
+// so that F = -sum of gradients. Jacobians are likewise of -F: dE2/dx2 (the Hessian) and -dF/dv.
+#pragma once
+
+#include "fosssim/core/types.h"
+
+namespace fosssim {
+
+struct Scene;
+
+class Force {
+ public:
+  virtual ~Force() = default;
+
+  /// The XML element that creates this force (for messages and reports).
+  virtual const char* keyword() const = 0;
+
+  /// Potential energy at (x, v); 0 for forces that have none (see hasPotential()).
+  virtual double energy(const Scene& scene, const VecX& x, const VecX& v) const;
+
+  /// Adds -F(x, v) to gradE (size 2N).
+  virtual void addGradient(const Scene& scene, const VecX& x, const VecX& v, VecX& gradE) const = 0;
+
+  /// Adds -dF/dx at (x, v) as 2N x 2N triplets (nothing when hasJacobians() is false).
+  virtual void addJacobianX(const Scene& scene, const VecX& x, const VecX& v, Triplets& out) const;
+
+  /// Adds -dF/dv at (x, v) as 2N x 2N triplets.
+  virtual void addJacobianV(const Scene& scene, const VecX& x, const VecX& v, Triplets& out) const;
+
+  /// False for forces whose Jacobians are not provided (vortex, penalty): implicit integrators
+  /// then treat them explicitly, and the loader warns.
+  virtual bool hasJacobians() const { return true; }
+
+  /// True when energy() is a potential whose gradient is addGradient (conservative forces).
+  virtual bool hasPotential() const { return false; }
+};
+
+}  // namespace fosssim

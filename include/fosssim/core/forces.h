@@ -1,0 +1,115 @@
+// The concrete forces of the scene format. Each documents its formula; the derivations of the
+// Jacobians are in the .cpp files, and tests/core/forces_test.cpp checks every one of them
+// against finite differences.
+#pragma once
+
+#include "fosssim/core/force.h"
+#include "fosssim/core/scene.h"
+
+namespace fosssim {
+
+/// <springforce edge k l0 b>: E = k/2 (l - l0)^2 with l = |x_j - x_i|, plus the damping force
+/// -b ((v_j - v_i) . n) n on j (and its opposite on i), n = (x_j - x_i)/l.
+class SpringForce final : public Force {
+ public:
+  SpringForce(int i, int j, double k, double l0, double b) : i_(i), j_(j), k_(k), l0_(l0), b_(b) {}
+  const char* keyword() const override { return "springforce"; }
+  double energy(const Scene&, const VecX& x, const VecX& v) const override;
+  void addGradient(const Scene&, const VecX& x, const VecX& v, VecX& gradE) const override;
+  void addJacobianX(const Scene&, const VecX& x, const VecX& v, Triplets& out) const override;
+  void addJacobianV(const Scene&, const VecX& x, const VecX& v, Triplets& out) const override;
+  bool hasPotential() const override { return b_ == 0.0; }
+
+ private:
+  int i_, j_;
+  double k_, l0_, b_;
+};
+
+/// <simplegravity fx fy>: the force m g on every particle; E = -sum m_i g . x_i.
+class SimpleGravityForce final : public Force {
+ public:
+  explicit SimpleGravityForce(const Vec2& g) : g_(g) {}
+  const char* keyword() const override { return "simplegravity"; }
+  double energy(const Scene&, const VecX& x, const VecX& v) const override;
+  void addGradient(const Scene&, const VecX& x, const VecX& v, VecX& gradE) const override;
+  bool hasPotential() const override { return true; }
+
+ private:
+  Vec2 g_;
+};
+
+/// <constantforce fx fy>: the same force f on every particle; E = -sum f . x_i.
+class ConstantForce final : public Force {
+ public:
+  explicit ConstantForce(const Vec2& f) : f_(f) {}
+  const char* keyword() const override { return "constantforce"; }
+  double energy(const Scene&, const VecX& x, const VecX& v) const override;
+  void addGradient(const Scene&, const VecX& x, const VecX& v, VecX& gradE) const override;
+  bool hasPotential() const override { return true; }
+
+ private:
+  Vec2 f_;
+};
+
+/// <gravitationalforce i j G>: E = -G m_i m_j / |x_j - x_i|.
+class GravitationalForce final : public Force {
+ public:
+  GravitationalForce(int i, int j, double G) : i_(i), j_(j), G_(G) {}
+  const char* keyword() const override { return "gravitationalforce"; }
+  double energy(const Scene&, const VecX& x, const VecX& v) const override;
+  void addGradient(const Scene&, const VecX& x, const VecX& v, VecX& gradE) const override;
+  void addJacobianX(const Scene&, const VecX& x, const VecX& v, Triplets& out) const override;
+  bool hasPotential() const override { return true; }
+
+ private:
+  int i_, j_;
+  double G_;
+};
+
+/// <dragdamping b>: the force -b v on every particle.
+class DragDampingForce final : public Force {
+ public:
+  explicit DragDampingForce(double b) : b_(b) {}
+  const char* keyword() const override { return "dragdamping"; }
+  void addGradient(const Scene&, const VecX& x, const VecX& v, VecX& gradE) const override;
+  void addJacobianV(const Scene&, const VecX& x, const VecX& v, Triplets& out) const override;
+
+ private:
+  double b_;
+};
+
+/// <vortexforce i j kbs kvc>: with r = x_j - x_i, rhat = r/|r|, perp(a, b) = (-b, a):
+/// F_j = kvc/|r|^2 (kbs perp(rhat) - (v_j - v_i)), F_i = -F_j. No energy, no Jacobian (as in the
+/// reference), so implicit integrators treat it explicitly.
+class VortexForce final : public Force {
+ public:
+  VortexForce(int i, int j, double kbs, double kvc) : i_(i), j_(j), kbs_(kbs), kvc_(kvc) {}
+  const char* keyword() const override { return "vortexforce"; }
+  void addGradient(const Scene&, const VecX& x, const VecX& v, VecX& gradE) const override;
+  bool hasJacobians() const override { return false; }
+
+ private:
+  int i_, j_;
+  double kbs_, kvc_;
+};
+
+/// The penalty force of <collision type="penalty"> and "hybrid": for every pair closer than
+/// r_sum + thickness, E = k/2 (|n| - r_sum - thickness)^2 where n is the vector from the particle
+/// to the other object's closest point (particle-particle, particle-edge with the edge endpoints
+/// weighted 1-alpha and alpha, particle-half-plane). Gradient only, as in the reference.
+class PenaltyForce final : public Force {
+ public:
+  PenaltyForce(double k, double thickness) : k_(k), thickness_(thickness) {}
+  const char* keyword() const override { return "collision penalty"; }
+  double energy(const Scene&, const VecX& x, const VecX& v) const override;
+  void addGradient(const Scene&, const VecX& x, const VecX& v, VecX& gradE) const override;
+  bool hasJacobians() const override { return false; }
+  bool hasPotential() const override { return true; }
+  double stiffness() const { return k_; }
+  double thickness() const { return thickness_; }
+
+ private:
+  double k_, thickness_;
+};
+
+}  // namespace fosssim

@@ -1,0 +1,94 @@
+// What a scene *is*: everything about a simulation that does not change while it runs.
+// What changes (positions, velocities, time) lives in State (state.h). A step reads a Scene and
+// advances a State, so one Scene can drive many States (the grader, the study, the benchmarks).
+#pragma once
+
+#include "fosssim/core/force.h"
+#include "fosssim/core/types.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace fosssim {
+
+/// A capsule between two particles: the set of points within `radius` of the segment i-j.
+struct Edge {
+  int i = 0;              ///< first endpoint (particle index)
+  int j = 0;              ///< second endpoint (particle index), j != i
+  double radius = 0.015;  ///< capsule radius (the reference's default)
+};
+
+/// A half-plane obstacle. The free side is where (x - point) . normal > 0.
+struct HalfPlane {
+  Vec2 point = Vec2::Zero();   ///< a point on the boundary line
+  Vec2 normal = Vec2::UnitY(); ///< points to the free side; kept unnormalised, as the reference does
+                               ///< (it enters the logged polynomials), never zero
+};
+
+/// How collisions are handled. The keyword selects an entry of collisionHandlerTable().
+struct CollisionSettings {
+  std::string type = "none";  ///< "none", "simple", "continuous-time", "penalty" or "hybrid"
+  double cor = 1.0;           ///< coefficient of restitution, 1 elastic .. 0 inelastic
+  int maxIterations = 10;     ///< hybrid: impulse passes before the failsafe; <= 0 means none
+  double penaltyK = 0.0;      ///< penalty / hybrid: stiffness of the penalty force (informative;
+  double penaltyThickness = 0.0;  ///< the force itself is in Scene::forces)
+};
+
+/// The static description of a particle system.
+struct Scene {
+  // --- particles: N of them -------------------------------------------------------------------
+  VecX mass;                  ///< 2N: particle i's mass at rows 2i and 2i+1 (the diagonal of M)
+  std::vector<char> fixed;    ///< N: 1 if the particle never moves (infinite mass in collisions)
+  std::vector<double> radius; ///< N: disk radius, > 0
+
+  // --- other geometry -------------------------------------------------------------------------
+  std::vector<Edge> edges;           ///< capsules, in file order (springs refer to them by index)
+  std::vector<HalfPlane> halfplanes; ///< in file order
+
+  // --- dynamics -------------------------------------------------------------------------------
+  /// Forces in the reference's summation order (springs, simple gravity, gravitational, constant,
+  /// drag, vortex, then the collision penalty), which fixes the floating-point result.
+  std::vector<std::unique_ptr<Force>> forces;
+  std::string integrator = "explicit-euler";  ///< keyword of integratorTable()
+  double dt = 0.01;                           ///< time step, > 0
+  double duration = 0.0;                      ///< simulated time; the run has numSteps() steps
+  CollisionSettings collision;
+
+  int numParticles() const { return static_cast<int>(radius.size()); }
+  bool isFixed(int i) const { return fixed[i] != 0; }
+  double massOf(int i) const { return mass[2 * i]; }
+  /// Steps in a full run: ceil(duration / dt), computed exactly as the reference does.
+  long numSteps() const;
+  /// True when some force provides no Jacobian (implicit integrators then cannot be exact).
+  bool allForcesHaveJacobians() const;
+
+  Scene() = default;
+  Scene(Scene&&) noexcept = default;
+  Scene& operator=(Scene&&) noexcept = default;
+  Scene(const Scene&) = delete;
+  Scene& operator=(const Scene&) = delete;
+};
+
+/// A particle's constant properties, for building scenes.
+struct ParticleSpec {
+  double mass = 1.0;
+  bool fixed = false;
+  double radius = 0.1;
+};
+
+/// Appends particles to a scene under construction (one resize for the whole batch).
+void addParticles(Scene& scene, const std::vector<ParticleSpec>& particles);
+/// Appends one particle (convenient for small hand-made scenes).
+void addParticle(Scene& scene, double mass, bool fixed, double radius);
+
+/// Sum of the gradients of all the scene's forces at (x, v): minus the total force (size 2N).
+void accumulateGradient(const Scene& scene, const VecX& x, const VecX& v, VecX& gradE);
+
+/// Total potential energy of the scene's forces that have one.
+double potentialEnergy(const Scene& scene, const VecX& x, const VecX& v);
+
+/// Kinetic energy 1/2 v^T M v.
+double kineticEnergy(const Scene& scene, const VecX& v);
+
+}  // namespace fosssim

@@ -1,0 +1,30 @@
+// Basic numeric types shared by every layer above the math library.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include <vector>
+
+namespace fosssim {
+
+using Vec2 = Eigen::Vector2d;   ///< a point, displacement or force in the plane
+using Mat2 = Eigen::Matrix2d;   ///< a 2x2 block of a Jacobian
+using VecX = Eigen::VectorXd;   ///< a flat per-degree-of-freedom vector: size 2N, particle i at rows 2i, 2i+1
+using SparseMat = Eigen::SparseMatrix<double>;
+using Triplets = std::vector<Eigen::Triplet<double>>;
+
+/// The 2-vector of particle i inside a flat 2N vector.
+inline auto at(VecX& q, int i) { return q.segment<2>(2 * i); }
+inline auto at(const VecX& q, int i) { return q.segment<2>(2 * i); }
+
+/// Adds a 2x2 block at block position (bi, bj) of a 2N x 2N sparse matrix under construction.
+inline void addBlock(Triplets& out, int bi, int bj, const Mat2& block) {
+  for (int r = 0; r < 2; ++r)
+    for (int c = 0; c < 2; ++c) out.emplace_back(2 * bi + r, 2 * bj + c, block(r, c));
+}
+
+/// 2D cross product (the z component of the 3D cross product of (a,0) and (b,0)).
+inline double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+}  // namespace fosssim

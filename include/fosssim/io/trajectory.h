@@ -1,0 +1,65 @@
+// Trajectory files in the reference's binary layout (raw little-endian records, no header):
+//   x: 2N float64, v: 2N float64,
+//   if layout.impulses:    int32 count, count x (int32 kind, int32 i, int32 j, float64 nx, ny, time)
+//   if layout.polynomials: int32 count, count x (int32 length, length x float64, highest power first)
+// Record 0 is the initial state; a step writes one record, or two when layout.midStep (one from
+// inside collision handling, then the end of the step).
+#pragma once
+
+#include "fosssim/core/collision_log.h"
+#include "fosssim/core/state.h"
+#include "fosssim/core/status.h"
+
+#include <cstdint>
+#include <fstream>
+#include <memory>
+#include <string>
+
+namespace fosssim {
+
+/// One record as read from a file.
+struct TrajectoryRecord {
+  VecX x, v;  ///< 2N each
+  CollisionLog log;
+};
+
+class TrajectoryWriter {
+ public:
+  /// Creates (truncates) the file.
+  static Status open(const std::string& path, RecordLayout layout, std::unique_ptr<TrajectoryWriter>& out);
+  Status write(const State& state, const CollisionLog& log);
+  Status close();
+
+ private:
+  TrajectoryWriter() = default;
+  std::string path_;
+  RecordLayout layout_;
+  std::ofstream out_;
+  std::string buffer_;
+};
+
+class TrajectoryReader {
+ public:
+  /// Opens a file for a scene of `numParticles` particles whose records have `layout`.
+  static Status open(const std::string& path, int numParticles, RecordLayout layout,
+                     std::unique_ptr<TrajectoryReader>& out);
+  /// Reads the next record. At a clean end of the file returns ok with `atEnd` true; a record
+  /// that does not fit (truncated, negative or absurd counts) is an error naming record and byte.
+  Status next(TrajectoryRecord& record, bool& atEnd);
+  long recordsRead() const { return records_; }
+  std::uint64_t fileSize() const { return size_; }
+
+ private:
+  TrajectoryReader() = default;
+  Status fail(const std::string& what) const;
+  bool readBytes(void* into, std::uint64_t bytes);
+  std::string path_;
+  int n_ = 0;
+  RecordLayout layout_;
+  std::ifstream in_;
+  std::uint64_t size_ = 0, offset_ = 0;
+  long records_ = 0;
+  std::vector<double> scratch_;
+};
+
+}  // namespace fosssim

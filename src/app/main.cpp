@@ -1,0 +1,87 @@
+// FOSSSim's command line: load, then grade (-i), show (window) or run headless.
+#include "frontends.h"
+#include "options.h"
+#include "outputs.h"
+
+#include "fosssim/core/simulator.h"
+#include "fosssim/io/grader.h"
+#include "fosssim/io/scene_file.h"
+
+#include <cstdio>
+#include <iostream>
+
+namespace fosssim::app {
+namespace {
+
+constexpr int kExitOk = 0;
+constexpr int kExitFailure = 1;  ///< bad input, failed simulation, failed grade
+constexpr int kExitUsage = 2;    ///< bad command line
+
+int fail(const std::string& message) {
+  std::fprintf(stderr, "FOSSSim: error: %s\n", message.c_str());
+  return kExitFailure;
+}
+
+/// Runs every step without a window, feeding the observers.
+int runHeadless(SceneFile& file, Simulator& simulator, ObserverList& observers) {
+  State state = file.initial;
+  Status status = Status::ok();
+  for (auto& o : observers.items)
+    if (status) status = o->start(file, state, simulator.layout());
+  for (long k = 0, steps = file.scene.numSteps(); status && k < steps; ++k) {
+    status = simulator.step(file.scene, state, &observers);
+    for (auto& o : observers.items)
+      if (status) status = o->afterStep(file, state, simulator.log());
+  }
+  for (auto& o : observers.items) {
+    Status finished = o->finish();
+    if (status && !finished) status = finished;
+  }
+  return status ? kExitOk : fail(status.message());
+}
+
+int run(int argc, char** argv) {
+  Options options;
+  std::string error;
+  if (!parseOptions(argc, argv, options, error)) {
+    std::fprintf(stderr, "FOSSSim: %s\n", error.c_str());
+    return kExitUsage;
+  }
+  if (options.help) {
+    std::fputs(usage().c_str(), stdout);
+    return kExitOk;
+  }
+
+  SceneFile file;
+  if (Status s = loadScene(options.scene, file); !s) return fail(s.message());
+  for (const auto& w : file.warnings) std::fprintf(stderr, "FOSSSim: warning: %s\n", w.c_str());
+  if (!options.quiet && !file.description.empty()) std::fprintf(stderr, "%s\n", file.description.c_str());
+
+  SimulatorOptions simOptions;
+  simOptions.handler.compat = options.compat;
+  simOptions.logPolynomials = !options.output.empty() || !options.input.empty();
+  std::unique_ptr<Simulator> simulator;
+  if (Status s = Simulator::create(file.scene, simOptions, simulator); !s) return fail(s.message());
+
+  if (!options.input.empty()) {
+    const GradeReport report = gradeTrajectory(file.scene, file.initial, *simulator, options.input, std::cout);
+    return report.passed(GradeTolerances{}) ? kExitOk : kExitFailure;
+  }
+
+  ObserverList observers;
+  if (!options.output.empty()) observers.items.push_back(std::make_unique<TrajectoryOutput>(options.output));
+  if (Status s = addPictureOutputs(options, file, observers); !s) return fail(s.message());
+
+  if (options.display) {
+    std::string why;
+    if (windowAvailable(why)) return runWindow(options, file, *simulator, observers);
+    std::fprintf(stderr, "FOSSSim: no window (%s); running headless\n", why.c_str());
+  }
+  if (!options.quiet) observers.items.push_back(std::make_unique<ProgressOutput>());
+  return runHeadless(file, *simulator, observers);
+}
+
+}  // namespace
+}  // namespace fosssim::app
+
+int main(int argc, char** argv) { return fosssim::app::run(argc, argv); }

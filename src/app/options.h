@@ -1,0 +1,34 @@
+// The command line, parsed. The reference's flags keep their meanings and defaults.
+#pragma once
+
+#include <string>
+
+namespace fosssim::app {
+
+struct Options {
+  std::string scene;        ///< -s: the scene file (required)
+  bool display = true;      ///< -d 0|1: open a window (default 1; falls back to headless without a display)
+  bool paused = true;       ///< -p 0|1: the window starts paused (default 1)
+  bool pngs = false;        ///< -g 0|1: write pngs/frame%05d.png after every step
+  std::string output;       ///< -o: write a trajectory file
+  std::string input;        ///< -i: grade a trajectory file
+  std::string svgDir;       ///< -m: write an SVG per step into this folder
+  bool compat = false;      ///< --compat: reproduce the reference's formulas bit for bit
+  bool verify = false;      ///< --verify: check every step for missed collisions and non-finite states
+  bool quiet = false;       ///< -q: no progress output
+  int frameWidth = 512;     ///< --frame-size WxH
+  int frameHeight = 512;
+  int frameEvery = 1;       ///< --frame-every K: write only every K-th frame
+  std::string pngDir = "pngs";  ///< --png-dir: where -g writes
+  std::string movie;        ///< --movie out.mp4: frames piped into ffmpeg
+  double fps = 30;          ///< --fps for --movie
+  bool help = false;        ///< -h / --help
+};
+
+/// Parses argv. On error returns false and sets `error` to a one-line message.
+bool parseOptions(int argc, char** argv, Options& options, std::string& error);
+
+/// The usage text of -h.
+std::string usage();
+
+}  // namespace fosssim::app

@@ -1,0 +1,33 @@
+// The collision table: every keyword of <collision type="..."> and what it builds.
+#include "collision_handlers.h"
+
+namespace fosssim {
+namespace {
+
+std::unique_ptr<CollisionHandler> makeSimple(const CollisionSettings& s, const HandlerOptions&) {
+  return std::make_unique<SimpleHandler>(s);
+}
+
+}  // namespace
+
+const std::vector<CollisionEntry>& collisionTable() {
+  //                                  impulses polynomials midStep
+  static const RecordLayout kNothing{false, false, false};
+  static const RecordLayout kImpulses{true, false, false};
+  static const std::vector<CollisionEntry> table = {
+      {"none", nullptr, false, 0.0, 0.0, kNothing, "no collision handling"},
+      {"simple", makeSimple, false, 0.0, 0.0, kImpulses,
+       "discrete: overlapping, approaching pairs at the end of the step get an impulse"},
+      {"penalty", nullptr, true, 100.0, 0.01, kNothing,
+       "a penalty force pushes apart pairs closer than their radii plus a thickness"},
+  };
+  return table;
+}
+
+const CollisionEntry* findCollisionType(const std::string& keyword) {
+  for (const auto& entry : collisionTable())
+    if (keyword == entry.keyword) return &entry;
+  return nullptr;
+}
+
+}  // namespace fosssim

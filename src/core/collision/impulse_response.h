@@ -1,0 +1,75 @@
+// Internal header: the reference's impulse responses, written with inverse masses.
+//
+// The reference writes them with masses and treats fixed particles as infinitely heavy; e.g. for
+// particle-edge, D1 = 1 + (1-a)^2 m1/m2 + a^2 m1/m3. Factoring out m1 gives D1 = m1 W with
+//   W = w1 + (1-a)^2 w2 + a^2 w3,   w = 1/m, and w = 0 for a fixed particle,
+// and likewise D2 = m2 W, D3 = m3 W. So the velocity changes are
+//   dv1 = +N w1/W n,  dv2 = -(1-a) N w2/W n,  dv3 = -a N w3/W n,
+// with N = 2c (v_edge - v1) . n (c = (1 + COR)/2). This is the same formula without inf/inf or
+// 0*inf (which the mass form meets when several particles are fixed). Particle-particle is the
+// case a = 0 with particle 2 as the edge's first endpoint; particle-half-plane has w_other = 0:
+// dv1 = -2c (v1 . n) n.
+#pragma once
+
+#include "fosssim/core/scene.h"
+
+namespace fosssim {
+
+/// Velocity changes of at most three particles.
+struct VelocityChange {
+  int count = 0;
+  int particle[3] = {0, 0, 0};
+  Vec2 dv[3] = {Vec2::Zero(), Vec2::Zero(), Vec2::Zero()};
+  void add(int p, const Vec2& change) {
+    particle[count] = p;
+    dv[count] = change;
+    ++count;
+  }
+};
+
+inline double inverseMass(const Scene& scene, int i) {
+  return scene.isFixed(i) ? 0.0 : 1.0 / scene.massOf(i);
+}
+
+/// Particles i and j with velocities vi, vj, contact vector n from i to j.
+inline VelocityChange particleParticleResponse(const Scene& scene, int i, int j, const Vec2& n,
+                                               double cor, const Vec2& vi, const Vec2& vj) {
+  VelocityChange out;
+  const double wi = inverseMass(scene, i), wj = inverseMass(scene, j), w = wi + wj;
+  if (w == 0.0) return out;
+  const Vec2 nhat = n.normalized();
+  const double N = (1.0 + cor) * (vj - vi).dot(nhat);
+  if (wi != 0.0) out.add(i, N * wi / w * nhat);
+  if (wj != 0.0) out.add(j, -N * wj / w * nhat);
+  return out;
+}
+
+/// Particle i (velocity v1) against edge e (endpoint velocities v2, v3) at parameter alpha in
+/// [0, 1], contact vector n from the particle to the edge.
+inline VelocityChange particleEdgeResponse(const Scene& scene, int i, const Edge& e, double alpha,
+                                           const Vec2& n, double cor, const Vec2& v1, const Vec2& v2,
+                                           const Vec2& v3) {
+  VelocityChange out;
+  const double w1 = inverseMass(scene, i), w2 = inverseMass(scene, e.i), w3 = inverseMass(scene, e.j);
+  const double a = alpha, b = 1.0 - alpha;
+  const double W = w1 + b * b * w2 + a * a * w3;
+  if (W == 0.0) return out;
+  const Vec2 nhat = n.normalized();
+  const double N = (1.0 + cor) * (v2 + a * (v3 - v2) - v1).dot(nhat);
+  if (w1 != 0.0) out.add(i, N * w1 / W * nhat);
+  if (w2 != 0.0) out.add(e.i, -b * N * w2 / W * nhat);
+  if (w3 != 0.0) out.add(e.j, -a * N * w3 / W * nhat);
+  return out;
+}
+
+/// Particle i (velocity v1) against a half-plane, contact vector n toward the boundary.
+inline VelocityChange particleHalfPlaneResponse(const Scene& scene, int i, const Vec2& n, double cor,
+                                                const Vec2& v1) {
+  VelocityChange out;
+  if (scene.isFixed(i)) return out;
+  const Vec2 nhat = n.normalized();
+  out.add(i, -(1.0 + cor) * v1.dot(nhat) * nhat);
+  return out;
+}
+
+}  // namespace fosssim

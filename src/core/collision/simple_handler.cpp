@@ -1,0 +1,63 @@
+// The "simple" handler: discrete detection at the end of the step. In the reference's pair order,
+// a pair collides when it overlaps and approaches; its response changes velocities at once (later
+// pairs see it) and leaves positions alone. Impulses are recorded with time 0.
+#include "collision_handlers.h"
+#include "impulse_response.h"
+
+#include "fosssim/core/pair_geometry.h"
+
+#include <algorithm>
+
+namespace fosssim {
+namespace {
+
+void apply(const VelocityChange& change, VecX& v) {
+  for (int k = 0; k < change.count; ++k) at(v, change.particle[k]) += change.dv[k];
+}
+
+}  // namespace
+
+Status SimpleHandler::handle(const Scene& scene, const State&, State& state, StepContext& ctx) {
+  const VecX& x = state.x;
+  VecX& v = state.v;
+  const double cor = settings_.cor;
+  auto record = [&](PairKind kind, int i, int j, const Vec2& n) {
+    ctx.log->impulses.push_back(Impulse{kind, i, j, n, 0.0});
+  };
+  for (int i = 0; i < scene.numParticles(); ++i) {
+    const Vec2 xi = at(x, i);
+    for (int j = i + 1; j < scene.numParticles(); ++j) {
+      const Vec2 n = at(x, j) - xi;
+      const double reach = scene.radius[i] + scene.radius[j];
+      if (n.squaredNorm() < reach * reach && (at(v, i) - at(v, j)).dot(n) > 0.0) {
+        record(PairKind::ParticleParticle, i, j, n);
+        apply(particleParticleResponse(scene, i, j, n, cor, at(v, i), at(v, j)), v);
+      }
+    }
+    for (int e = 0; e < static_cast<int>(scene.edges.size()); ++e) {
+      const Edge& edge = scene.edges[e];
+      if (edge.i == i || edge.j == i) continue;
+      const Vec2 x2 = at(x, edge.i), x3 = at(x, edge.j);
+      const double alpha = std::clamp(segmentParameter(xi, x2, x3), 0.0, 1.0);
+      const Vec2 n = x2 + alpha * (x3 - x2) - xi;
+      const double reach = scene.radius[i] + edge.radius;
+      const Vec2 v2 = at(v, edge.i), v3 = at(v, edge.j);
+      if (n.squaredNorm() < reach * reach && (at(v, i) - v2 - alpha * (v3 - v2)).dot(n) > 0.0) {
+        record(PairKind::ParticleEdge, i, e, n);
+        apply(particleEdgeResponse(scene, i, edge, alpha, n, cor, at(v, i), v2, v3), v);
+      }
+    }
+    for (int h = 0; h < static_cast<int>(scene.halfplanes.size()); ++h) {
+      const HalfPlane& plane = scene.halfplanes[h];
+      const Vec2 n = halfPlaneContact(xi, plane.point, plane.normal);
+      const double r = scene.radius[i];
+      if (n.squaredNorm() < r * r && at(v, i).dot(n) > 0.0) {
+        record(PairKind::ParticleHalfPlane, i, h, n);
+        apply(particleHalfPlaneResponse(scene, i, n, cor, at(v, i)), v);
+      }
+    }
+  }
+  return Status::ok();
+}
+
+}  // namespace fosssim

@@ -1,0 +1,30 @@
+// Internal header: the explicit integrators (built through integratorTable()).
+#pragma once
+
+#include "fosssim/core/integrator.h"
+
+namespace fosssim {
+
+/// F/m at (x, v) with fixed particles' rows zeroed; kept as a member to reuse its storage.
+struct ExplicitForces {
+  VecX acceleration;  ///< 2N
+  void compute(const Scene& scene, const VecX& x, const VecX& v);
+};
+
+class ExplicitEuler final : public Integrator {
+ public:
+  Status step(const Scene& scene, State& state, double dt) override;
+
+ private:
+  ExplicitForces forces_;
+};
+
+class SymplecticEuler final : public Integrator {
+ public:
+  Status step(const Scene& scene, State& state, double dt) override;
+
+ private:
+  ExplicitForces forces_;
+};
+
+}  // namespace fosssim

@@ -1,0 +1,102 @@
+// Implicit Euler (Newton's method on the velocity change) and linearized implicit Euler (one
+// Newton step), both on the system of implicit_system.h.
+//
+// Implicit Euler solves M dv = h F(x + h (v + dv), v + dv). Newton on dv, starting from dv = 0,
+// linearises F around the current guess (x + dx, v + dv) with dx = h (v + dv):
+//   (M - h dF/dv - h^2 dF/dx) delta = h F(x + dx, v + dv) - M dv,   dv += delta
+// until |delta| < kNewtonTolerance (at least one iteration, as the reference does).
+// Linearized implicit Euler takes exactly one such step from the guess dv = 0, i.e. with forces
+// and Jacobians at (x + h v, v); then v += dv and x += h v (with the new v).
+#include "implicit_system.h"
+
+#include <cmath>
+#include <string>
+
+namespace fosssim {
+namespace {
+
+/// Newton stops when the update's Euclidean norm falls below this (the reference's criterion).
+constexpr double kNewtonTolerance = 1e-9;
+/// A step whose Newton iteration has not converged after this many iterations fails with a
+/// message instead of looping forever (the reference had no limit).
+constexpr int kMaxNewtonIterations = 100;
+
+}  // namespace
+
+Status ImplicitSystem::assemble(const Scene& scene, const VecX& x, const VecX& v, double h,
+                                const VecX& dvCurrent) {
+  const Eigen::Index n = x.size();
+  // Right-hand side h F - M dv.
+  rhs_.setZero(n);
+  accumulateGradient(scene, x, v, rhs_);
+  rhs_ = -h * rhs_ - scene.mass.cwiseProduct(dvCurrent);
+
+  jacobianX_.clear();
+  jacobianV_.clear();
+  for (const auto& force : scene.forces) {
+    force->addJacobianX(scene, x, v, jacobianX_);
+    force->addJacobianV(scene, x, v, jacobianV_);
+  }
+  // Fixed particles' rows and columns become the identity (their velocity change is zero).
+  auto fixedDof = [&](Eigen::Index r) { return scene.isFixed(static_cast<int>(r / 2)); };
+  entries_.clear();
+  entries_.reserve(jacobianX_.size() + jacobianV_.size() + n);
+  for (const auto& t : jacobianX_)
+    if (!fixedDof(t.row()) && !fixedDof(t.col())) entries_.emplace_back(t.row(), t.col(), h * h * t.value());
+  for (const auto& t : jacobianV_)
+    if (!fixedDof(t.row()) && !fixedDof(t.col())) entries_.emplace_back(t.row(), t.col(), h * t.value());
+  for (Eigen::Index r = 0; r < n; ++r) {
+    if (fixedDof(r)) {
+      entries_.emplace_back(r, r, 1.0);
+      rhs_[r] = 0.0;
+    } else {
+      entries_.emplace_back(r, r, scene.mass[r]);
+    }
+  }
+  matrix_.resize(n, n);
+  matrix_.setFromTriplets(entries_.begin(), entries_.end());
+  lu_.compute(matrix_);
+  if (lu_.info() != Eigen::Success)
+    return Status::error("the implicit system (M - h dF/dv - h^2 dF/dx) is singular");
+  return Status::ok();
+}
+
+const VecX& ImplicitSystem::solve() {
+  delta_ = lu_.solve(rhs_);
+  return delta_;
+}
+
+Status ImplicitEuler::step(const Scene& scene, State& state, double dt) {
+  dv_.setZero(state.v.size());
+  dx_ = dt * state.v;
+  for (int iteration = 1;; ++iteration) {
+    xTrial_ = state.x + dx_;
+    vTrial_ = state.v + dv_;
+    if (Status s = system_.assemble(scene, xTrial_, vTrial_, dt, dv_); !s) return s;
+    const VecX& delta = system_.solve();
+    dv_ += delta;
+    dx_ = dt * (state.v + dv_);
+    const double size = delta.norm();
+    if (!std::isfinite(size))
+      return Status::error("implicit Euler: the Newton update became non-finite");
+    if (size < kNewtonTolerance) break;
+    if (iteration == kMaxNewtonIterations)
+      return Status::error("implicit Euler: Newton's method did not converge in " +
+                           std::to_string(kMaxNewtonIterations) + " iterations (last update " +
+                           std::to_string(size) + ")");
+  }
+  state.x += dx_;
+  state.v += dv_;
+  return Status::ok();
+}
+
+Status LinearizedImplicitEuler::step(const Scene& scene, State& state, double dt) {
+  xTrial_ = state.x + dt * state.v;
+  zero_.setZero(state.v.size());
+  if (Status s = system_.assemble(scene, xTrial_, state.v, dt, zero_); !s) return s;
+  state.v += system_.solve();
+  state.x += dt * state.v;
+  return Status::ok();
+}
+
+}  // namespace fosssim

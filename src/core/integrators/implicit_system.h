@@ -1,0 +1,46 @@
+// Internal header: the linear system shared by both implicit integrators,
+//   (M + h dE/dv + h^2 d2E/dx2) delta = h F - M dv_current
+// (that is M - h dF/dv - h^2 dF/dx on the left), assembled at a given (x, v) with fixed
+// particles' rows and columns replaced by the identity and a zero right-hand side.
+#pragma once
+
+#include "fosssim/core/integrator.h"
+
+#include <Eigen/SparseLU>
+
+namespace fosssim {
+
+class ImplicitSystem {
+ public:
+  /// Assembles and factors the system at (x, v) for step h, with right-hand side
+  /// h F(x, v) - M dvCurrent. Returns an error if the matrix is singular.
+  Status assemble(const Scene& scene, const VecX& x, const VecX& v, double h, const VecX& dvCurrent);
+  /// Solves for delta with the last assembled system.
+  const VecX& solve();
+
+ private:
+  Triplets jacobianX_, jacobianV_, entries_;
+  SparseMat matrix_;
+  Eigen::SparseLU<SparseMat> lu_;
+  VecX rhs_, delta_;
+};
+
+class ImplicitEuler final : public Integrator {
+ public:
+  Status step(const Scene& scene, State& state, double dt) override;
+
+ private:
+  ImplicitSystem system_;
+  VecX dx_, dv_, xTrial_, vTrial_;
+};
+
+class LinearizedImplicitEuler final : public Integrator {
+ public:
+  Status step(const Scene& scene, State& state, double dt) override;
+
+ private:
+  ImplicitSystem system_;
+  VecX xTrial_, zero_;
+};
+
+}  // namespace fosssim

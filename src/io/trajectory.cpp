@@ -1,0 +1,137 @@
+#include "fosssim/io/trajectory.h"
+
+#include <cerrno>
+#include <cstring>
+
+namespace fosssim {
+namespace {
+
+static_assert(sizeof(double) == 8 && sizeof(std::int32_t) == 4, "the file format needs 8-byte doubles");
+
+// The format is little-endian; so are the machines we build for. A big-endian port would swap here.
+template <class T>
+void put(std::string& buffer, T value) {
+  char bytes[sizeof(T)];
+  std::memcpy(bytes, &value, sizeof(T));
+  buffer.append(bytes, sizeof(T));
+}
+
+}  // namespace
+
+Status TrajectoryWriter::open(const std::string& path, RecordLayout layout, std::unique_ptr<TrajectoryWriter>& out) {
+  std::unique_ptr<TrajectoryWriter> w(new TrajectoryWriter());
+  w->path_ = path;
+  w->layout_ = layout;
+  w->out_.open(path, std::ios::binary | std::ios::trunc);
+  if (!w->out_) return Status::error(path + ": cannot create the trajectory file (" + std::strerror(errno) + ")");
+  out = std::move(w);
+  return Status::ok();
+}
+
+Status TrajectoryWriter::write(const State& state, const CollisionLog& log) {
+  buffer_.clear();
+  buffer_.append(reinterpret_cast<const char*>(state.x.data()), state.x.size() * sizeof(double));
+  buffer_.append(reinterpret_cast<const char*>(state.v.data()), state.v.size() * sizeof(double));
+  if (layout_.impulses) {
+    put<std::int32_t>(buffer_, static_cast<std::int32_t>(log.impulses.size()));
+    for (const Impulse& im : log.impulses) {
+      put<std::int32_t>(buffer_, static_cast<std::int32_t>(im.kind));
+      put<std::int32_t>(buffer_, im.i);
+      put<std::int32_t>(buffer_, im.j);
+      put(buffer_, im.n.x());
+      put(buffer_, im.n.y());
+      put(buffer_, im.time);
+    }
+  }
+  if (layout_.polynomials) {
+    const PolynomialLog& polys = log.polynomials;
+    put<std::int32_t>(buffer_, polys.size());
+    for (int k = 0; k < polys.size(); ++k) {
+      put<std::int32_t>(buffer_, polys.length(k));
+      buffer_.append(reinterpret_cast<const char*>(polys.coefficients(k)), polys.length(k) * sizeof(double));
+    }
+  }
+  out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+  if (!out_) return Status::error(path_ + ": cannot write the trajectory file (" + std::strerror(errno) + ")");
+  return Status::ok();
+}
+
+Status TrajectoryWriter::close() {
+  out_.close();
+  if (!out_) return Status::error(path_ + ": cannot finish writing the trajectory file");
+  return Status::ok();
+}
+
+Status TrajectoryReader::open(const std::string& path, int numParticles, RecordLayout layout,
+                              std::unique_ptr<TrajectoryReader>& out) {
+  std::unique_ptr<TrajectoryReader> r(new TrajectoryReader());
+  r->path_ = path;
+  r->n_ = numParticles;
+  r->layout_ = layout;
+  r->in_.open(path, std::ios::binary);
+  if (!r->in_) return Status::error(path + ": cannot open the trajectory file (" + std::strerror(errno) + ")");
+  r->in_.seekg(0, std::ios::end);
+  r->size_ = static_cast<std::uint64_t>(r->in_.tellg());
+  r->in_.seekg(0);
+  out = std::move(r);
+  return Status::ok();
+}
+
+Status TrajectoryReader::fail(const std::string& what) const {
+  return Status::error(path_ + ": record " + std::to_string(records_) + " (byte " + std::to_string(offset_) +
+                       " of " + std::to_string(size_) + "): " + what +
+                       "; is this the trajectory of this scene?");
+}
+
+bool TrajectoryReader::readBytes(void* into, std::uint64_t bytes) {
+  if (bytes > size_ - offset_) return false;
+  in_.read(static_cast<char*>(into), static_cast<std::streamsize>(bytes));
+  if (!in_) return false;
+  offset_ += bytes;
+  return true;
+}
+
+Status TrajectoryReader::next(TrajectoryRecord& record, bool& atEnd) {
+  atEnd = offset_ == size_;
+  if (atEnd) return Status::ok();
+  const std::uint64_t stateBytes = 16ull * static_cast<std::uint64_t>(n_);
+  record.x.resize(2 * n_);
+  record.v.resize(2 * n_);
+  if (!readBytes(record.x.data(), stateBytes) || !readBytes(record.v.data(), stateBytes))
+    return fail("the file ends inside the positions and velocities of " + std::to_string(n_) + " particles");
+  record.log.clear();
+  std::int32_t count = 0;
+  if (layout_.impulses) {
+    if (!readBytes(&count, 4)) return fail("the file ends before the impulse count");
+    constexpr std::uint64_t kImpulseBytes = 3 * 4 + 3 * 8;
+    if (count < 0 || static_cast<std::uint64_t>(count) * kImpulseBytes > size_ - offset_)
+      return fail("impossible impulse count " + std::to_string(count));
+    for (std::int32_t k = 0; k < count; ++k) {
+      std::int32_t head[3];
+      double tail[3];
+      readBytes(head, sizeof head);
+      readBytes(tail, sizeof tail);
+      if (head[0] < 0 || head[0] > 2) return fail("impulse of unknown kind " + std::to_string(head[0]));
+      record.log.impulses.push_back(Impulse{static_cast<PairKind>(head[0]), head[1], head[2], Vec2(tail[0], tail[1]), tail[2]});
+    }
+  }
+  if (layout_.polynomials) {
+    if (!readBytes(&count, 4)) return fail("the file ends before the polynomial count");
+    if (count < 0 || static_cast<std::uint64_t>(count) * 4 > size_ - offset_)
+      return fail("impossible polynomial count " + std::to_string(count));
+    record.log.polynomials.setEnabled(true);
+    for (std::int32_t k = 0; k < count; ++k) {
+      std::int32_t length = 0;
+      if (!readBytes(&length, 4)) return fail("the file ends inside polynomial " + std::to_string(k));
+      if (length < 0 || static_cast<std::uint64_t>(length) * 8 > size_ - offset_)
+        return fail("impossible length " + std::to_string(length) + " of polynomial " + std::to_string(k));
+      scratch_.resize(static_cast<size_t>(length));
+      readBytes(scratch_.data(), 8ull * static_cast<std::uint64_t>(length));
+      record.log.polynomials.add(scratch_.data(), length);
+    }
+  }
+  ++records_;
+  return Status::ok();
+}
+
+}  // namespace fosssim

@@ -1,0 +1,126 @@
+// Properties of the four integrators that follow from their definitions, not from our output:
+// order of accuracy on a projectile, energy behaviour on an undamped spring, momentum kept by
+// internal forces, fixed particles staying put.
+#include "fosssim/core/simulator.h"
+#include "test_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace fosssim {
+namespace {
+
+using testing::Setup;
+
+const char* const kAll[] = {"explicit-euler", "symplectic-euler", "forward-backward-euler", "implicit-euler",
+                            "linearized-implicit-euler"};
+
+void run(Setup& s, long steps) {
+  std::unique_ptr<Simulator> sim;
+  ASSERT_TRUE(Simulator::create(s.scene, {}, sim).isOk());
+  for (long k = 0; k < steps; ++k) ASSERT_TRUE(sim->step(s.scene, s.state).isOk());
+}
+
+TEST(Integrators, TableHasEveryKeywordOnce) {
+  for (const char* keyword : kAll) EXPECT_NE(findIntegrator(keyword), nullptr) << keyword;
+  EXPECT_EQ(findIntegrator("runge-kutta"), nullptr);
+}
+
+// Under constant gravity every one of these methods has a closed-form discrete solution. With
+// t = n h, the exact answer is x(t) = v0 t + g t^2/2; explicit Euler lags it by g h t/2, the
+// others (velocity updated first, or backward Euler, which is the same for a constant force) lead
+// it by g h t/2. So the error is first order with a known constant.
+TEST(Integrators, ProjectileErrorIsFirstOrderWithTheKnownConstant) {
+  const Vec2 g(0, -9.81), v0(1.5, 4.0);
+  const double T = 1.0;
+  for (const char* keyword : kAll) {
+    for (double h : {0.01, 0.005}) {
+      Setup s = testing::projectile(keyword, h, v0, g);
+      run(s, std::lround(T / h));
+      const Vec2 exact = v0 * T + 0.5 * g * T * T;
+      const double sign = std::string(keyword) == "explicit-euler" ? -1.0 : 1.0;
+      const Vec2 expectedError = sign * 0.5 * g * h * T;
+      EXPECT_LT((s.state.x.head<2>() - exact - expectedError).norm(), 1e-9) << keyword << " h=" << h;
+      EXPECT_LT((s.state.v.head<2>() - (v0 + g * T)).norm(), 1e-9) << keyword;  // velocities are exact
+    }
+  }
+}
+
+double springEnergy(const Setup& s) {
+  return kineticEnergy(s.scene, s.state.v) + potentialEnergy(s.scene, s.state.x, s.state.v);
+}
+
+// Undamped spring, omega h = 0.1, ten periods: explicit Euler gains energy, implicit Euler loses
+// it, symplectic Euler keeps it within O(omega h) without drift.
+TEST(Integrators, EnergyDriftIsOrderedOnAnUndampedSpring) {
+  const double k = 1.0, h = 0.1 / std::sqrt(2 * k);  // two unit masses: omega^2 = 2k
+  const long steps = std::lround(10 * 2 * M_PI / 0.1);
+  double drift[5];
+  for (int m = 0; m < 5; ++m) {
+    Setup s = testing::spring(kAll[m], h, k);
+    const double e0 = springEnergy(s);
+    run(s, steps);
+    drift[m] = (springEnergy(s) - e0) / e0;
+  }
+  EXPECT_GT(drift[0], 0.5);               // explicit: grows by (1 + (omega h)^2)^n
+  EXPECT_LT(std::fabs(drift[1]), 0.06);   // symplectic: bounded oscillation
+  EXPECT_EQ(drift[1], drift[2]);          // the two names are the same method
+  EXPECT_LT(drift[3], -0.5);              // implicit: decays
+  EXPECT_LT(drift[4], -0.5);              // linearized implicit: the same for a linear spring
+  EXPECT_NEAR(drift[3], drift[4], 1e-6);
+}
+
+TEST(Integrators, InternalForcesKeepMomentum) {
+  for (const char* keyword : kAll) {
+    Setup s = testing::spring(keyword, 0.01, 50.0);
+    s.state.v << 1.0, 2.0, -0.5, 0.25;
+    s.scene.mass[2] = s.scene.mass[3] = 3.0;
+    s.scene.forces.push_back(std::make_unique<GravitationalForce>(0, 1, 0.7));
+    auto momentum = [&] { return (s.scene.mass.cwiseProduct(s.state.v)).reshaped(2, 2).rowwise().sum().eval(); };
+    const Vec2 p0 = momentum();
+    run(s, 200);
+    EXPECT_LT((momentum() - p0).norm(), 1e-9) << keyword;
+  }
+}
+
+TEST(Integrators, FixedParticlesNeverMove) {
+  for (const char* keyword : kAll) {
+    Setup s = testing::spring(keyword, 0.01, 20.0);
+    s.scene.fixed[0] = 1;
+    s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, -9.81)));
+    const Vec2 x0 = s.state.x.head<2>();
+    run(s, 100);
+    EXPECT_EQ(s.state.x.head<2>(), x0) << keyword;
+    EXPECT_EQ(s.state.v.head<2>(), Vec2::Zero()) << keyword;
+    EXPECT_NE(s.state.x.tail<2>(), Vec2(1.5, 0)) << keyword;  // the free end does move
+  }
+}
+
+// Implicit Euler's result satisfies its defining equation M (v' - v) = h F(x + h v', v').
+TEST(Integrators, ImplicitEulerSolvesItsEquation) {
+  Setup s = testing::spring("implicit-euler", 0.05, 100.0, 1.7);
+  s.scene.forces.push_back(std::make_unique<GravitationalForce>(0, 1, 2.0));
+  s.scene.forces.push_back(std::make_unique<DragDampingForce>(0.3));
+  const State before = s.state;
+  run(s, 1);
+  VecX grad = VecX::Zero(4);
+  accumulateGradient(s.scene, s.state.x, s.state.v, grad);
+  const VecX residual = s.scene.mass.cwiseProduct(s.state.v - before.v) + 0.05 * grad;
+  EXPECT_LT(residual.norm(), 1e-8);
+  EXPECT_LT((s.state.x - before.x - 0.05 * s.state.v).norm(), 1e-14);
+}
+
+TEST(Simulator, NonFiniteStateIsReportedWithStepAndParticle) {
+  Setup s = testing::spring("explicit-euler", 0.01, 1.0);
+  s.state.x[2] = s.state.x[0];  // coincident spring ends: the direction is 0/0
+  std::unique_ptr<Simulator> sim;
+  ASSERT_TRUE(Simulator::create(s.scene, {}, sim).isOk());
+  const Status status = sim->step(s.scene, s.state);
+  ASSERT_FALSE(status.isOk());
+  EXPECT_NE(status.message().find("step 1"), std::string::npos) << status.message();
+  EXPECT_NE(status.message().find("particle 0"), std::string::npos) << status.message();
+}
+
+}  // namespace
+}  // namespace fosssim

@@ -1,0 +1,48 @@
+// Small scenes built in code for the core tests.
+#pragma once
+
+#include "fosssim/core/forces.h"
+#include "fosssim/core/scene.h"
+#include "fosssim/core/state.h"
+
+namespace fosssim::testing {
+
+/// A scene together with a state to run it from.
+struct Setup {
+  Scene scene;
+  State state;
+};
+
+/// Appends a particle to both the scene and the state.
+inline int addBody(Setup& s, double m, Vec2 x, Vec2 v, double radius = 0.1, bool fixed = false) {
+  addParticle(s.scene, m, fixed, radius);
+  const Eigen::Index n = s.state.x.size();
+  s.state.x.conservativeResize(n + 2);
+  s.state.v.conservativeResize(n + 2);
+  s.state.x.segment<2>(n) = x;
+  s.state.v.segment<2>(n) = v;
+  return static_cast<int>(n / 2);
+}
+
+inline Setup projectile(const std::string& integrator, double dt, Vec2 v0, Vec2 g) {
+  Setup s;
+  addBody(s, 2.0, Vec2(0, 0), v0);
+  s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(g));
+  s.scene.integrator = integrator;
+  s.scene.dt = dt;
+  return s;
+}
+
+/// Two particles joined by an undamped spring, stretched from rest length 1 to `length`.
+inline Setup spring(const std::string& integrator, double dt, double k, double length = 1.5) {
+  Setup s;
+  addBody(s, 1.0, Vec2(0, 0), Vec2(0, 0));
+  addBody(s, 1.0, Vec2(length, 0), Vec2(0, 0));
+  s.scene.edges.push_back(Edge{0, 1, 0.01});
+  s.scene.forces.push_back(std::make_unique<SpringForce>(0, 1, k, 1.0, 0.0));
+  s.scene.integrator = integrator;
+  s.scene.dt = dt;
+  return s;
+}
+
+}  // namespace fosssim::testing
