@@ -1,0 +1,286 @@
+#include "fosssim/math/interval_solver.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "test_polynomials.h"
+
+namespace fosssim::math {
+namespace {
+
+using testing::expand;
+using testing::fromRoots;
+
+double solve(std::initializer_list<Polynomial> polys, double tMax = 1.0) {
+  std::vector<Polynomial> v(polys);
+  return firstPositiveTime(v.data(), static_cast<int>(v.size()), tMax);
+}
+
+Polynomial poly(std::initializer_list<double> c) { return Polynomial::fromHighestFirst(c); }
+
+// ------------------------------------------------------------ named degenerate cases
+
+TEST(IntervalSolver, NoPolynomialsHoldsAtZero) { EXPECT_EQ(firstPositiveTime(nullptr, 0), 0.0); }
+
+TEST(IntervalSolver, ZeroPolynomialIsNeverPositive) {
+  EXPECT_EQ(solve({Polynomial{}}), kNever);
+  EXPECT_EQ(solve({poly({1.0}), Polynomial{}}), kNever);
+  EXPECT_EQ(solve({poly({0.0, 0.0, 0.0})}), kNever);  // all-zero input drops to size 0
+}
+
+TEST(IntervalSolver, Constants) {
+  EXPECT_EQ(solve({poly({2.0})}), 0.0);
+  EXPECT_EQ(solve({poly({-2.0})}), kNever);
+  EXPECT_EQ(solve({poly({2.0}), poly({1.0, -0.5})}), 0.5);
+}
+
+TEST(IntervalSolver, LinearCrossings) {
+  EXPECT_EQ(solve({poly({2.0, -1.0})}), 0.5);   // positive after 0.5
+  EXPECT_EQ(solve({poly({-2.0, 1.0})}), 0.0);   // positive until 0.5
+  EXPECT_EQ(solve({poly({-1.0, -1.0})}), kNever);
+  EXPECT_EQ(solve({poly({1.0, -3.0})}), kNever);  // starts at 3 > tMax
+  EXPECT_EQ(solve({poly({1.0, -3.0})}, 4.0), 3.0);
+}
+
+TEST(IntervalSolver, RootTouchingZeroCounts) {
+  EXPECT_EQ(solve({poly({1.0, 0.0})}), 0.0);              // t
+  EXPECT_EQ(solve({poly({-1.0, 0.0})}), kNever);          // -t
+  EXPECT_EQ(solve({fromRoots(-1.0, {0.0, 0.5})}), 0.0);   // -t(t - 0.5) > 0 on (0, 0.5)
+  EXPECT_EQ(solve({fromRoots(1.0, {0.0, 0.5})}), 0.5);
+  EXPECT_EQ(solve({fromRoots(1.0, {0.0, 0.3, 0.6})}), 0.0);
+  EXPECT_EQ(solve({fromRoots(-1.0, {0.0, 0.25, 0.5})}), 0.25);
+}
+
+TEST(IntervalSolver, DoubleRootAtZero) {
+  EXPECT_EQ(solve({poly({1.0, 0.0, 0.0})}), 0.0);         // t^2: positive right after 0
+  EXPECT_EQ(solve({poly({-1.0, 0.0, 0.0})}), kNever);     // -t^2
+  EXPECT_EQ(solve({fromRoots(-1.0, {0.0, 0.0, 2.0})}), 0.0);  // -t^2 (t - 2) > 0 on (0, 2)
+  EXPECT_EQ(solve({fromRoots(1.0, {0.0, 0.0, 0.5})}), 0.5);
+}
+
+TEST(IntervalSolver, DoubleRootTouchingFromAboveExcludesOneInstant) {
+  const double third = 1.0 / 3.0;
+  EXPECT_EQ(solve({fromRoots(1.0, {0.5, 0.5})}), 0.0);
+  EXPECT_EQ(solve({fromRoots(1.0, {third, third})}), 0.0);
+  EXPECT_EQ(solve({fromRoots(1.0, {0.5, 0.5}), poly({1.0, -0.5})}), 0.5);  // meets t > 0.5
+  EXPECT_NEAR(solve({fromRoots(1.0, {third, third, -1.0}), fromRoots(1.0, {third})}), third, 1e-15);
+  EXPECT_EQ(solve({fromRoots(1.0, {0.5, 0.5, 2.0, 3.0, 4.0})}), 0.0);  // quintic
+}
+
+TEST(IntervalSolver, DoubleRootTouchingFromBelowIsNeverPositive) {
+  const double third = 1.0 / 3.0;
+  EXPECT_EQ(solve({fromRoots(-1.0, {0.5, 0.5})}), kNever);
+  EXPECT_EQ(solve({fromRoots(-1.0, {third, third})}), kNever);
+  EXPECT_EQ(solve({fromRoots(-1.0, {third, third, -1.0})}), kNever);  // cubic
+  EXPECT_EQ(solve({fromRoots(-1.0, {0.3, 0.3, 0.7, 0.7})}), kNever);  // quartic, two touches
+  EXPECT_EQ(solve({expand(-1.0, {0.3, 0.3, -2.0}, {{0.5, 0.5}})}), kNever);  // quintic
+  EXPECT_EQ(solve({expand(-1.0, {0.7, 0.7}, {{0.2, 0.1}})}), kNever);          // quartic
+}
+
+TEST(IntervalSolver, TangentGraze) {
+  // -(t - 1/2)^2 written out: the discriminant is exactly 0.
+  EXPECT_EQ(solve({poly({-1.0, 1.0, -0.25})}), kNever);
+  // A graze of a generic quadratic whose discriminant is rounding noise.
+  const double c = 0.1 * 0.1 + 1e-3;  // any value; graze at t = 0.1 with depth 0
+  EXPECT_EQ(solve({poly({-1.0, 0.2, -0.01})}), kNever);
+  (void)c;
+}
+
+TEST(IntervalSolver, RootsAtExactlyOne) {
+  EXPECT_EQ(solve({poly({-1.0, 1.0})}), 0.0);                 // 1 - t
+  EXPECT_EQ(solve({fromRoots(-1.0, {1.0, 1.0})}), kNever);    // -(t - 1)^2
+  EXPECT_EQ(solve({fromRoots(1.0, {1.0, 1.0})}), 0.0);        // (t - 1)^2
+  EXPECT_EQ(solve({fromRoots(1.0, {0.5, 1.0}), poly({-1.0, 0.75})}), 0.0);
+  EXPECT_EQ(solve({fromRoots(-1.0, {0.5, 1.0})}), 0.5);       // positive on (0.5, 1)
+  EXPECT_EQ(solve({fromRoots(-1.0, {0.2, 0.6, 1.0})}), 0.6);  // cubic: positive on (0.6, 1)
+}
+
+TEST(IntervalSolver, IntervalBeginningExactlyAtTMaxIsAHit) {
+  EXPECT_EQ(solve({poly({1.0, -1.0})}), 1.0);                 // t - 1
+  EXPECT_EQ(solve({fromRoots(1.0, {1.0, 1.0, 1.0})}), 1.0);   // (t - 1)^3 (derivatives decide)
+  EXPECT_EQ(solve({fromRoots(1.0, {-0.5, 1.0, 3.0, 4.0})}, 1.0), 1.0);
+  EXPECT_EQ(solve({poly({1.0, -1.0})}, 0.5), kNever);
+  EXPECT_EQ(solve({poly({1.0, -0.5})}, 0.5), 0.5);
+  // Ends at tMax for one, starts there for the other: they never overlap.
+  EXPECT_EQ(solve({poly({1.0, -1.0}), poly({-1.0, 1.0})}), kNever);
+  // (t - 1)^2 touches 0 at tMax but is positive just after: still a hit at 1.
+  EXPECT_EQ(solve({poly({1.0, -1.0}), fromRoots(1.0, {1.0, 1.0})}), 1.0);
+}
+
+TEST(IntervalSolver, DisjointIntervalsNeverMeet) {
+  EXPECT_EQ(solve({fromRoots(-1.0, {0.2, 0.4}), fromRoots(-1.0, {0.5, 0.7})}), kNever);
+}
+
+TEST(IntervalSolver, FirstOverlapOfSeveralIntervals) {
+  // p1 > 0 on (0.1, 0.3) and (0.6, 1); p2 > 0 on (0.35, 0.4) and (0.65, 0.8).
+  const Polynomial p1 = fromRoots(1.0, {0.1, 0.3, 0.6});
+  const Polynomial p2 = fromRoots(1.0, {0.35, 0.4, 0.65, 0.8});
+  EXPECT_NEAR(solve({p1, p2}), 0.65, 1e-15);
+  EXPECT_NEAR(solve({p2, p1}), 0.65, 1e-15);  // order-free
+}
+
+TEST(IntervalSolver, OneNeverPositiveStopsTheSolve) {
+  EXPECT_EQ(solve({fromRoots(1.0, {0.1, 0.3, 0.6, 0.9, 0.95}), poly({-1.0})}), kNever);
+}
+
+TEST(IntervalSolver, NonFiniteCoefficientsAreNeverPositive) {
+  EXPECT_EQ(solve({poly({std::numeric_limits<double>::quiet_NaN(), 1.0})}), kNever);
+  EXPECT_EQ(solve({poly({1.0, std::numeric_limits<double>::infinity()})}), kNever);
+}
+
+TEST(IntervalSolver, AllPositiveAtStartGivesZero) {
+  EXPECT_EQ(solve({fromRoots(-1.0, {-1.0, 0.5, 2.0, 3.0}), poly({1.0, 1.0}), poly({3.0})}), 0.0);
+}
+
+TEST(PositiveSet, Shape) {
+  const PositiveSet s = positiveSet(fromRoots(1.0, {0.1, 0.3, 0.6}));
+  ASSERT_EQ(s.count, 2);
+  EXPECT_NEAR(s.lo[0], 0.1, 1e-15);
+  EXPECT_NEAR(s.hi[0], 0.3, 1e-15);
+  EXPECT_NEAR(s.lo[1], 0.6, 1e-15);
+  EXPECT_EQ(s.hi[1], kNever);
+  // A touching root from above does not split the set.
+  const PositiveSet t = positiveSet(fromRoots(1.0, {0.5, 0.5, -1.0}));
+  ASSERT_EQ(t.count, 1);
+  EXPECT_EQ(t.lo[0], 0.0);
+  EXPECT_EQ(t.hi[0], kNever);
+}
+
+// ------------------------------------------------------------ random: exact sign oracle
+
+// A polynomial known by its factors: sign(p(t)) = s * prod sign(t - r_i) exactly (the
+// complex-pair factors are positive), whatever the rounding of the expanded coefficients.
+struct Factored {
+  double s;
+  std::vector<double> roots;
+  std::vector<std::pair<double, double>> pairs;
+  // Sign of p on (t, t + eps).
+  int signJustAfter(double t) const {
+    int sign = s > 0 ? 1 : -1;
+    for (double r : roots) sign *= (r <= t) ? 1 : -1;
+    return sign;
+  }
+};
+
+double oracle(const std::vector<Factored>& polys, double tMax) {
+  std::vector<double> candidates{0.0};
+  for (const auto& p : polys)
+    for (double r : p.roots)
+      if (r >= 0.0 && r <= tMax) candidates.push_back(r);
+  std::sort(candidates.begin(), candidates.end());
+  for (double c : candidates) {
+    bool all = true;
+    for (const auto& p : polys) all = all && p.signJustAfter(c) > 0;
+    if (all) return c;
+  }
+  return kNever;
+}
+
+TEST(IntervalSolverRandom, MatchesExactSignOracleOnChosenRoots) {
+  std::mt19937 rng(12345);
+  std::uniform_real_distribution<double> uni(-0.5, 1.5);
+  std::uniform_int_distribution<int> pick(0, 9);
+  int hits = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const double tMax = (trial % 5 == 4) ? 0.5 : 1.0;
+    const int count = 1 + trial % 4;
+    std::vector<Factored> fs;
+    std::vector<Polynomial> ps;
+    for (int k = 0; k < count; ++k) {
+      Factored f{pick(rng) < 5 ? 1.0 : -1.0, {}, {}};
+      const int degree = pick(rng) % 6;
+      while (static_cast<int>(f.roots.size()) + 2 * static_cast<int>(f.pairs.size()) < degree) {
+        const int kind = pick(rng);
+        const int room = degree - static_cast<int>(f.roots.size()) - 2 * static_cast<int>(f.pairs.size());
+        if (kind == 0) {
+          f.roots.push_back(0.0);
+        } else if (kind == 1) {
+          f.roots.push_back(tMax);
+        } else if (kind == 2 && room >= 2) {  // double root
+          const double r = (pick(rng) < 3) ? 0.25 * pick(rng) : uni(rng);
+          f.roots.push_back(r);
+          f.roots.push_back(r);
+        } else if (kind == 3 && room >= 2) {
+          f.pairs.push_back({uni(rng), 0.05 + 0.5 * std::abs(uni(rng))});
+        } else {
+          // Keep distinct roots apart, or their tiny interval is below numerical resolution.
+          double r = uni(rng);
+          bool close = false;
+          for (double q : f.roots) close = close || (q != r && std::abs(q - r) < 1e-3);
+          if (!close) f.roots.push_back(r);
+        }
+      }
+      // Roots shared between polynomials (e.g. both exactly at tMax) are kept: the sign
+      // oracle handles them, and so must the solver.
+      ps.push_back(expand(f.s, f.roots, f.pairs));
+      fs.push_back(f);
+    }
+    const double expected = oracle(fs, tMax);
+    const double got = firstPositiveTime(ps.data(), count, tMax);
+    if (expected == kNever) {
+      EXPECT_EQ(got, kNever) << "trial " << trial;
+    } else {
+      ++hits;
+      // Double roots move by ~sqrt(rounding) when the coefficients are rounded.
+      EXPECT_NEAR(got, expected, 2e-7) << "trial " << trial;
+    }
+    if (::testing::Test::HasFailure()) break;
+  }
+  EXPECT_GT(hits, 2000);
+}
+
+// ------------------------------------------------------------ random: dense sampling
+
+TEST(IntervalSolverRandom, MatchesDenseSamplingOnRandomCoefficients) {
+  std::mt19937 rng(777);
+  std::uniform_real_distribution<double> uni(-1.0, 1.0);
+  constexpr int kSamples = 4000;
+  int hits = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const int count = 1 + trial % 3;
+    std::vector<Polynomial> ps;
+    for (int k = 0; k < count; ++k) {
+      double c[Polynomial::kMaxCoeffs];
+      const int n = 1 + (trial / 3 + k) % 6;
+      for (int i = 0; i < n; ++i) c[i] = uni(rng) * (i == n - 1 ? 0.3 : 1.0);
+      ps.push_back(Polynomial::fromHighestFirst(c, n));
+    }
+    const double got = firstPositiveTime(ps.data(), count, 1.0);
+    auto allPositive = [&](double t) {
+      for (const auto& p : ps)
+        if (!(p(t) > 0.0)) return false;
+      return true;
+    };
+    // No sample clearly before the answer may have all positive.
+    double firstSample = kNever;
+    for (int i = 0; i <= kSamples; ++i) {
+      const double t = static_cast<double>(i) / kSamples;
+      if (allPositive(t)) {
+        firstSample = t;
+        break;
+      }
+    }
+    if (got == kNever) {
+      EXPECT_EQ(firstSample, kNever) << "trial " << trial;
+    } else {
+      ++hits;
+      EXPECT_GE(firstSample, got - 1e-12) << "trial " << trial;
+      // And positivity right after the answer (unless the stretch is thinner than a sample).
+      bool after = false;
+      for (double eps : {1e-12, 1e-10, 1e-8, 1e-6, 1e-4})
+        after = after || (got + eps <= 1.0 + 1e-4 && allPositive(got + eps));
+      EXPECT_TRUE(after || firstSample == kNever) << "trial " << trial << " got " << got;
+      if (firstSample != kNever) EXPECT_LE(firstSample - got, 1.0 / kSamples) << "trial " << trial;
+    }
+    if (::testing::Test::HasFailure()) break;
+  }
+  EXPECT_GT(hits, 500);
+}
+
+}  // namespace
+}  // namespace fosssim::math
