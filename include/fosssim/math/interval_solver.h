@@ -1,0 +1,71 @@
+// The polynomial interval solver: the first time t >= 0 at which several polynomials are all
+// strictly positive.
+//
+// Semantics (those of the reference simulator, which roots every polynomial with
+// Jenkins-Traub and tests the sign between consecutive roots): the set S where all
+// polynomials are > 0 is a union of open intervals; the answer is inf(S intersected with
+// [0, inf)), reported when it is <= tMax, else kNever. Consequences:
+//  * a root touching 0 counts: p(0) = 0 and p > 0 just after gives t = 0;
+//  * a double root touching zero from above excludes one instant only (it never delays the
+//    answer); touching from below (a tangent graze) is never positive;
+//  * the zero polynomial is never positive; a positive constant always is;
+//  * a positive interval that begins exactly at tMax is a hit at tMax (the infimum tMax
+//    is <= tMax). The solver looks just past tMax for this, through the Taylor expansion.
+//
+// Work is arranged for the CCD hot path: a polynomial is reduced once to its PositiveSet
+// (at most a few intervals inside [0, tMax]); the sets are then intersected by a chase that
+// costs nothing next to root finding. Callers who build polynomials one at a time can stop
+// as soon as one set is empty (see detect* in ccd.h), with the same answer as the full solve.
+#ifndef FOSSSIM_MATH_INTERVAL_SOLVER_H
+#define FOSSSIM_MATH_INTERVAL_SOLVER_H
+
+#include <limits>
+
+#include "fosssim/math/polynomial.h"
+
+namespace fosssim::math {
+
+// "No positive time in [0, tMax]".
+inline constexpr double kNever = std::numeric_limits<double>::infinity();
+
+// Where one polynomial is positive, in the "right-neighbourhood" sense: t belongs to the
+// set iff p > 0 on (t, t + eps) for some eps > 0. Stored as disjoint ascending half-open
+// intervals [lo, hi) with 0 <= lo <= tMax; hi = kNever (or any value > tMax) when the
+// positivity continues past tMax. Isolated zeros inside a positive stretch (touching roots)
+// do not split it: they never change an infimum.
+struct PositiveSet {
+  // A degree-5 polynomial changes sign at most 5 times: at most 3 positive stretches.
+  // One extra slot absorbs numerically-zero polynomials whose snapped roots split more.
+  static constexpr int kMaxIntervals = 4;
+  double lo[kMaxIntervals]{};
+  double hi[kMaxIntervals]{};
+  int count = 0;
+
+  bool empty() const { return count == 0; }
+  // Adds [a, b) at the end, merging with the last interval when they touch.
+  void append(double a, double b);
+};
+
+// The positive set of p restricted to starts in [0, tMax] (tMax > 0). Non-finite
+// coefficients give the empty set (a NaN state must not cause a collision response).
+PositiveSet positiveSet(const Polynomial& p, double tMax = 1.0);
+
+// p > 0 just after t = 0 (exact, from the coefficients) and all coefficients finite. When
+// this holds for every polynomial of a query the answer is 0 without any root finding.
+bool positiveJustAfterZero(const Polynomial& p);
+
+// inf of the common positive set, or kNever: the smallest t in [0, tMax] contained in every
+// set. count = 0 returns 0 (no condition at all holds everywhere).
+double firstCommonTime(const PositiveSet* sets, int count, double tMax = 1.0);
+
+// At most this many polynomials per query (the solver keeps fixed-size scratch storage).
+constexpr int kMaxSolverPolynomials = 8;
+
+// The whole solve: the first t in [0, tMax] at which all polys[0..count) are > 0 (see the
+// file comment), or kNever. Cheap exits first: all positive just after 0 gives 0 at once;
+// any empty positive set gives kNever without rooting the others.
+double firstPositiveTime(const Polynomial* polys, int count, double tMax = 1.0);
+
+}  // namespace fosssim::math
+
+#endif  // FOSSSIM_MATH_INTERVAL_SOLVER_H

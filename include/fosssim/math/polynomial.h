@@ -1,0 +1,64 @@
+// Fixed-size real polynomial of degree <= 5, the currency of continuous collision detection.
+//
+// Coefficients are stored highest power first because that is how the reference simulator
+// writes them into trajectory files; keeping the same order avoids a reversal at every log.
+// Degree 5 is enough for every polynomial CCD builds (the particle-edge approach quintic).
+#ifndef FOSSSIM_MATH_POLYNOMIAL_H
+#define FOSSSIM_MATH_POLYNOMIAL_H
+
+#include <array>
+#include <initializer_list>
+
+namespace fosssim::math {
+
+struct Polynomial {
+  static constexpr int kMaxCoeffs = 6;
+  static constexpr int kMaxDegree = kMaxCoeffs - 1;
+
+  // c[0] multiplies t^(size-1), c[size-1] is the constant term. Entries past size are unused
+  // (and kept zero by the builders, so equal polynomials compare equal element-wise).
+  std::array<double, kMaxCoeffs> c{};
+  // Number of coefficients; 0 is the zero polynomial. After fromHighestFirst, c[0] != 0.
+  int size = 0;
+
+  // Builds from coefficients highest power first, dropping EXACT zero leading coefficients
+  // (the reference does this: a static pair gives shorter lists, all zeros gives size 0).
+  // -0.0 counts as zero. More than kMaxCoeffs significant coefficients is a programming error
+  // (asserted); in release builds the extra low-order coefficients would be lost, so callers
+  // must not do it.
+  static Polynomial fromHighestFirst(std::initializer_list<double> coeffs);
+  static Polynomial fromHighestFirst(const double* coeffs, int count);
+
+  // Value at t by Horner's rule. The zero polynomial evaluates to 0.
+  double operator()(double t) const;
+
+  // Value and first derivative at t in one Horner pass (the Newton iteration's inner loop).
+  void evaluate(double t, double* value, double* slope) const;
+
+  // Value at t together with a bound on the rounding error of that Horner evaluation:
+  // |computed - exact| <= *errorBound (for the stored coefficients), see kHornerErrorFactor.
+  double evaluateWithErrorBound(double t, double* errorBound) const;
+
+  // size - 1; the zero polynomial has degree -1.
+  int degree() const { return size - 1; }
+
+  // Coefficient of t^k (0 when k > degree).
+  double coefficientOfPower(int k) const { return (k >= 0 && k < size) ? c[size - 1 - k] : 0.0; }
+
+  // p'. The leading coefficient deg*c[0] is nonzero whenever c[0] is, so no trimming is needed.
+  Polynomial derivative() const;
+
+  // Sign (+1, -1, 0) of p on (0, eps) for small eps: the sign of the lowest-order nonzero
+  // coefficient (Taylor at 0 is read off the coefficients exactly). 0 for the zero polynomial.
+  int signJustAfterZero() const;
+};
+
+// Multiplier of eps * sum|c_k||t|^k bounding the rounding error of Horner's rule.
+// Classic bound (Higham, Accuracy and Stability, 5.1): |error| <= gamma_{2n} * sum|c_k||t|^k
+// with gamma_k = k*u/(1-k*u), u = eps/2. For n <= 5 that is about 5*eps; 8 leaves margin for
+// the error of computing the bound itself. Values within this bound are "numerically zero".
+constexpr double kHornerErrorFactor = 8.0;
+
+}  // namespace fosssim::math
+
+#endif  // FOSSSIM_MATH_POLYNOMIAL_H

@@ -1,0 +1,71 @@
+// Real roots of a Polynomial inside [0, tMax], without ever computing complex roots.
+//
+// Strategy (cheapest first):
+//  * degree 1 and 2 in closed form (the quadratic with the cancellation-free formula);
+//  * degree >= 3: the Bernstein coefficients of p on [0, tMax] bound the number of roots in
+//    the open interval by their sign variations (Descartes' rule in the Bernstein basis).
+//    0 variations: no interior root; 1 variation: exactly one simple root, bracketed by
+//    [0, tMax]; otherwise recurse: the roots of p' split [0, tMax] into pieces on which p is
+//    monotone, each holding at most one root, found by a safeguarded Newton iteration.
+// Values within the rounding-error bound of Horner's rule count as zero (see
+// kHornerErrorFactor in polynomial.h): that is how a double root (tangent graze), whose
+// extremum computes to +-1e-17 instead of 0, is recognised as touching rather than crossing.
+#ifndef FOSSSIM_MATH_REAL_ROOTS_H
+#define FOSSSIM_MATH_REAL_ROOTS_H
+
+#include "fosssim/math/polynomial.h"
+
+namespace fosssim::math {
+
+// Capacity for root lists: a degree-5 polynomial has at most 5 roots; one slot of slack
+// because snapping near-zero values to zero can, for numerically-zero polynomials, report a
+// touching root next to a crossing one.
+constexpr int kMaxRoots = Polynomial::kMaxDegree + 1;
+
+// Stop the Newton iteration when the step is below this many ulps of the iterate: the next
+// step would only change the last bit, so the root is at full double precision.
+constexpr double kRootStepUlps = 2.0;
+
+// Absolute floor of the Newton stopping step, as a fraction of tMax: roots within 1e-18*tMax
+// of each other are the same time for any simulation purpose, and the floor keeps roots at or
+// next to 0 from needing a thousand halvings to reach denormals.
+constexpr double kRootAbsoluteTolerance = 1e-18;
+
+// Safety cap for the bracketed iteration; bisection alone needs at most ~64 steps on [0,1]
+// in double precision, so this is never reached in practice.
+constexpr int kMaxRootIterations = 200;
+
+// Roots of a*t^2 + b*t + c (a != 0), ascending. Returns 0, 1 (a double root: the
+// discriminant is within its rounding error of 0) or 2. Uses q = -(b + sign(b)sqrt(D))/2,
+// roots q/a and c/q, which never subtracts nearly equal numbers.
+int quadraticRoots(double a, double b, double c, double roots[2]);
+
+// When p(tMax) is numerically zero, moves the root closest to tMax onto tMax exactly (the
+// closed forms for degrees 1 and 2 may land an ulp away, which would decide whether a root
+// exactly at the end of the step is inside it; degree >= 3 roots come out snapped already).
+void snapRootToEnd(const Polynomial& p, double tMax, double* roots, int count);
+
+// Sorted, distinct real roots of p in the closed interval [0, tMax] (tMax > 0). Roots of
+// even multiplicity (touching points) are included. Returns the count. The zero polynomial
+// and nonzero constants have no isolated roots: 0 is returned.
+int realRootsInInterval(const Polynomial& p, double tMax, double roots[kMaxRoots]);
+
+// The unique root of p in (lo, hi), given fLo = p(lo) and fHi = p(hi) nonzero with opposite
+// signs. Safeguarded Newton: a Newton step that leaves the bracket or fails to halve the
+// step of two iterations ago is replaced by bisection, so convergence is guaranteed and
+// quadratic near a simple root.
+double bracketedRoot(const Polynomial& p, double lo, double hi, double fLo, double fHi);
+
+// p(t) with values inside the Horner rounding-error bound snapped to exactly 0.
+double evaluateSnapped(const Polynomial& p, double t);
+
+// Bernstein coefficients of p on [0, tMax] (degree n: n+1 values, b[0] = p(0),
+// b[n] ~ p(tMax)). Returns n. p must be nonzero.
+int bernsteinCoefficients(const Polynomial& p, double tMax, double b[Polynomial::kMaxCoeffs]);
+
+// Number of sign changes in b[0..count-1], exact zeros skipped.
+int signVariations(const double* b, int count);
+
+}  // namespace fosssim::math
+
+#endif  // FOSSSIM_MATH_REAL_ROOTS_H

@@ -1,0 +1,162 @@
+#include "fosssim/math/interval_solver.h"
+
+#include <cassert>
+#include <cmath>
+
+#include "fosssim/math/real_roots.h"
+
+namespace fosssim::math {
+namespace {
+
+bool allFinite(const Polynomial& p) {
+  for (int i = 0; i < p.size; ++i)
+    if (!std::isfinite(p.c[i])) return false;
+  return true;
+}
+
+inline int signOf(double v) { return (v > 0.0) - (v < 0.0); }
+
+// Sign of p on (x, x + eps) when p(x) is numerically zero: the first derivative that is not
+// numerically zero decides (Taylor expansion at x).
+int signJustAfterRoot(const Polynomial& p, double x) {
+  Polynomial d = p.derivative();
+  while (d.size > 0) {
+    const double v = evaluateSnapped(d, x);
+    if (v != 0.0) return signOf(v);
+    d = d.derivative();
+  }
+  return 0;
+}
+
+void linearSet(const Polynomial& p, double tMax, PositiveSet* set) {
+  double r = -p.c[1] / p.c[0];
+  snapRootToEnd(p, tMax, &r, 1);
+  if (p.c[0] > 0.0) {  // positive on (r, inf)
+    if (r <= tMax) set->append(r > 0.0 ? r : 0.0, kNever);
+  } else if (r > 0.0) {  // positive on (-inf, r)
+    set->append(0.0, r);
+  }
+}
+
+void quadraticSet(const Polynomial& p, double tMax, PositiveSet* set) {
+  double r[2];
+  const int k = quadraticRoots(p.c[0], p.c[1], p.c[2], r);
+  const bool upward = p.c[0] > 0.0;
+  snapRootToEnd(p, tMax, r, k);
+  if (k < 2) {  // no real root or a touching one: the sign of a everywhere (but one instant)
+    if (upward) set->append(0.0, kNever);
+    return;
+  }
+  if (upward) {  // positive outside [r0, r1]
+    if (r[0] > 0.0) set->append(0.0, r[0]);
+    if (r[1] <= tMax) set->append(r[1] > 0.0 ? r[1] : 0.0, kNever);
+  } else if (r[1] > 0.0 && r[0] <= tMax) {  // positive inside (r0, r1)
+    set->append(r[0] > 0.0 ? r[0] : 0.0, r[1]);
+  }
+}
+
+// Degree >= 3: root in [0, tMax], then the sign of each piece between consecutive roots.
+void generalSet(const Polynomial& p, double tMax, PositiveSet* set) {
+  double roots[kMaxRoots];
+  const int n = realRootsInInterval(p, tMax, roots);
+  double start = 0.0;
+  int lastSign = p.signJustAfterZero();  // exact, from the coefficients
+  bool first = true;
+  for (int i = 0; i <= n; ++i) {
+    const double end = (i < n) ? roots[i] : tMax;
+    if (end <= start) continue;  // a root at 0, or the root at tMax closing the list
+    // The first piece's sign is read exactly at 0; the others at their midpoints, which lie
+    // as far as possible from the roots that bound them.
+    lastSign = first ? lastSign : signOf(p(0.5 * (start + end)));
+    first = false;
+    if (lastSign > 0) set->append(start, end);
+    start = end;
+  }
+  const bool rootAtEnd = n > 0 && roots[n - 1] == tMax;
+  const int signAfter = rootAtEnd ? signJustAfterRoot(p, tMax) : lastSign;
+  if (signAfter > 0) set->append(tMax, kNever);
+}
+
+}  // namespace
+
+void PositiveSet::append(double a, double b) {
+  if (count > 0 && hi[count - 1] >= a) {  // touching or overlapping: extend
+    if (b > hi[count - 1]) hi[count - 1] = b;
+    return;
+  }
+  if (count < kMaxIntervals) {
+    lo[count] = a;
+    hi[count] = b;
+    ++count;
+  }
+}
+
+PositiveSet positiveSet(const Polynomial& p, double tMax) {
+  PositiveSet set;
+  if (p.size == 0 || !allFinite(p)) return set;
+  switch (p.degree()) {
+    case 0:
+      if (p.c[0] > 0.0) set.append(0.0, kNever);
+      break;
+    case 1:
+      linearSet(p, tMax, &set);
+      break;
+    case 2:
+      quadraticSet(p, tMax, &set);
+      break;
+    default:
+      generalSet(p, tMax, &set);
+      break;
+  }
+  return set;
+}
+
+double firstCommonTime(const PositiveSet* sets, int count, double tMax) {
+  // Chase: t only grows, and never past a point of the intersection. At a fixed point every
+  // set contains t, so t is the infimum of the intersection.
+  double t = 0.0;
+  int cursor[kMaxSolverPolynomials] = {};
+  assert(count <= kMaxSolverPolynomials);
+  for (bool moved = true; moved;) {
+    moved = false;
+    for (int i = 0; i < count; ++i) {
+      const PositiveSet& s = sets[i];
+      int& k = cursor[i];
+      while (k < s.count && s.hi[k] <= t) ++k;
+      if (k == s.count) return kNever;
+      if (s.lo[k] > t) {
+        t = s.lo[k];
+        moved = true;
+      }
+    }
+  }
+  return t <= tMax ? t : kNever;
+}
+
+bool positiveJustAfterZero(const Polynomial& p) {
+  return p.signJustAfterZero() > 0 && allFinite(p);
+}
+
+double firstPositiveTime(const Polynomial* polys, int count, double tMax) {
+  assert(count <= kMaxSolverPolynomials);
+  bool allPositiveAtStart = true;
+  for (int i = 0; i < count && allPositiveAtStart; ++i)
+    allPositiveAtStart = positiveJustAfterZero(polys[i]);
+  if (allPositiveAtStart) return 0.0;
+
+  // Cheapest (lowest degree) first, so an empty set is usually found before any iteration.
+  int order[kMaxSolverPolynomials];
+  for (int i = 0; i < count; ++i) {
+    int j = i;
+    for (; j > 0 && polys[order[j - 1]].size > polys[i].size; --j) order[j] = order[j - 1];
+    order[j] = i;
+  }
+  PositiveSet sets[kMaxSolverPolynomials];
+  for (int i = 0; i < count; ++i) {
+    sets[i] = positiveSet(polys[order[i]], tMax);
+    if (sets[i].empty()) return kNever;
+  }
+  return firstCommonTime(sets, count, tMax);
+}
+
+}  // namespace fosssim::math
