@@ -7,6 +7,7 @@
 #define FOSSSIM_MATH_POLYNOMIAL_H
 
 #include <array>
+#include <cassert>
 #include <initializer_list>
 
 namespace fosssim::math {
@@ -58,6 +59,48 @@ struct Polynomial {
 // with gamma_k = k*u/(1-k*u), u = eps/2. For n <= 5 that is about 5*eps; 8 leaves margin for
 // the error of computing the bound itself. Values within this bound are "numerically zero".
 constexpr double kHornerErrorFactor = 8.0;
+
+// The small members are defined here, inline: they run several times in every CCD query
+// and a call across translation units cost more than their bodies.
+
+inline Polynomial Polynomial::fromHighestFirst(const double* coeffs, int count) {
+  Polynomial p;
+  int first = 0;
+  while (first < count && coeffs[first] == 0.0) ++first;  // exact zeros only, as the reference
+  const int n = count - first;
+  assert(n <= kMaxCoeffs && "Polynomial: more than kMaxCoeffs significant coefficients");
+  p.size = n < kMaxCoeffs ? n : kMaxCoeffs;
+  for (int i = 0; i < p.size; ++i) p.c[i] = coeffs[first + i];
+  return p;
+}
+
+inline Polynomial Polynomial::fromHighestFirst(std::initializer_list<double> coeffs) {
+  return fromHighestFirst(coeffs.begin(), static_cast<int>(coeffs.size()));
+}
+
+inline double Polynomial::operator()(double t) const {
+  double v = 0.0;
+  for (int i = 0; i < size; ++i) v = v * t + c[i];
+  return v;
+}
+
+inline void Polynomial::evaluate(double t, double* value, double* slope) const {
+  // Horner on p and, interleaved, on p' (the derivative of the running Horner value).
+  double v = 0.0;
+  double d = 0.0;
+  for (int i = 0; i < size; ++i) {
+    d = d * t + v;
+    v = v * t + c[i];
+  }
+  *value = v;
+  *slope = d;
+}
+
+inline int Polynomial::signJustAfterZero() const {
+  for (int i = size - 1; i >= 0; --i)
+    if (c[i] != 0.0) return c[i] > 0.0 ? 1 : -1;
+  return 0;
+}
 
 }  // namespace fosssim::math
 
