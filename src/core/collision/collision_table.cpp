@@ -8,16 +8,29 @@ std::unique_ptr<CollisionHandler> makeSimple(const CollisionSettings& s, const H
   return std::make_unique<SimpleHandler>(s);
 }
 
+std::unique_ptr<CollisionHandler> makeContinuousTime(const CollisionSettings& s, const HandlerOptions& o) {
+  return std::make_unique<ContinuousTimeHandler>(s, o);
+}
+
+std::unique_ptr<CollisionHandler> makeHybrid(const CollisionSettings& s, const HandlerOptions& o) {
+  return std::make_unique<HybridHandler>(s, o);
+}
+
 }  // namespace
 
 const std::vector<CollisionEntry>& collisionTable() {
   //                                  impulses polynomials midStep
   static const RecordLayout kNothing{false, false, false};
   static const RecordLayout kImpulses{true, false, false};
+  static const RecordLayout kEverything{true, true, true};
   static const std::vector<CollisionEntry> table = {
       {"none", nullptr, false, 0.0, 0.0, kNothing, "no collision handling"},
       {"simple", makeSimple, false, 0.0, 0.0, kImpulses,
        "discrete: overlapping, approaching pairs at the end of the step get an impulse"},
+      {"continuous-time", makeContinuousTime, false, 0.0, 0.0, kEverything,
+       "every pair tested along its motion during the step; impulses applied at once, one pass"},
+      {"hybrid", makeHybrid, true, 10.0, 0.1, kEverything,
+       "iterative impulses (maxiters passes), then rigid impact zones; adds a weak penalty force"},
       {"penalty", nullptr, true, 100.0, 0.01, kNothing,
        "a penalty force pushes apart pairs closer than their radii plus a thickness"},
   };

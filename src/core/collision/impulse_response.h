@@ -11,6 +11,7 @@
 // dv1 = -2c (v1 . n) n.
 #pragma once
 
+#include "continuous_detection.h"
 #include "fosssim/core/scene.h"
 
 namespace fosssim {
@@ -70,6 +71,37 @@ inline VelocityChange particleHalfPlaneResponse(const Scene& scene, int i, const
   const Vec2 nhat = n.normalized();
   out.add(i, -(1.0 + cor) * v1.dot(nhat) * nhat);
   return out;
+}
+
+}  // namespace fosssim
+
+namespace fosssim {
+
+/// The response to a continuous-time collision, with each particle's velocity taken as its mean
+/// velocity over the step, d = (qe - qs)/h (the reference's choice).
+inline VelocityChange collisionResponse(const Scene& scene, const Collision& c, double cor, const VecX& qs,
+                                        const VecX& qe, double h) {
+  auto d = [&](int p) -> Vec2 { return (at(qe, p) - at(qs, p)) / h; };
+  switch (c.kind) {
+    case PairKind::ParticleParticle:
+      return particleParticleResponse(scene, c.i, c.j, c.n, cor, d(c.i), d(c.j));
+    case PairKind::ParticleEdge: {
+      const Edge& e = scene.edges[c.j];
+      return particleEdgeResponse(scene, c.i, e, c.alpha, c.n, cor, d(c.i), d(e.i), d(e.j));
+    }
+    case PairKind::ParticleHalfPlane:
+      return particleHalfPlaneResponse(scene, c.i, c.n, cor, d(c.i));
+  }
+  return {};
+}
+
+/// Applies velocity changes to a state; a velocity change dv also moves the particle by h dv
+/// (the step's end position is the start position plus h times the final velocity).
+inline void applyWithDisplacement(const VelocityChange& change, double h, VecX& x, VecX& v) {
+  for (int k = 0; k < change.count; ++k) {
+    at(v, change.particle[k]) += change.dv[k];
+    at(x, change.particle[k]) += h * change.dv[k];
+  }
 }
 
 }  // namespace fosssim

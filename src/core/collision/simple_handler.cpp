@@ -20,7 +20,7 @@ void apply(const VelocityChange& change, VecX& v) {
 Status SimpleHandler::handle(const Scene& scene, const State&, State& state, StepContext& ctx) {
   const VecX& x = state.x;
   VecX& v = state.v;
-  const double cor = settings_.cor;
+  const double cor = cor_;
   auto record = [&](PairKind kind, int i, int j, const Vec2& n) {
     ctx.log->impulses.push_back(Impulse{kind, i, j, n, 0.0});
   };

@@ -1,0 +1,57 @@
+// Internal header: continuous-time detection of one pair, or of every pair in the reference's
+// order, over a step from start positions qs to end positions qe (straight-line motion), on the
+// math library's CCD queries. Shared by the continuous-time and hybrid handlers and --verify.
+#pragma once
+
+#include "fosssim/core/collision_log.h"
+#include "fosssim/core/scene.h"
+#include "fosssim/math/ccd.h"
+
+namespace fosssim {
+
+/// A pair found colliding during a step.
+struct Collision {
+  PairKind kind = PairKind::ParticleParticle;
+  int i = 0;           ///< the particle
+  int j = 0;           ///< the other particle, the edge or the half-plane
+  double tau = 0;      ///< first contact as a fraction of the step, in [0, 1]
+  Vec2 n = Vec2::Zero();  ///< contact vector at tau, from particle i to the other object
+  double alpha = 0;    ///< particle-edge: the closest point's parameter at tau, clamped to [0, 1]
+};
+
+class ContinuousDetector {
+ public:
+  explicit ContinuousDetector(math::QuinticForm form) : form_(form) {}
+
+  /// Each returns true and fills `hit` when the pair collides during the step; when `log` is
+  /// non-null (and enabled) the pair's polynomials are appended to it in the reference's order.
+  bool particleParticle(const Scene& scene, const VecX& qs, const VecX& qe, int i, int j, Collision& hit,
+                        PolynomialLog* log) const;
+  bool particleEdge(const Scene& scene, const VecX& qs, const VecX& qe, int i, int edge, Collision& hit,
+                    PolynomialLog* log) const;
+  bool particleHalfPlane(const Scene& scene, const VecX& qs, const VecX& qe, int i, int plane, Collision& hit,
+                         PolynomialLog* log) const;
+
+  /// Visits every pair in the reference's order (for each particle i: particles j > i, edges not
+  /// incident to i, half-planes) and calls onHit(const Collision&) for each collision. `qe` is read
+  /// as the traversal goes, so onHit may change it (the continuous-time handler does).
+  template <class OnHit>
+  void forEachCollision(const Scene& scene, const VecX& qs, const VecX& qe, PolynomialLog* log, OnHit&& onHit) const {
+    Collision hit;
+    const int n = scene.numParticles();
+    const int edges = static_cast<int>(scene.edges.size()), planes = static_cast<int>(scene.halfplanes.size());
+    for (int i = 0; i < n; ++i) {
+      for (int j = i + 1; j < n; ++j)
+        if (particleParticle(scene, qs, qe, i, j, hit, log)) onHit(hit);
+      for (int e = 0; e < edges; ++e)
+        if (scene.edges[e].i != i && scene.edges[e].j != i && particleEdge(scene, qs, qe, i, e, hit, log)) onHit(hit);
+      for (int h = 0; h < planes; ++h)
+        if (particleHalfPlane(scene, qs, qe, i, h, hit, log)) onHit(hit);
+    }
+  }
+
+ private:
+  math::QuinticForm form_;
+};
+
+}  // namespace fosssim

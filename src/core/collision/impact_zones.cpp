@@ -1,0 +1,113 @@
+// Rigid motion of an impact zone (masses m_i, start positions x_i, displacements D_i):
+//   centre of mass  c = sum m_i x_i / M,   its displacement  Dc = sum m_i D_i / M
+//   angular momentum of the displacement field about c:  L = sum m_i (x_i - c) x (D_i - Dc)
+//   moment of inertia  I = sum m_i |x_i - c|^2,  angular displacement  w = L / I
+//   new positions  x_i' = c + Dc + R(w) (x_i - c)
+// This keeps the zone's linear and angular momentum (of the predicted motion) and all distances
+// inside it, so pairs inside a zone cannot newly collide. A zone with I = 0 (one particle, or all
+// at one point) only translates.
+#include "impact_zones.h"
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+
+namespace fosssim {
+
+void ImpactZones::reset(int n) {
+  if (static_cast<int>(parent_.size()) != n) {
+    parent_.assign(n, -1);
+    immovable_.assign(n, 0);
+    slot_.assign(n, -1);
+  } else {
+    for (int p : members_) parent_[p] = -1, immovable_[p] = 0;
+  }
+  members_.clear();
+}
+
+int ImpactZones::find(int p) {
+  while (parent_[p] != p) p = parent_[p] = parent_[parent_[p]];
+  return p;
+}
+
+bool ImpactZones::touch(int p) {
+  if (parent_[p] >= 0) return false;
+  parent_[p] = p;
+  members_.push_back(p);
+  return true;
+}
+
+bool ImpactZones::unite(int a, int b) {
+  a = find(a), b = find(b);
+  if (a == b) return false;
+  parent_[b] = a;
+  immovable_[a] = immovable_[a] || immovable_[b];
+  return true;
+}
+
+bool ImpactZones::add(const Scene& scene, const Collision& c) {
+  int particles[3] = {c.i, c.j, 0};
+  int count = c.kind == PairKind::ParticleParticle ? 2 : 1;
+  if (c.kind == PairKind::ParticleEdge) {
+    particles[1] = scene.edges[c.j].i;
+    particles[2] = scene.edges[c.j].j;
+    count = 3;
+  }
+  bool changed = false, immovable = c.kind == PairKind::ParticleHalfPlane;
+  for (int k = 0; k < count; ++k) {
+    changed = touch(particles[k]) || changed;
+    if (k > 0) changed = unite(c.i, particles[k]) || changed;
+    immovable = immovable || scene.isFixed(particles[k]);
+  }
+  const int root = find(c.i);
+  if (immovable && !immovable_[root]) {
+    immovable_[root] = 1;
+    changed = true;
+  }
+  return changed;
+}
+
+int ImpactZones::zoneCount() {
+  int count = 0;
+  for (int p : members_) count += find(p) == p;
+  return count;
+}
+
+void ImpactZones::moveRigidly(const Scene& scene, const VecX& start, const VecX& predicted, VecX& x) {
+  std::vector<Accumulator>& zones = accumulators_;
+  zones.clear();
+  for (int p : members_) {
+    const int r = find(p);
+    if (slot_[r] < 0) {
+      slot_[r] = static_cast<int>(zones.size());
+      zones.push_back(Accumulator{});
+      zones.back().immovable = immovable_[r] != 0;
+    }
+    Accumulator& z = zones[slot_[r]];
+    const double m = scene.massOf(p);
+    z.mass += m;
+    z.centre += m * at(start, p);
+    z.shift += m * (at(predicted, p) - at(start, p));
+  }
+  for (Accumulator& z : zones) z.centre /= z.mass, z.shift /= z.mass;
+  for (int p : members_) {
+    Accumulator& z = zones[slot_[find(p)]];
+    const double m = scene.massOf(p);
+    const Vec2 arm = at(start, p) - z.centre;
+    z.angular += m * cross(arm, at(predicted, p) - at(start, p) - z.shift);
+    z.inertia += m * arm.squaredNorm();
+  }
+  for (int p : members_) {
+    const Accumulator& z = zones[slot_[find(p)]];
+    if (z.immovable) {
+      at(x, p) = at(start, p);
+      continue;
+    }
+    const double angle = z.inertia > 0 ? z.angular / z.inertia : 0.0;
+    const Eigen::Rotation2D<double> rotation(angle);
+    at(x, p) = z.centre + z.shift + rotation * (at(start, p) - z.centre);
+  }
+  for (int p : members_) slot_[find(p)] = -1;
+}
+
+}  // namespace fosssim

@@ -1,0 +1,47 @@
+// Internal header: rigid impact zones, the hybrid handler's failsafe.
+//
+// A zone is a set of particles that move as one rigid body for the rest of the step: the
+// particles of every collision that impulses could not resolve, merged whenever two zones share
+// a particle. A zone touched by a half-plane collision, or holding a fixed particle, cannot move
+// at all. Zones only ever grow, so "the zone set changed" is detected as it happens: a particle
+// joins, two zones merge, or a zone gains the immovable mark.
+#pragma once
+
+#include "continuous_detection.h"
+
+#include <vector>
+
+namespace fosssim {
+
+class ImpactZones {
+ public:
+  /// Empties the zones and sizes the per-particle storage for n particles.
+  void reset(int n);
+  /// Adds a collision's particles as a zone (merging); returns true if the zone set changed.
+  bool add(const Scene& scene, const Collision& c);
+  /// Moves every zone rigidly: from `start` positions along the mean of `predicted`'s motion
+  /// (translation of the centre of mass, rotation by the angular displacement L/I), writing the
+  /// zone particles' positions into x. Immovable zones stay at `start`. Other particles untouched.
+  void moveRigidly(const Scene& scene, const VecX& start, const VecX& predicted, VecX& x);
+  /// The particles in some zone (in the order they joined).
+  const std::vector<int>& members() const { return members_; }
+  int zoneCount();
+
+ private:
+  int find(int p);
+  bool unite(int a, int b);
+  bool touch(int p);
+
+  std::vector<int> parent_;      ///< N: union-find parent, -1 for particles in no zone
+  std::vector<char> immovable_;  ///< N: per root, the zone holds a fixed particle or met a half-plane
+  std::vector<int> members_;     ///< particles in some zone
+  std::vector<int> slot_;        ///< N: per root, index of its accumulator (scratch)
+  struct Accumulator {           ///< per zone, sums for its rigid motion
+    double mass = 0, inertia = 0, angular = 0;
+    Vec2 centre = Vec2::Zero(), shift = Vec2::Zero();
+    bool immovable = false;
+  };
+  std::vector<Accumulator> accumulators_;
+};
+
+}  // namespace fosssim
