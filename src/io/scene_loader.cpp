@@ -264,6 +264,9 @@ void assemble(Builder& b, const std::string& file) {
     throw LoadError(b.integratorWhere + ": duration / dt asks for more than 1e12 steps");
 
   const size_t n = b.particles.size(), edges = scene.edges.size(), planes = scene.halfplanes.size();
+  // Nothing to simulate, and trajectory records of no particles (and no impulses) have no bytes,
+  // so a file of them could not be read back.
+  if (n == 0) throw LoadError(file + ": the scene has no <particle> elements (at least one is required)");
   addParticles(scene, b.particles);
   out.initial.x = Eigen::Map<const VecX>(b.positions.data(), static_cast<Eigen::Index>(b.positions.size()));
   out.initial.v = Eigen::Map<const VecX>(b.velocities.data(), static_cast<Eigen::Index>(b.velocities.size()));
