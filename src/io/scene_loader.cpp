@@ -12,6 +12,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <sstream>
@@ -322,7 +323,10 @@ Status parseScene(const std::string& text, const std::string& name, SceneFile& o
   out = SceneFile{};
   out.path = name;
   tinyxml2::XMLDocument doc;
-  if (doc.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) {
+  const tinyxml2::XMLError parsed = doc.Parse(text.data(), text.size());
+  if (parsed == tinyxml2::XML_ERROR_EMPTY_DOCUMENT)
+    return Status::error(name + ": the file is empty (expected an XML document with root <scene>)");
+  if (parsed != tinyxml2::XML_SUCCESS) {
     std::string detail = doc.ErrorStr() ? doc.ErrorStr() : "malformed XML";
     return Status::error(name + ":" + std::to_string(doc.ErrorLineNum()) + ": not well-formed XML: " + detail);
   }
@@ -368,12 +372,26 @@ Status parseScene(const std::string& text, const std::string& name, SceneFile& o
 }
 
 Status loadScene(const std::string& path, SceneFile& out) {
+  out = SceneFile{};
+  out.path = path;
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    return Status::error(path + ": cannot read the scene file (it is a directory)");
   std::ifstream in(path, std::ios::binary);
   if (!in) return Status::error(path + ": cannot open the scene file (" + std::strerror(errno) + ")");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) return Status::error(path + ": cannot read the scene file");
-  return parseScene(text.str(), path, out);
+  // Read in chunks up to a limit, so that a device such as /dev/zero cannot exhaust the memory.
+  constexpr std::streamsize kMaxBytes = 256 << 20, kChunk = 1 << 16;
+  std::string text;
+  while (in) {
+    const size_t used = text.size();
+    text.resize(used + kChunk);
+    in.read(&text[used], kChunk);
+    text.resize(used + static_cast<size_t>(in.gcount()));
+    if (static_cast<std::streamsize>(text.size()) > kMaxBytes)
+      return Status::error(path + ": the scene file is larger than 256 MiB; is it a scene file?");
+  }
+  if (in.bad()) return Status::error(path + ": cannot read the scene file (" + std::strerror(errno) + ")");
+  return parseScene(text, path, out);
 }
 
 }  // namespace fosssim
