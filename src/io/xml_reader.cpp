@@ -65,7 +65,8 @@ double ElementReader::parseNumber(const tinyxml2::XMLAttribute& attribute) const
   while (rest && isSpace(*rest)) ++rest;
   if (end == p || *rest != '\0')
     fail(attribute.Name(), "expected a number, got " + quoted(text));
-  if (!std::isfinite(value) || errno == ERANGE)
+  // ERANGE also flags underflow ("1e-400" reads as 0 or a denormal), which is a fine value.
+  if (!std::isfinite(value) || (errno == ERANGE && std::fabs(value) > 1.0))
     fail(attribute.Name(), "expected a finite number, got " + quoted(text));
   return value;
 }
