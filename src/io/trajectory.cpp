@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 
 namespace fosssim {
 namespace {
@@ -64,15 +65,24 @@ Status TrajectoryWriter::close() {
 
 Status TrajectoryReader::open(const std::string& path, int numParticles, RecordLayout layout,
                               std::unique_ptr<TrajectoryReader>& out) {
+  // Every record must hold some bytes, or the end of the file could never be reached.
+  if (numParticles < 1) return Status::error(path + ": a trajectory needs a scene with at least one particle");
   std::unique_ptr<TrajectoryReader> r(new TrajectoryReader());
   r->path_ = path;
   r->n_ = numParticles;
   r->layout_ = layout;
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    return Status::error(path + ": cannot read the trajectory file (it is a directory)");
   r->in_.open(path, std::ios::binary);
   if (!r->in_) return Status::error(path + ": cannot open the trajectory file (" + std::strerror(errno) + ")");
   r->in_.seekg(0, std::ios::end);
-  r->size_ = static_cast<std::uint64_t>(r->in_.tellg());
+  const std::streamoff size = r->in_.tellg();
   r->in_.seekg(0);
+  // Records are checked against the size, so it must be known: no pipes or terminals.
+  if (size < 0 || !r->in_)
+    return Status::error(path + ": cannot determine the size of the trajectory file (is it a regular file?)");
+  r->size_ = static_cast<std::uint64_t>(size);
   out = std::move(r);
   return Status::ok();
 }
@@ -109,8 +119,8 @@ Status TrajectoryReader::next(TrajectoryRecord& record, bool& atEnd) {
     for (std::int32_t k = 0; k < count; ++k) {
       std::int32_t head[3];
       double tail[3];
-      readBytes(head, sizeof head);
-      readBytes(tail, sizeof tail);
+      if (!readBytes(head, sizeof head) || !readBytes(tail, sizeof tail))
+        return fail("cannot read impulse " + std::to_string(k));
       if (head[0] < 0 || head[0] > 2) return fail("impulse of unknown kind " + std::to_string(head[0]));
       record.log.impulses.push_back(Impulse{static_cast<PairKind>(head[0]), head[1], head[2], Vec2(tail[0], tail[1]), tail[2]});
     }
@@ -126,7 +136,8 @@ Status TrajectoryReader::next(TrajectoryRecord& record, bool& atEnd) {
       if (length < 0 || static_cast<std::uint64_t>(length) * 8 > size_ - offset_)
         return fail("impossible length " + std::to_string(length) + " of polynomial " + std::to_string(k));
       scratch_.resize(static_cast<size_t>(length));
-      readBytes(scratch_.data(), 8ull * static_cast<std::uint64_t>(length));
+      if (!readBytes(scratch_.data(), 8ull * static_cast<std::uint64_t>(length)))
+        return fail("cannot read polynomial " + std::to_string(k));
       record.log.polynomials.add(scratch_.data(), length);
     }
   }
