@@ -31,12 +31,12 @@ struct PEProducts {
   }
 };
 
-Polynomial peDistanceFrom(const PEProducts& k, double radiusSum) {
+void peDistanceInto(const PEProducts& k, double radiusSum, Polynomial* out) {
   // R^2 G - G W + A^2, expanded power by power (R = rv + re):
   //   G W = as + (2au + 2bs) t + (ad + 4bu + cs) t^2 + (2bd + 2cu) t^3 + cd t^4
   //   A^2 = f^2 + 2fg t + (g^2 + 2fh) t^2 + 2gh t^3 + h^2 t^4
   const double r2 = radiusSum * radiusSum;
-  return Polynomial::fromHighestFirst({
+  out->assign({
       k.h * k.h - k.c * k.d,
       2.0 * k.g * k.h - 2.0 * k.b * k.d - 2.0 * k.c * k.u,
       r2 * k.c - (k.a * k.d + 4.0 * k.b * k.u + k.c * k.s) + (k.g * k.g + 2.0 * k.f * k.h),
@@ -45,7 +45,7 @@ Polynomial peDistanceFrom(const PEProducts& k, double radiusSum) {
   });
 }
 
-Polynomial peApproachFrom(const PEProducts& k, QuinticForm form) {
+void peApproachInto(const PEProducts& k, QuinticForm form, Polynomial* out) {
   // V = G Dw - A De and N = G (x2 - x1)(t) + A e(t) = -G w + A e, so
   //   V.N = -G^2 (w.Dw) + G A (Dw.e + De.w) - A^2 (De.e)
   //       = -G^2 (u + d t) + G A (g + 2h t) - A^2 (b + c t).
@@ -62,7 +62,7 @@ Polynomial peApproachFrom(const PEProducts& k, QuinticForm form) {
   // The single difference of the reference: its t^3 coefficient has f g q where the
   // expansion of -A^2 (b + c t) gives f h q (A^2's t^2 coefficient g^2 + 2fh times c).
   const double fxq = (form == QuinticForm::Exact ? h : g) * f * q;
-  return Polynomial::fromHighestFirst({
+  out->assign({
       -h * h * q - c * c * d - 2.0 * o * j,
       -h * h * p - 2.0 * g * h * q - 4.0 * b * c * d - c * c * e - o * i - 2.0 * n * j,
       -2.0 * g * h * p - 2.0 * fxq - g * g * q - 2.0 * a * c * d - 4.0 * b * b * d - 4.0 * b * c * e -
@@ -139,53 +139,101 @@ bool report(double tau, Contact* hit, Vec2 n) {
 }  // namespace
 
 // ---------------------------------------------------------------- builders
+// Each polynomial has an in-place builder (detection writes straight into the caller's log:
+// copying a freshly built Polynomial stalls on store forwarding, which cost a third of a
+// PP query) and a value-returning public wrapper.
 
-Polynomial ppPosition(const PPInput& in) {
+namespace {
+
+void ppPositionInto(const PPInput& in, Polynomial* out) {
   // |x21 + t D21|^2 <= (r1+r2)^2  <=>  -|D21|^2 t^2 - 2 (D21.x21) t + (r1+r2)^2 - |x21|^2 >= 0
   const Vec2 x21 = in.x2 - in.x1;
   const Vec2 d21 = in.d2 - in.d1;
   const double rs = in.r1 + in.r2;
-  return Polynomial::fromHighestFirst({-d21.squaredNorm(), -2.0 * d21.dot(x21), rs * rs - x21.squaredNorm()});
+  out->assign({-d21.squaredNorm(), -2.0 * d21.dot(x21), rs * rs - x21.squaredNorm()});
 }
 
-Polynomial ppApproach(const PPInput& in) {
+void ppApproachInto(const PPInput& in, Polynomial* out) {
   // Approaching while d/dt |x21(t)|^2 / 2 = D21.x21 + |D21|^2 t < 0; the reference writes the
   // negation with D12 = -D21.
   const Vec2 x21 = in.x2 - in.x1;
   const Vec2 d21 = in.d2 - in.d1;
   const Vec2 d12 = in.d1 - in.d2;
-  return Polynomial::fromHighestFirst({-d21.squaredNorm(), d12.dot(x21)});
+  out->assign({-d21.squaredNorm(), d12.dot(x21)});
 }
 
-Polynomial peDistance(const PEInput& in) { return peDistanceFrom(PEProducts(in), in.rv + in.re); }
+void peAlphaAboveZeroInto(const PEProducts& k, Polynomial* out) { out->assign({k.h, k.g, k.f}); }
 
-Polynomial peAlphaAboveZero(const PEInput& in) {
-  const PEProducts k(in);
-  return Polynomial::fromHighestFirst({k.h, k.g, k.f});
-}
-
-Polynomial peAlphaBelowOne(const PEInput& in) {
+void peAlphaBelowOneInto(const PEInput& in, Polynomial* out) {
   // (x1 - x3)(t).(x2 - x3)(t) with both factors linear in t.
   const Vec2 u0 = in.x1 - in.x3, du = in.d1 - in.d3;
   const Vec2 v0 = in.x2 - in.x3, dv = in.d2 - in.d3;
-  return Polynomial::fromHighestFirst({du.dot(dv), u0.dot(dv) + du.dot(v0), u0.dot(v0)});
+  out->assign({du.dot(dv), u0.dot(dv) + du.dot(v0), u0.dot(v0)});
 }
 
-Polynomial peApproach(const PEInput& in, QuinticForm form) { return peApproachFrom(PEProducts(in), form); }
-
-Polynomial phDistance(const PHInput& in) {
+void phDistanceInto(const PHInput& in, Polynomial* out) {
   // With P = (p - x1).m and D = d1.m, (p - x1(t)).m = P - D t, so
   // r^2|m|^2 - (P - D t)^2 = -D^2 t^2 + 2PD t + r^2|m|^2 - P^2.
   const double P = (in.p - in.x1).dot(in.m);
   const double D = in.d1.dot(in.m);
-  return Polynomial::fromHighestFirst({-D * D, 2.0 * P * D, in.r * in.r * in.m.squaredNorm() - P * P});
+  out->assign({-D * D, 2.0 * P * D, in.r * in.r * in.m.squaredNorm() - P * P});
 }
 
-Polynomial phApproach(const PHInput& in) {
+void phApproachInto(const PHInput& in, Polynomial* out) {
   // Half of d/dt of the distance polynomial: moving towards the boundary.
   const double P = (in.p - in.x1).dot(in.m);
   const double D = in.d1.dot(in.m);
-  return Polynomial::fromHighestFirst({-D * D, P * D});
+  out->assign({-D * D, P * D});
+}
+
+}  // namespace
+
+Polynomial ppPosition(const PPInput& in) {
+  Polynomial p;
+  ppPositionInto(in, &p);
+  return p;
+}
+
+Polynomial ppApproach(const PPInput& in) {
+  Polynomial p;
+  ppApproachInto(in, &p);
+  return p;
+}
+
+Polynomial peDistance(const PEInput& in) {
+  Polynomial p;
+  peDistanceInto(PEProducts(in), in.rv + in.re, &p);
+  return p;
+}
+
+Polynomial peAlphaAboveZero(const PEInput& in) {
+  Polynomial p;
+  peAlphaAboveZeroInto(PEProducts(in), &p);
+  return p;
+}
+
+Polynomial peAlphaBelowOne(const PEInput& in) {
+  Polynomial p;
+  peAlphaBelowOneInto(in, &p);
+  return p;
+}
+
+Polynomial peApproach(const PEInput& in, QuinticForm form) {
+  Polynomial p;
+  peApproachInto(PEProducts(in), form, &p);
+  return p;
+}
+
+Polynomial phDistance(const PHInput& in) {
+  Polynomial p;
+  phDistanceInto(in, &p);
+  return p;
+}
+
+Polynomial phApproach(const PHInput& in) {
+  Polynomial p;
+  phApproachInto(in, &p);
+  return p;
 }
 
 // ---------------------------------------------------------------- contact vectors
@@ -210,17 +258,17 @@ Vec2 phContactVector(const PHInput& in, double tau) {
 
 // Each detector adds the polynomials to the staged solve cheapest first (the approach line
 // of PP and PH; the alpha quadratics of PE before the quartic and the quintic). With a log,
-// everything is built first, in the reference's order, and solved the same way. Without
-// one, only what is needed is built, into locals (no zeroed scratch log: it cost more than
-// the PP solve itself).
+// everything is built first, straight into the log, in the reference's order, and solved
+// the same way. Without one, only what is needed is built, into locals (a zeroed scratch
+// PolyLog would cost more than the PP solve itself).
 
 bool detectPP(const PPInput& in, Contact* hit, PolyLog* log) {
-  StagedSolve solve;
+  StagedSolve solve;  // holds pointers: finish() inside the scope of the polynomials
   double tau = kNever;
   if (log != nullptr) {
     log->count = 2;
-    log->polys[0] = ppPosition(in);
-    log->polys[1] = ppApproach(in);
+    ppPositionInto(in, &log->polys[0]);
+    ppApproachInto(in, &log->polys[1]);
     if (!solve.add(log->polys[1]) || !solve.add(log->polys[0])) return false;
     tau = solve.finish();
   } else {
@@ -234,15 +282,15 @@ bool detectPP(const PPInput& in, Contact* hit, PolyLog* log) {
 }
 
 bool detectPE(const PEInput& in, Contact* hit, PolyLog* log, QuinticForm form) {
-  StagedSolve solve;
+  StagedSolve solve;  // holds pointers: finish() inside the scope of the polynomials
   double tau = kNever;
   if (log != nullptr) {  // all of them, whatever the outcome
     const PEProducts k(in);
     log->count = 4;
-    log->polys[0] = peDistanceFrom(k, in.rv + in.re);
-    log->polys[1] = Polynomial::fromHighestFirst({k.h, k.g, k.f});
-    log->polys[2] = peAlphaBelowOne(in);
-    log->polys[3] = peApproachFrom(k, form);
+    peDistanceInto(k, in.rv + in.re, &log->polys[0]);
+    peAlphaAboveZeroInto(k, &log->polys[1]);
+    peAlphaBelowOneInto(in, &log->polys[2]);
+    peApproachInto(k, form, &log->polys[3]);
     if (!solve.add(log->polys[1]) || !solve.add(log->polys[2]) || !solve.add(log->polys[0]) ||
         !solve.add(log->polys[3]))
       return false;
@@ -250,13 +298,16 @@ bool detectPE(const PEInput& in, Contact* hit, PolyLog* log, QuinticForm form) {
   } else {
     if (sweptBoxesApart(in)) return false;
     const PEProducts k(in);
-    const Polynomial aboveZero = Polynomial::fromHighestFirst({k.h, k.g, k.f});
+    Polynomial aboveZero;
+    peAlphaAboveZeroInto(k, &aboveZero);
     if (!solve.add(aboveZero)) return false;
     const Polynomial belowOne = peAlphaBelowOne(in);
     if (!solve.add(belowOne)) return false;
-    const Polynomial distance = peDistanceFrom(k, in.rv + in.re);
+    Polynomial distance;
+    peDistanceInto(k, in.rv + in.re, &distance);
     if (!solve.add(distance)) return false;
-    const Polynomial approach = peApproachFrom(k, form);
+    Polynomial approach;
+    peApproachInto(k, form, &approach);
     if (!solve.add(approach)) return false;
     tau = solve.finish();
   }
@@ -264,12 +315,12 @@ bool detectPE(const PEInput& in, Contact* hit, PolyLog* log, QuinticForm form) {
 }
 
 bool detectPH(const PHInput& in, Contact* hit, PolyLog* log) {
-  StagedSolve solve;
+  StagedSolve solve;  // holds pointers: finish() inside the scope of the polynomials
   double tau = kNever;
   if (log != nullptr) {
     log->count = 2;
-    log->polys[0] = phDistance(in);
-    log->polys[1] = phApproach(in);
+    phDistanceInto(in, &log->polys[0]);
+    phApproachInto(in, &log->polys[1]);
     if (!solve.add(log->polys[1]) || !solve.add(log->polys[0])) return false;
     tau = solve.finish();
   } else {

@@ -133,10 +133,6 @@ double firstCommonTime(const PositiveSet* sets, int count, double tMax) {
   return t <= tMax ? t : kNever;
 }
 
-bool positiveJustAfterZero(const Polynomial& p) {
-  return p.signJustAfterZero() > 0 && allFinite(p);
-}
-
 double firstPositiveTime(const Polynomial* polys, int count, double tMax) {
   assert(count <= kMaxSolverPolynomials);
   bool allPositiveAtStart = true;

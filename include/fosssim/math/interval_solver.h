@@ -54,7 +54,12 @@ PositiveSet positiveSet(const Polynomial& p, double tMax = 1.0);
 
 // p > 0 just after t = 0 (exact, from the coefficients) and all coefficients finite. When
 // this holds for every polynomial of a query the answer is 0 without any root finding.
-bool positiveJustAfterZero(const Polynomial& p);
+inline bool positiveJustAfterZero(const Polynomial& p) {
+  if (p.signJustAfterZero() <= 0) return false;
+  double probe = 0.0;  // NaN iff some coefficient is infinite or NaN (inf*0 and NaN*0 are NaN)
+  for (int i = 0; i < p.size; ++i) probe += p.c[i] * 0.0;
+  return probe == 0.0;
+}
 
 // inf of the common positive set, or kNever: the smallest t in [0, tMax] contained in every
 // set. count = 0 returns 0 (no condition at all holds everywhere).

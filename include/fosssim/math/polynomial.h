@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cassert>
+#include <cfloat>
 #include <initializer_list>
 
 namespace fosssim::math {
@@ -29,6 +30,11 @@ struct Polynomial {
   // must not do it.
   static Polynomial fromHighestFirst(std::initializer_list<double> coeffs);
   static Polynomial fromHighestFirst(const double* coeffs, int count);
+  // The same, in place (no temporary to copy: the CCD builders write straight into a log).
+  void assign(const double* coeffs, int count);
+  void assign(std::initializer_list<double> coeffs) {
+    assign(coeffs.begin(), static_cast<int>(coeffs.size()));
+  }
 
   // Value at t by Horner's rule. The zero polynomial evaluates to 0.
   double operator()(double t) const;
@@ -63,14 +69,18 @@ constexpr double kHornerErrorFactor = 8.0;
 // The small members are defined here, inline: they run several times in every CCD query
 // and a call across translation units cost more than their bodies.
 
-inline Polynomial Polynomial::fromHighestFirst(const double* coeffs, int count) {
-  Polynomial p;
+inline void Polynomial::assign(const double* coeffs, int count) {
   int first = 0;
   while (first < count && coeffs[first] == 0.0) ++first;  // exact zeros only, as the reference
   const int n = count - first;
   assert(n <= kMaxCoeffs && "Polynomial: more than kMaxCoeffs significant coefficients");
-  p.size = n < kMaxCoeffs ? n : kMaxCoeffs;
-  for (int i = 0; i < p.size; ++i) p.c[i] = coeffs[first + i];
+  size = n < kMaxCoeffs ? n : kMaxCoeffs;
+  for (int i = 0; i < kMaxCoeffs; ++i) c[i] = i < size ? coeffs[first + i] : 0.0;
+}
+
+inline Polynomial Polynomial::fromHighestFirst(const double* coeffs, int count) {
+  Polynomial p;
+  p.assign(coeffs, count);
   return p;
 }
 
@@ -94,6 +104,18 @@ inline void Polynomial::evaluate(double t, double* value, double* slope) const {
   }
   *value = v;
   *slope = d;
+}
+
+inline double Polynomial::evaluateWithErrorBound(double t, double* errorBound) const {
+  const double at = t < 0.0 ? -t : t;
+  double v = 0.0;
+  double s = 0.0;  // sum |c_k| |t|^k, by Horner on absolute values
+  for (int i = 0; i < size; ++i) {
+    v = v * t + c[i];
+    s = s * at + (c[i] < 0.0 ? -c[i] : c[i]);
+  }
+  *errorBound = kHornerErrorFactor * DBL_EPSILON * s;
+  return v;
 }
 
 inline int Polynomial::signJustAfterZero() const {

@@ -13,6 +13,9 @@
 #ifndef FOSSSIM_MATH_REAL_ROOTS_H
 #define FOSSSIM_MATH_REAL_ROOTS_H
 
+#include <cfloat>
+#include <cmath>
+
 #include "fosssim/math/polynomial.h"
 
 namespace fosssim::math {
@@ -65,6 +68,47 @@ int bernsteinCoefficients(const Polynomial& p, double tMax, double b[Polynomial:
 
 // Number of sign changes in b[0..count-1], exact zeros skipped.
 int signVariations(const double* b, int count);
+
+// ---- inline definitions (these run in every PP and PH query)
+
+inline int quadraticRoots(double a, double b, double c, double roots[2]) {
+  const double disc = b * b - 4.0 * a * c;
+  // The discriminant is computed from products of size b^2 and 4|ac|; below its rounding
+  // error it carries no sign information, and the vertex value -D/(4a) is numerically zero:
+  // a double root (the same rule as evaluateSnapped applies to higher degrees).
+  const double discError = kHornerErrorFactor * DBL_EPSILON * (b * b + 4.0 * std::fabs(a * c));
+  if (std::fabs(disc) <= discError) {
+    roots[0] = -b / (2.0 * a);
+    return 1;
+  }
+  if (disc < 0.0) return 0;
+  const double s = std::sqrt(disc);
+  const double q = -0.5 * (b + (b >= 0.0 ? s : -s));  // |q| >= s/2 > 0, no cancellation
+  double r1 = q / a;
+  double r2 = c / q;
+  if (r1 > r2) {
+    const double tmp = r1;
+    r1 = r2;
+    r2 = tmp;
+  }
+  roots[0] = r1;
+  roots[1] = r2;
+  return 2;
+}
+
+inline void snapRootToEnd(const Polynomial& p, double tMax, double* roots, int count) {
+  if (count == 0 || evaluateSnapped(p, tMax) != 0.0) return;
+  int best = 0;
+  for (int i = 1; i < count; ++i)
+    if (std::fabs(roots[i] - tMax) < std::fabs(roots[best] - tMax)) best = i;
+  roots[best] = tMax;
+}
+
+inline double evaluateSnapped(const Polynomial& p, double t) {
+  double bound = 0.0;
+  const double v = p.evaluateWithErrorBound(t, &bound);
+  return std::fabs(v) <= bound ? 0.0 : v;
+}
 
 }  // namespace fosssim::math
 
