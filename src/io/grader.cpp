@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <sstream>
 
 namespace fosssim {
@@ -145,6 +146,22 @@ class Grader final : public StepObserver {
 
 const char* verdict(bool ok) { return ok ? "passed" : "FAILED"; }
 
+/// When all records have the same size (positions and velocities only), the file must hold exactly
+/// the scene's numSteps() + 1 of them; otherwise report.structuralError says why. Records with
+/// impulses or polynomials vary in size and are checked one by one while reading.
+bool sizeFits(std::uint64_t bytes, const Scene& scene, const RecordLayout& layout, GradeReport& report) {
+  if (layout.impulses || layout.polynomials) return true;
+  const std::uint64_t record = 32ull * static_cast<std::uint64_t>(scene.numParticles());
+  const std::uint64_t records = bytes / record, wanted = static_cast<std::uint64_t>(scene.numSteps()) + 1;
+  if (bytes % record == 0 && records == wanted) return true;
+  report.structuralError = "the file has " + std::to_string(bytes) + " bytes, but the trajectory of this scene (" +
+                           std::to_string(scene.numParticles()) + " particles, " + std::to_string(record) +
+                           " bytes per record, " + std::to_string(wanted) + " records) has " +
+                           (wanted <= UINT64_MAX / record ? std::to_string(wanted * record) : "more") +
+                           " bytes; is it the trajectory of this scene?";
+  return false;
+}
+
 }  // namespace
 
 bool samePolynomial(const double* a, int na, const double* b, int nb, double tol) {
@@ -171,6 +188,8 @@ GradeReport gradeTrajectory(const Scene& scene, const State& initial, Simulator&
   std::unique_ptr<TrajectoryReader> reader;
   if (Status s = TrajectoryReader::open(path, scene.numParticles(), simulator.layout(), reader); !s) {
     report.structuralError = s.message();
+  } else if (!sizeFits(reader->fileSize(), scene, simulator.layout(), report)) {
+    // report.structuralError says why; nothing is graded
   } else {
     grader.reader = reader.get();
     TrajectoryRecord record;
