@@ -1,8 +1,14 @@
 #include "fosssim/math/ccd.h"
 
+#include <initializer_list>
 
 namespace fosssim::math {
 namespace {
+
+// Every CCD polynomial is stored through here: the reference's leading-coefficient cutoff.
+inline void setTrimmed(Polynomial* out, std::initializer_list<double> coeffs) {
+  out->assign(coeffs, kNegligibleLeadingCoefficient);
+}
 
 // The scalar products every PE polynomial is made of. With
 //   e(t) = e0 + t De   (e0 = x3 - x2, De = d3 - d2: the edge vector)
@@ -36,7 +42,7 @@ void peDistanceInto(const PEProducts& k, double radiusSum, Polynomial* out) {
   //   G W = as + (2au + 2bs) t + (ad + 4bu + cs) t^2 + (2bd + 2cu) t^3 + cd t^4
   //   A^2 = f^2 + 2fg t + (g^2 + 2fh) t^2 + 2gh t^3 + h^2 t^4
   const double r2 = radiusSum * radiusSum;
-  out->assign({
+  setTrimmed(out, {
       k.h * k.h - k.c * k.d,
       2.0 * k.g * k.h - 2.0 * k.b * k.d - 2.0 * k.c * k.u,
       r2 * k.c - (k.a * k.d + 4.0 * k.b * k.u + k.c * k.s) + (k.g * k.g + 2.0 * k.f * k.h),
@@ -62,7 +68,7 @@ void peApproachInto(const PEProducts& k, QuinticForm form, Polynomial* out) {
   // The single difference of the reference: its t^3 coefficient has f g q where the
   // expansion of -A^2 (b + c t) gives f h q (A^2's t^2 coefficient g^2 + 2fh times c).
   const double fxq = (form == QuinticForm::Exact ? h : g) * f * q;
-  out->assign({
+  setTrimmed(out, {
       -h * h * q - c * c * d - 2.0 * o * j,
       -h * h * p - 2.0 * g * h * q - 4.0 * b * c * d - c * c * e - o * i - 2.0 * n * j,
       -2.0 * g * h * p - 2.0 * fxq - g * g * q - 2.0 * a * c * d - 4.0 * b * b * d - 4.0 * b * c * e -
@@ -150,7 +156,7 @@ void ppPositionInto(const PPInput& in, Polynomial* out) {
   const Vec2 x21 = in.x2 - in.x1;
   const Vec2 d21 = in.d2 - in.d1;
   const double rs = in.r1 + in.r2;
-  out->assign({-d21.squaredNorm(), -2.0 * d21.dot(x21), rs * rs - x21.squaredNorm()});
+  setTrimmed(out, {-d21.squaredNorm(), -2.0 * d21.dot(x21), rs * rs - x21.squaredNorm()});
 }
 
 void ppApproachInto(const PPInput& in, Polynomial* out) {
@@ -159,16 +165,16 @@ void ppApproachInto(const PPInput& in, Polynomial* out) {
   const Vec2 x21 = in.x2 - in.x1;
   const Vec2 d21 = in.d2 - in.d1;
   const Vec2 d12 = in.d1 - in.d2;
-  out->assign({-d21.squaredNorm(), d12.dot(x21)});
+  setTrimmed(out, {-d21.squaredNorm(), d12.dot(x21)});
 }
 
-void peAlphaAboveZeroInto(const PEProducts& k, Polynomial* out) { out->assign({k.h, k.g, k.f}); }
+void peAlphaAboveZeroInto(const PEProducts& k, Polynomial* out) { setTrimmed(out, {k.h, k.g, k.f}); }
 
 void peAlphaBelowOneInto(const PEInput& in, Polynomial* out) {
   // (x1 - x3)(t).(x2 - x3)(t) with both factors linear in t.
   const Vec2 u0 = in.x1 - in.x3, du = in.d1 - in.d3;
   const Vec2 v0 = in.x2 - in.x3, dv = in.d2 - in.d3;
-  out->assign({du.dot(dv), u0.dot(dv) + du.dot(v0), u0.dot(v0)});
+  setTrimmed(out, {du.dot(dv), u0.dot(dv) + du.dot(v0), u0.dot(v0)});
 }
 
 void phDistanceInto(const PHInput& in, Polynomial* out) {
@@ -176,14 +182,14 @@ void phDistanceInto(const PHInput& in, Polynomial* out) {
   // r^2|m|^2 - (P - D t)^2 = -D^2 t^2 + 2PD t + r^2|m|^2 - P^2.
   const double P = (in.p - in.x1).dot(in.m);
   const double D = in.d1.dot(in.m);
-  out->assign({-D * D, 2.0 * P * D, in.r * in.r * in.m.squaredNorm() - P * P});
+  setTrimmed(out, {-D * D, 2.0 * P * D, in.r * in.r * in.m.squaredNorm() - P * P});
 }
 
 void phApproachInto(const PHInput& in, Polynomial* out) {
   // Half of d/dt of the distance polynomial: moving towards the boundary.
   const double P = (in.p - in.x1).dot(in.m);
   const double D = in.d1.dot(in.m);
-  out->assign({-D * D, P * D});
+  setTrimmed(out, {-D * D, P * D});
 }
 
 }  // namespace

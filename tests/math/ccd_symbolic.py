@@ -13,7 +13,7 @@ same numbers. Output, one record per pair, all numbers as round-trip decimal dou
                                   quintic, and 'reft3 <value>' (the reference's t^3 coefficient)
   PH x1 d1 r p m                  then 2 'poly' lines: distance, approach
 (vectors are two numbers). A poly line is 'poly <n> c_{n-1} ... c_0', highest power first,
-exact zero leading coefficients dropped as in the simulator.
+leading coefficients below 1e-12 in magnitude dropped, as the reference does.
 
 usage: ccd_symbolic.py OUTPUT_FILE
 """
@@ -41,12 +41,20 @@ def num(x):
     return repr(float(Fraction(int(x.p), int(x.q))))
 
 
+# The reference drops leading coefficients below 1e-12 in magnitude (not only exact zeros;
+# see kNegligibleLeadingCoefficient in ccd.h for the evidence).
+NEGLIGIBLE_LEADING = sp.Rational(1, 10 ** 12)
+
+
 def coeffs(expr):
-    """Coefficients highest first, exact zero leading ones dropped (empty for 0)."""
+    """Coefficients highest first, negligible leading ones dropped (empty for 0)."""
     expr = sp.expand(expr)
     if expr == 0:
         return []
-    return sp.Poly(expr, t).all_coeffs()
+    c = sp.Poly(expr, t).all_coeffs()
+    while c and abs(c[0]) < NEGLIGIBLE_LEADING:
+        c.pop(0)
+    return c
 
 
 def poly_line(expr):

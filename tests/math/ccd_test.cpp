@@ -102,6 +102,17 @@ TEST(CcdCoefficients, StaticPairsGiveShortLists) {
   EXPECT_EQ(phApproach(h).size, 0);
 }
 
+TEST(CcdCoefficients, NegligibleLeadingCoefficientsAreDropped) {
+  // Relative displacement 5e-7 per step: |D21|^2 = 2.5e-13 < 1e-12 leads both PP lists.
+  const PPInput slow = pp({0, 0}, {5e-7, 0}, 0.2, {1, 0}, {0, 0}, 0.2);
+  EXPECT_EQ(ppPosition(slow).size, 2);
+  EXPECT_EQ(ppApproach(slow).size, 1);
+  // 2e-6: |D21|^2 = 4e-12 stays.
+  const PPInput slower = pp({0, 0}, {2e-6, 0}, 0.2, {1, 0}, {0, 0}, 0.2);
+  EXPECT_EQ(ppPosition(slower).size, 3);
+  EXPECT_EQ(ppApproach(slower).size, 2);
+}
+
 TEST(CcdCoefficients, ReferenceQuinticDiffersOnlyInTCubed) {
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(-1.0, 1.0);

@@ -21,6 +21,19 @@ TEST(Polynomial, KeepsTinyNonzeroLeadingCoefficient) {
   EXPECT_EQ(p.size, 2);
 }
 
+TEST(Polynomial, AssignWithLeadingCutoff) {
+  Polynomial p;
+  p.assign({5e-13, -9e-13, 1e-12, 1e-20, 2.0}, 1e-12);  // inner tiny coefficients stay
+  ASSERT_EQ(p.size, 3);
+  EXPECT_EQ(p.c[0], 1e-12);
+  EXPECT_EQ(p.c[1], 1e-20);
+  EXPECT_EQ(p.c[3], 0.0);  // entries past size are zero
+  p.assign({1e-13, 1e-14}, 1e-12);
+  EXPECT_EQ(p.size, 0);
+  p.assign({1e-13, 1.0});  // no cutoff: only exact zeros go
+  EXPECT_EQ(p.size, 2);
+}
+
 TEST(Polynomial, AllZerosIsTheEmptyPolynomial) {
   const Polynomial p = Polynomial::fromHighestFirst({0.0, 0.0, 0.0});
   EXPECT_EQ(p.size, 0);

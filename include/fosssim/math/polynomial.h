@@ -9,6 +9,7 @@
 #include <array>
 #include <cassert>
 #include <cfloat>
+#include <cmath>
 #include <initializer_list>
 
 namespace fosssim::math {
@@ -31,9 +32,11 @@ struct Polynomial {
   static Polynomial fromHighestFirst(std::initializer_list<double> coeffs);
   static Polynomial fromHighestFirst(const double* coeffs, int count);
   // The same, in place (no temporary to copy: the CCD builders write straight into a log).
-  void assign(const double* coeffs, int count);
-  void assign(std::initializer_list<double> coeffs) {
-    assign(coeffs.begin(), static_cast<int>(coeffs.size()));
+  // leadingCutoff > 0 also drops leading coefficients with |c| < leadingCutoff (the CCD
+  // builders pass kNegligibleLeadingCoefficient, see ccd.h); inner coefficients are kept.
+  void assign(const double* coeffs, int count, double leadingCutoff = 0.0);
+  void assign(std::initializer_list<double> coeffs, double leadingCutoff = 0.0) {
+    assign(coeffs.begin(), static_cast<int>(coeffs.size()), leadingCutoff);
   }
 
   // Value at t by Horner's rule. The zero polynomial evaluates to 0.
@@ -69,9 +72,9 @@ constexpr double kHornerErrorFactor = 8.0;
 // The small members are defined here, inline: they run several times in every CCD query
 // and a call across translation units cost more than their bodies.
 
-inline void Polynomial::assign(const double* coeffs, int count) {
+inline void Polynomial::assign(const double* coeffs, int count, double leadingCutoff) {
   int first = 0;
-  while (first < count && coeffs[first] == 0.0) ++first;  // exact zeros only, as the reference
+  while (first < count && (coeffs[first] == 0.0 || std::fabs(coeffs[first]) < leadingCutoff)) ++first;
   const int n = count - first;
   assert(n <= kMaxCoeffs && "Polynomial: more than kMaxCoeffs significant coefficients");
   size = n < kMaxCoeffs ? n : kMaxCoeffs;
