@@ -8,7 +8,7 @@ closed-form properties that the numbers must have if the simulator is right: clo
 solutions, conservation laws, exact velocity exchanges, predicted collision times, and (for the
 hybrid handler) that nothing overlaps at any step end.
 
-usage: check.py [--root DIR] [SCENE...]   (SCENE as a path relative to assets/, e.g. examples/drag.xml)
+usage: check.py [--root DIR] [-v | --markdown] [SCENE...]   (SCENE as a path relative to assets/, e.g. examples/drag.xml)
 Exit code 0 when every check passed.
 """
 import argparse
@@ -841,6 +841,7 @@ def main():
     ap.add_argument('--root', default=os.path.dirname(here), help='the repository (default: this file\'s parent)')
     ap.add_argument('--oracle', default=None, help='folder of the .bin files (default ROOT/oracle)')
     ap.add_argument('-v', '--verbose', action='store_true', help='print what each check established')
+    ap.add_argument('--markdown', action='store_true', help='print one Markdown list item per scene (for oracle/README.md)')
     ap.add_argument('scenes', nargs='*')
     args = ap.parse_args()
     assets = os.path.join(args.root, 'assets')
@@ -860,6 +861,9 @@ def main():
             tr = Trajectory(bin_path, sc)
             generic(sc, tr, notes)
             CHECKS[rel](sc, tr, notes)
+            if args.markdown:
+                print('- `%s`: %s.' % (os.path.splitext(rel)[0] + '.bin', '; '.join(notes)))
+                continue
             print('ok   %s' % rel)
             if args.verbose:
                 for n in notes:
@@ -873,7 +877,8 @@ def main():
     for rel in stale if not args.scenes else []:
         failed += 1
         print('FAIL %s: a check exists but the scene does not' % rel)
-    print('%d passed, %d failed' % (len(scenes) - min(failed, len(scenes)), failed))
+    if not args.markdown or failed:
+        print('%d passed, %d failed' % (len(scenes) - min(failed, len(scenes)), failed))
     return 1 if failed else 0
 
 
