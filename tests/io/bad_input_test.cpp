@@ -1,0 +1,183 @@
+// Bad attribute values: every numeric attribute of every element, given text that is not a
+// number, junk after a number, NaN or infinity, or left out when required, must be rejected with
+// a message naming the file, the line, the element and the attribute. Values outside their
+// range (masses, dt, radii, flags, colours, COR, ...) likewise.
+#include "scene_text.h"
+
+namespace fosssim::testing {
+namespace {
+
+struct Attr {
+  const char* name;
+  const char* good;
+  bool required;
+};
+
+/// One element of the format with valid values, and where it goes in the base scene.
+struct ElementSpec {
+  const char* name;
+  const char* fixedText;  ///< non-numeric attributes written as they are (e.g. type="...")
+  std::vector<Attr> numeric;
+  int line;  ///< the base scene's line it replaces, or 0: inserted at kExtraLine
+};
+
+// Required attributes as listed in the format's element table (spec section 1).
+const std::vector<ElementSpec>& elements() {
+  static const std::vector<ElementSpec> specs = {
+      {"duration", "", {{"time", "1", true}}, 2},
+      {"integrator", "type=\"explicit-euler\"", {{"dt", "0.01", true}}, 3},
+      {"particle", "", {{"m", "1", true}, {"px", "0", true}, {"py", "0", true}, {"vx", "0", true},
+                        {"vy", "0", true}, {"fixed", "0", true}, {"radius", "0.1", false}}, 4},
+      {"edge", "", {{"i", "0", true}, {"j", "1", true}, {"radius", "0.02", false}}, 6},
+      {"halfplane", "", {{"px", "0", true}, {"py", "-1", true}, {"nx", "0", true}, {"ny", "1", true}}, 7},
+      {"maxsimfreq", "", {{"max", "100", true}}, 0},
+      {"viewport", "", {{"cx", "0", true}, {"cy", "0", true}, {"size", "2", true}}, 0},
+      {"backgroundcolor", "", {{"r", "1", true}, {"g", "1", true}, {"b", "1", true}}, 0},
+      {"springforce", "", {{"edge", "0", true}, {"k", "1", true}, {"l0", "1", true}, {"b", "0", false}}, 0},
+      {"simplegravity", "", {{"fx", "0", true}, {"fy", "-9.81", true}}, 0},
+      {"constantforce", "", {{"fx", "1", true}, {"fy", "0", true}}, 0},
+      {"gravitationalforce", "", {{"i", "0", true}, {"j", "1", true}, {"G", "1", true}}, 0},
+      {"dragdamping", "", {{"b", "0.1", true}}, 0},
+      {"vortexforce", "", {{"i", "0", true}, {"j", "1", true}, {"kbs", "1", true}, {"kvc", "1", true}}, 0},
+      {"collision", "type=\"penalty\"",
+       {{"COR", "0.5", false}, {"maxiters", "10", false}, {"k", "100", false}, {"thickness", "0.01", false}}, 0},
+      {"particlecolor", "", {{"i", "1", true}, {"r", "0", true}, {"g", "0", true}, {"b", "0", true}}, 0},
+      {"edgecolor", "", {{"i", "0", true}, {"r", "0", true}, {"g", "0", true}, {"b", "0", true}}, 0},
+      {"halfplanecolor", "", {{"i", "0", true}, {"r", "0", true}, {"g", "0", true}, {"b", "0", true}}, 0},
+      {"particlepath", "", {{"i", "1", true}, {"duration", "1", true}, {"r", "0", true}, {"g", "0", true},
+                            {"b", "0", true}}, 0},
+  };
+  return specs;
+}
+
+/// The element's text with attribute `changed` set to `value` (or left out when value is null).
+std::string elementText(const ElementSpec& e, const std::string& changed, const char* value) {
+  std::string text = std::string("  <") + e.name + " " + e.fixedText;
+  for (const Attr& a : e.numeric) {
+    if (a.name == changed && !value) continue;
+    text += std::string(" ") + a.name + "=\"" + (a.name == changed ? value : a.good) + "\"";
+  }
+  return text + "/>";
+}
+
+std::string sceneWith(const ElementSpec& e, const std::string& changed, const char* value) {
+  const std::string element = elementText(e, changed, value);
+  return e.line ? replaced(e.line, element) : extra(element);
+}
+
+int lineOf(const ElementSpec& e) { return e.line ? e.line : kExtraLine; }
+
+TEST(BadInput, EveryElementLoadsWithItsGoodValues) {
+  // The sweeps below change one attribute at a time; the unchanged scene must load.
+  for (const ElementSpec& e : elements()) EXPECT_EQ(loadError(sceneWith(e, "", nullptr)), "") << e.name;
+}
+
+TEST(BadInput, TextThatIsNotANumberIsLocated) {
+  for (const char* bad : {"abc", "1.5abc", "", "  ", "1,5", "0x", "--1", "1 2", "one", "1.0.0", "\"1\""}) {
+    for (const ElementSpec& e : elements())
+      for (const Attr& a : e.numeric) {
+        SCOPED_TRACE(std::string(e.name) + " " + a.name + "=\"" + bad + "\"");
+        const std::string value = bad == std::string("\"1\"") ? "&quot;1&quot;" : bad;
+        expectError(sceneWith(e, a.name, value.c_str()),
+                    {located(lineOf(e), e.name, a.name), "expected a number", "got \"" + std::string(bad) + "\""});
+      }
+  }
+}
+
+TEST(BadInput, NonFiniteNumbersAreRejected) {
+  for (const char* bad : {"nan", "NaN", "-nan", "inf", "-inf", "Infinity", "1e999", "-1e400"}) {
+    for (const ElementSpec& e : elements())
+      for (const Attr& a : e.numeric) {
+        SCOPED_TRACE(std::string(e.name) + " " + a.name + "=\"" + bad + "\"");
+        expectError(sceneWith(e, a.name, bad), {located(lineOf(e), e.name, a.name), "finite", bad});
+      }
+  }
+}
+
+TEST(BadInput, MissingRequiredAttributesAreNamed) {
+  for (const ElementSpec& e : elements())
+    for (const Attr& a : e.numeric) {
+      SCOPED_TRACE(std::string(e.name) + " without " + a.name);
+      if (a.required)
+        expectError(sceneWith(e, a.name, nullptr), {located(lineOf(e), e.name, a.name), "missing"});
+      else
+        EXPECT_EQ(loadError(sceneWith(e, a.name, nullptr)), "");
+    }
+  expectError(replaced(3, "  <integrator dt=\"0.01\"/>"), {located(3, "integrator", "type"), "missing"});
+  expectError(extra("  <collision COR=\"1\"/>"), {located(kExtraLine, "collision", "type"), "missing"});
+  expectError(extra("  <description/>"), {located(kExtraLine, "description", "text"), "missing"});
+}
+
+struct RangeCase {
+  const char* element;  ///< the element under test
+  const char* attribute;
+  const char* text;     ///< the whole element
+  int line;             ///< the base line it replaces, 0 to insert it
+  const char* why;      ///< a fragment the message must contain
+};
+
+TEST(BadInput, ValuesOutOfRangeAreRejected) {
+  const char* particle = "  <particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\" ";
+  const std::vector<RangeCase> cases = {
+      {"particle", "m", "  <particle m=\"0\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>", 4, "> 0"},
+      {"particle", "m", "  <particle m=\"-1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>", 4, "> 0"},
+      {"particle", "m", "  <particle m=\"1e-400\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>", 4, "> 0"},
+      {"particle", "radius", "radius=\"0\"/>", 4, "> 0"},
+      {"particle", "radius", "radius=\"-0.1\"/>", 4, "> 0"},
+      {"particle", "fixed", "  <particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"2\"/>", 4, "0 or 1"},
+      {"particle", "fixed", "  <particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0.5\"/>", 4, "0 or 1"},
+      {"particle", "fixed", "  <particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"-1\"/>", 4, "0 or 1"},
+      {"integrator", "dt", "  <integrator type=\"explicit-euler\" dt=\"0\"/>", 3, "> 0"},
+      {"integrator", "dt", "  <integrator type=\"explicit-euler\" dt=\"-0.01\"/>", 3, "> 0"},
+      {"duration", "time", "  <duration time=\"-1\"/>", 2, ">= 0"},
+      {"edge", "radius", "  <edge i=\"0\" j=\"1\" radius=\"0\"/>", 6, "> 0"},
+      {"edge", "radius", "  <edge i=\"0\" j=\"1\" radius=\"-1\"/>", 6, "> 0"},
+      {"halfplane", "nx", "  <halfplane px=\"0\" py=\"0\" nx=\"0\" ny=\"0\"/>", 7, "must not be zero"},
+      {"halfplane", "nx", "  <halfplane px=\"0\" py=\"0\" nx=\"-0\" ny=\"0.0\"/>", 7, "must not be zero"},
+      {"maxsimfreq", "max", "  <maxsimfreq max=\"0\"/>", 0, "> 0"},
+      {"viewport", "size", "  <viewport cx=\"0\" cy=\"0\" size=\"0\"/>", 0, "> 0"},
+      {"viewport", "size", "  <viewport cx=\"0\" cy=\"0\" size=\"-2\"/>", 0, "> 0"},
+      {"springforce", "k", "  <springforce edge=\"0\" k=\"-1\" l0=\"1\"/>", 0, ">= 0"},
+      {"springforce", "l0", "  <springforce edge=\"0\" k=\"1\" l0=\"-1\"/>", 0, ">= 0"},
+      {"springforce", "b", "  <springforce edge=\"0\" k=\"1\" l0=\"1\" b=\"-0.5\"/>", 0, ">= 0"},
+      {"dragdamping", "b", "  <dragdamping b=\"-0.1\"/>", 0, ">= 0"},
+      {"particlepath", "duration", "  <particlepath i=\"0\" duration=\"-1\" r=\"0\" g=\"0\" b=\"0\"/>", 0, ">= 0"},
+      {"collision", "COR", "  <collision type=\"simple\" COR=\"1.5\"/>", 0, "[0, 1]"},
+      {"collision", "COR", "  <collision type=\"simple\" COR=\"-0.1\"/>", 0, "[0, 1]"},
+      {"collision", "k", "  <collision type=\"penalty\" k=\"-100\"/>", 0, ">= 0"},
+      {"collision", "thickness", "  <collision type=\"penalty\" thickness=\"-0.01\"/>", 0, ">= 0"},
+      {"collision", "maxiters", "  <collision type=\"simple\" maxiters=\"1e10\"/>", 0, "range"},
+  };
+  for (const RangeCase& c : cases) {
+    SCOPED_TRACE(c.text);
+    const std::string text = c.text[0] == 'r' ? particle + std::string(c.text) : c.text;
+    const std::string scene = c.line ? replaced(c.line, text) : extra(text);
+    expectError(scene, {located(c.line ? c.line : kExtraLine, c.element, c.attribute), c.why});
+  }
+}
+
+TEST(BadInput, ColourChannelsOutsideZeroOneAreRejected) {
+  for (const char* element : {"backgroundcolor", "particlecolor", "edgecolor", "halfplanecolor", "particlepath"})
+    for (const char* channel : {"r", "g", "b"})
+      for (const char* bad : {"1.0001", "-0.01", "255", "2"}) {
+        std::string text = std::string("  <") + element + (element[0] == 'b' ? "" : " i=\"0\"") +
+                           (element == std::string("particlepath") ? " duration=\"1\"" : "");
+        for (const char* c : {"r", "g", "b"}) text += std::string(" ") + c + "=\"" + (c == channel ? bad : "0.5") + "\"";
+        SCOPED_TRACE(text);
+        expectError(extra(text + "/>"), {located(kExtraLine, element, channel), "[0, 1]", bad});
+      }
+}
+
+TEST(BadInput, IndicesMustBeNonNegativeIntegers) {
+  for (const char* bad : {"-1", "0.5", "1e10", "-2147483649"}) {
+    SCOPED_TRACE(bad);
+    const std::string v = std::string("\"") + bad + "\"";
+    expectError(replaced(6, "  <edge i=" + v + " j=\"1\"/>"), {located(6, "edge", "i")});
+    expectError(extra("  <springforce edge=" + v + " k=\"1\" l0=\"1\"/>"), {located(kExtraLine, "springforce", "edge")});
+    expectError(extra("  <particlecolor i=" + v + " r=\"0\" g=\"0\" b=\"0\"/>"), {located(kExtraLine, "particlecolor", "i")});
+    expectError(extra("  <vortexforce i=\"0\" j=" + v + " kbs=\"1\" kvc=\"1\"/>"), {located(kExtraLine, "vortexforce", "j")});
+  }
+}
+
+}  // namespace
+}  // namespace fosssim::testing

@@ -1,0 +1,101 @@
+// Files that are not a scene at all: not XML, truncated at every byte, binary junk, empty, the
+// wrong or no root element, a second root. Each must give an error naming the file (and the line
+// where there is one), never a crash or a scene built from half a file.
+#include "scene_text.h"
+
+#include <random>
+
+namespace fosssim::testing {
+namespace {
+
+TEST(BadXml, TextThatIsNotXml) {
+  expectError("this is not a scene\n", {kFile + ":1:", "XML"});
+  expectError("scene duration=1\nintegrator explicit-euler\n", {kFile + ":", "XML"});
+  expectError("{\"scene\": {\"duration\": 1}}", {kFile + ":1:", "XML"});
+}
+
+TEST(BadXml, MalformedXmlGivesTheLine) {
+  // A mismatched closing tag (tinyxml2 names the line of the element left open), an unquoted
+  // attribute on line 3, a stray '<' on line 5.
+  expectError(join({"<scene>", "  <duration time=\"1\"/>", "  <integrator type=\"explicit-euler\" dt=\"0.01\"/>",
+                    "  <particle>", "</scene>"}),
+              {kFile + ":4:", "XML"});
+  expectError(join({"<scene>", "  <duration time=\"1\"/>", "  <integrator type=explicit-euler dt=\"0.01\"/>",
+                    "</scene>"}),
+              {kFile + ":3:", "XML"});
+  std::vector<std::string> lines = baseLines();
+  lines.at(4) = "  <particle m=\"1\" px=\"1\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\" < />";
+  expectError(join(lines), {kFile + ":5:", "XML"});
+  // The same attribute twice is not well-formed XML.
+  lines = baseLines();
+  lines.at(3) = "  <particle m=\"1\" m=\"2\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>";
+  expectError(join(lines), {kFile + ":4:", "XML"});
+}
+
+TEST(BadXml, EmptyAndBlankFiles) {
+  expectError("", {kFile + ":", "empty"});
+  expectError("   \n\t\n  ", {kFile + ":", "empty"});
+  expectError("<?xml version=\"1.0\"?>\n", {kFile + ":", "<scene>"});
+  expectError("<!-- only a comment -->\n", {kFile + ":", "<scene>"});
+}
+
+TEST(BadXml, WrongOrMissingRoot) {
+  expectError("<?xml version=\"1.0\"?>\n<scenes>\n  <duration time=\"1\"/>\n</scenes>\n",
+              {kFile + ":2:", "root element is <scenes>", "expected <scene>"});
+  expectError("<Scene>\n</Scene>\n", {kFile + ":1:", "<Scene>", "expected <scene>"});
+  expectError("<particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n", {kFile + ":1:", "expected <scene>"});
+  // Two roots: the second one is not silently ignored.
+  expectError(join(baseLines()) + "<scene>\n</scene>\n", {kFile + ":9:", "after </scene>"});
+}
+
+TEST(BadXml, TruncatedAtEveryByte) {
+  // Every proper prefix of a good scene that stops before "</scene>" is complete must fail.
+  const std::string text = extra("  <collision type=\"simple\" COR=\"0.5\"/>");
+  ASSERT_EQ(loadError(text), "");
+  const size_t complete = text.rfind("</scene>") + std::string("</scene>").size();
+  for (size_t n = 0; n < complete; ++n) {
+    const std::string message = loadError(text.substr(0, n));
+    EXPECT_FALSE(message.empty()) << "a scene cut after " << n << " bytes loaded";
+    EXPECT_EQ(message.rfind(kFile + ":", 0), 0u) << message;
+  }
+}
+
+TEST(BadXml, TruncatedInsideAnAttributeValue) {
+  expectError("<scene>\n  <duration time=\"1", {kFile + ":", "XML"});
+  expectError("<scene>\n  <duration time=\"1\"/>\n  <integrator type=\"explicit-eu", {kFile + ":", "XML"});
+}
+
+TEST(BadXml, BinaryJunkNeverLoads) {
+  std::mt19937 random(20261123);
+  std::uniform_int_distribution<int> byte(0, 255);
+  for (int trial = 0; trial < 200; ++trial) {
+    std::string junk(static_cast<size_t>(1 + trial * 37), '\0');
+    for (char& c : junk) c = static_cast<char>(byte(random));
+    const std::string message = loadError(junk);
+    EXPECT_FALSE(message.empty());
+    EXPECT_EQ(message.rfind(kFile + ":", 0), 0u) << message;
+  }
+  // NUL bytes inside a scene, and junk after the end of one.
+  std::string withNul = join(baseLines());
+  withNul[withNul.find("fixed")] = '\0';
+  EXPECT_NE(loadError(withNul), "");
+  EXPECT_NE(loadError(join(baseLines()) + std::string("\x7f" "ELF\x02\x01\x01", 7)), "");
+}
+
+TEST(BadXml, ControlCharactersAndEncodings) {
+  // A UTF-8 byte-order mark is fine; UTF-16 is not something the loader reads.
+  EXPECT_EQ(loadError("\xEF\xBB\xBF" + join(baseLines())), "");
+  std::string utf16 = "\xFF\xFE";
+  for (char c : std::string("<scene></scene>")) utf16 += std::string(1, c) + '\0';
+  EXPECT_NE(loadError(utf16), "");
+}
+
+TEST(BadXml, MessagesNameTheFileGiven) {
+  SceneFile file;
+  const Status s = parseScene("<scene>", "some/dir/my scene.xml", file);
+  ASSERT_FALSE(s.isOk());
+  EXPECT_EQ(s.message().rfind("some/dir/my scene.xml:", 0), 0u) << s.message();
+}
+
+}  // namespace
+}  // namespace fosssim::testing
