@@ -1,0 +1,140 @@
+// Large inputs: many elements, a 100 MB file, a file beyond the loader's size limit, deep
+// nesting, huge attribute values and counts. They must load (or fail with a message) in
+// reasonable time and memory, never crash or hang.
+#include "scene_text.h"
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+namespace fosssim::testing {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+/// A temporary folder for one test, removed afterwards.
+class LargeInput : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("fosssim-large-" + std::to_string(getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const char* name) const { return (dir_ / name).string(); }
+  fs::path dir_;
+};
+
+std::string header() {
+  return "<scene>\n  <duration time=\"1\"/>\n  <integrator type=\"explicit-euler\" dt=\"0.01\"/>\n"
+         "  <particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n";
+}
+
+TEST_F(LargeInput, TwoHundredThousandParticlesWithEdgesAndSprings) {
+  constexpr int kN = 200000;
+  std::string text = "<scene>\n<duration time=\"1\"/>\n<integrator type=\"symplectic-euler\" dt=\"0.01\"/>\n";
+  text.reserve(static_cast<size_t>(kN) * 160);
+  for (int k = 0; k < kN; ++k)
+    text += "<particle m=\"1\" px=\"" + std::to_string(k) + "\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n";
+  for (int k = 0; k + 1 < kN; ++k) {
+    text += "<edge i=\"" + std::to_string(k) + "\" j=\"" + std::to_string(k + 1) + "\"/>\n";
+    text += "<springforce edge=\"" + std::to_string(k) + "\" k=\"1\" l0=\"1\"/>\n";
+  }
+  text += "</scene>\n";
+  const auto start = Clock::now();
+  SceneFile file;
+  ASSERT_TRUE(parseScene(text, kFile, file).isOk());
+  const double seconds = secondsSince(start);
+  std::printf("%d particles, %d edges and springs (%.1f MB) loaded in %.2f s\n", kN, kN - 1, text.size() / 1e6, seconds);
+  EXPECT_EQ(file.scene.numParticles(), kN);
+  EXPECT_EQ(file.scene.edges.size(), static_cast<size_t>(kN - 1));
+  EXPECT_EQ(file.scene.forces.size(), static_cast<size_t>(kN - 1));
+  EXPECT_EQ(file.initial.x[2 * (kN - 1)], kN - 1.0);
+  // Generous for a sanitizer build on a busy machine; a quadratic loader would take hours.
+  EXPECT_LT(seconds, 60.0);
+}
+
+TEST_F(LargeInput, AHundredMegabyteFileLoads) {
+  // A valid scene whose bulk is a 100 MB comment: read and parsed, not refused.
+  const std::string p = path("big.xml");
+  {
+    std::ofstream out(p, std::ios::binary);
+    out << header() << "<!--";
+    const std::string line(1023, 'x');
+    for (int k = 0; k < 100 * 1024; ++k) out << line << '\n';
+    out << "-->\n</scene>\n";
+  }
+  ASSERT_GT(fs::file_size(p), 100u << 20);
+  const auto start = Clock::now();
+  SceneFile file;
+  const Status s = loadScene(p, file);
+  ASSERT_TRUE(s.isOk()) << s.message();
+  EXPECT_EQ(file.scene.numParticles(), 1);
+  EXPECT_LT(secondsSince(start), 60.0);
+}
+
+TEST_F(LargeInput, AHundredMegabytesOfJunkAfterAGoodStart) {
+  const std::string p = path("junk.xml");
+  {
+    std::ofstream out(p, std::ios::binary);
+    out << header();
+    std::string block(1 << 20, '\0');
+    for (size_t k = 0; k < block.size(); ++k) block[k] = static_cast<char>((k * 2654435761u) >> 13);
+    for (int k = 0; k < 100; ++k) out << block;
+  }
+  SceneFile file;
+  const Status s = loadScene(p, file);
+  ASSERT_FALSE(s.isOk());
+  EXPECT_EQ(s.message().rfind(p + ":", 0), 0u) << s.message();
+}
+
+TEST_F(LargeInput, AFileBeyondTheSizeLimitIsRefused) {
+  // 300 MB (sparse: no disk space used) is more than any scene; the loader stops reading at its
+  // limit instead of holding it all (and so also stops on endless devices).
+  const std::string p = path("huge.xml");
+  { std::ofstream out(p, std::ios::binary); }
+  fs::resize_file(p, 300u << 20);
+  SceneFile file;
+  const Status s = loadScene(p, file);
+  ASSERT_FALSE(s.isOk());
+  EXPECT_NE(s.message().find("larger than"), std::string::npos) << s.message();
+}
+
+TEST(LargeInputText, DeepNestingIsAnErrorNotAStackOverflow) {
+  std::string text = header();
+  for (int k = 0; k < 100000; ++k) text += "<a>";
+  for (int k = 0; k < 100000; ++k) text += "</a>";
+  text += "</scene>\n";
+  EXPECT_NE(loadError(text), "");
+}
+
+TEST(LargeInputText, ManyUnknownAttributesAreWarnedAboutInReasonableTime) {
+  std::string element = "<maxsimfreq max=\"5\"";
+  for (int k = 0; k < 5000; ++k) element += " a" + std::to_string(k) + "=\"1\"";
+  const auto start = Clock::now();
+  SceneFile file;
+  ASSERT_TRUE(parseScene(header() + element + "/>\n</scene>\n", kFile, file).isOk());
+  EXPECT_EQ(file.warnings.size(), 5000u);
+  EXPECT_LT(secondsSince(start), 30.0);
+}
+
+TEST(LargeInputText, HugeValuesAndCounts) {
+  // A 10 MB number is still a number.
+  const std::string digits = "1." + std::string(10 << 20, '0') + "1";
+  SceneFile file;
+  ASSERT_TRUE(parseScene(header() + "<maxsimfreq max=\"" + digits + "\"/></scene>", kFile, file).isOk());
+  EXPECT_EQ(file.look.maxSimFreq, 1.0);
+  // Step counts beyond any run are refused, with the integrator's location.
+  expectError(replaced(2, "  <duration time=\"1e300\"/>"), {kFile + ":3: <integrator>", "steps"});
+  expectError(replaced(3, "  <integrator type=\"explicit-euler\" dt=\"1e-300\"/>"), {kFile + ":3: <integrator>", "steps"});
+  // A description of a megabyte is kept whole.
+  const std::string words(1 << 20, 'w');
+  ASSERT_TRUE(parseScene(extra("<description text=\"" + words + "\"/>"), kFile, file).isOk());
+  EXPECT_EQ(file.description.size(), words.size());
+}
+
+}  // namespace
+}  // namespace fosssim::testing
