@@ -45,8 +45,9 @@ FOSSSim options:
                  (the particle-edge approach quintic); see the README, "Course compatibility"
   --verify       after every step check that no pair is left colliding and the state is finite;
                  report violations and exit non-zero when there was any
-  --frame-size WxH   size of PNG frames and movies (default 512x512)
-  --frame-every K    write only every K-th frame (default 1)
+  --frame-size WxH   size of PNG and SVG frames, movies and the window (default 512x512)
+  --frame-every K    write a frame (-g, -m, --movie) only after steps K, 2K, 3K, ...; frames are
+                     still numbered 1, 2, 3, ... (default 1: after every step)
   --png-dir DIR      folder for -g frames (default pngs; created if needed)
   --movie FILE.mp4   pipe frames straight into ffmpeg (no PNG files); needs ffmpeg
   --fps N            frame rate of --movie (default 30)
@@ -67,6 +68,10 @@ bool parseOptions(int argc, char** argv, Options& o, std::string& error) {
         return false;
       }
       out = args[++k];
+      if (out.empty()) {  // an empty path would silently mean "not given" (e.g. no -o file written)
+        error = "option " + a + " needs a value, got an empty one";
+        return false;
+      }
       return true;
     };
     auto flag = [&](bool& out) {
