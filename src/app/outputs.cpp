@@ -22,6 +22,7 @@ Status TrajectoryOutput::afterStep(const SceneFile&, const State& state, const C
 Status TrajectoryOutput::finish() { return writer_ ? writer_->close() : Status::ok(); }
 
 Status ProgressOutput::start(const SceneFile& file, const State&, const RecordLayout&) {
+  started_ = true;
   total_ = file.scene.numSteps();
   terminal_ = isatty(STDERR_FILENO);
   begin_ = lastPrint_ = Clock::now();
@@ -44,6 +45,7 @@ Status ProgressOutput::afterStep(const SceneFile&, const State& state, const Col
 }
 
 Status ProgressOutput::finish() {
+  if (!started_) return Status::ok();  // an earlier observer failed to start: there was no run
   const double seconds = std::chrono::duration<double>(Clock::now() - begin_).count();
   std::fprintf(stderr, "%sdone: %ld steps in %.3f s\n", terminal_ ? "\n" : "", steps_, seconds);
   return Status::ok();

@@ -36,7 +36,7 @@ class ProgressOutput final : public RunObserver {
   using Clock = std::chrono::steady_clock;
   Clock::time_point begin_, lastPrint_;
   long total_ = 0, lastDecile_ = -1, steps_ = 0;
-  bool terminal_ = false;
+  bool terminal_ = false, started_ = false;
 };
 
 }  // namespace fosssim::app
