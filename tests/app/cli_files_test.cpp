@@ -1,0 +1,137 @@
+// Files the command line cannot use: unreadable scene paths (missing, a directory, no read
+// permission, an endless device), -o where nothing can be written, -i with a file that does not
+// fit the scene. Each gives exit 1 and a message naming the path, never a crash or a hang.
+#include "run_fosssim.h"
+
+#include <sys/stat.h>
+
+namespace fosssim::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+class CliFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("fosssim-cli-files-" + std::to_string(getpid()));
+    fs::create_directories(dir_);
+    fs::permissions(dir_, fs::perms::all);  // other users (nobody) may enter
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::string write(const std::string& name, const std::string& text) const {
+    std::ofstream(path(name), std::ios::binary) << text;
+    return path(name);
+  }
+  /// A scene of `n` particles; with `simple`, records carry impulses.
+  std::string scene(const std::string& name, int n, bool simple = false) const {
+    std::string text = "<scene><duration time=\"0.1\"/><integrator type=\"explicit-euler\" dt=\"0.01\"/>";
+    for (int k = 0; k < n; ++k)
+      text += "<particle m=\"1\" px=\"" + std::to_string(k) + "\" py=\"0\" vx=\"1\" vy=\"0\" fixed=\"0\"/>";
+    return write(name, text + (simple ? "<collision type=\"simple\"/>" : "") + "</scene>\n");
+  }
+  fs::path dir_;
+};
+
+void expectFailure(const Outcome& o, const std::vector<std::string>& fragments) {
+  EXPECT_TRUE(exitedWith(o, 1)) << o;
+  for (const auto& f : fragments) EXPECT_TRUE(contains(o.err + o.out, f)) << "missing \"" << f << "\"\n" << o;
+}
+
+TEST_F(CliFiles, UnreadableScenePaths) {
+  expectFailure(runFosssim({"-s", path("missing.xml"), "-d", "0"}), {path("missing.xml") + ": cannot open", "No such file"});
+  expectFailure(runFosssim({"-s", dir_.string(), "-d", "0"}), {dir_.string() + ": cannot read", "directory"});
+  // An endless device is not read forever.
+  expectFailure(runFosssim({"-s", "/dev/zero", "-d", "0"}), {"/dev/zero: ", "larger than"});
+}
+
+TEST_F(CliFiles, SceneWithoutReadPermission) {
+  const std::string p = scene("secret.xml", 1);
+  ASSERT_EQ(chmod(p.c_str(), 0), 0);
+  // Root reads any file, so as root the test runs FOSSSim as the unprivileged user nobody.
+  RunOptions options;
+  options.asNobody = geteuid() == 0;
+  const Outcome o = runFosssim({"-s", p, "-d", "0"}, options);
+  if (options.asNobody && o.exited && o.code == 125) GTEST_SKIP() << "cannot drop root privileges here";
+  expectFailure(o, {p + ": cannot open", "Permission denied"});
+}
+
+TEST_F(CliFiles, UnwritableOutput) {
+  const std::string s = scene("s.xml", 2);
+  expectFailure(runFosssim({"-s", s, "-d", "0", "-o", path("no/such/dir/t.bin")}),
+                {path("no/such/dir/t.bin") + ": cannot create"});
+  expectFailure(runFosssim({"-s", s, "-d", "0", "-o", dir_.string()}), {dir_.string() + ": cannot create"});
+  expectFailure(runFosssim({"-s", s, "-d", "0", "-o", "/proc/fosssim-cannot-be-here.bin"}),
+                {"/proc/fosssim-cannot-be-here.bin: cannot"});
+  expectFailure(runFosssim({"-s", s, "-d", "0", "-o", "/dev/full"}), {"/dev/full: cannot"});
+}
+
+TEST_F(CliFiles, AFailedStartIsNotReportedAsARun) {
+  // No progress summary ("done: N steps") for a run that never started.
+  const Outcome o = runFosssim({"-s", scene("s.xml", 2), "-d", "0", "-o", path("no/dir/t.bin")});
+  expectFailure(o, {"cannot create"});
+  EXPECT_FALSE(contains(o.err, "done:")) << o;
+}
+
+TEST_F(CliFiles, OwnTrajectoryGradesAndAnotherScenesDoesNot) {
+  for (const bool simple : {false, true}) {
+    SCOPED_TRACE(simple ? "simple collisions" : "no collisions");
+    const std::string two = scene("two.xml", 2, simple), three = scene("three.xml", 3, simple);
+    ASSERT_TRUE(exitedWith(runFosssim({"-s", two, "-d", "0", "-q", "-o", path("two.bin")}), 0));
+    const Outcome own = runFosssim({"-s", two, "-d", "0", "-q", "-i", path("two.bin")});
+    EXPECT_TRUE(exitedWith(own, 0)) << own;
+    EXPECT_TRUE(contains(own.out, "Overall success: Passed.")) << own;
+    const Outcome other = runFosssim({"-s", three, "-d", "0", "-q", "-i", path("two.bin")});
+    expectFailure(other, {"Overall success: Failed.", "trajectory of this scene?"});
+  }
+}
+
+TEST_F(CliFiles, TrajectoriesThatDoNotFit) {
+  const std::string s = scene("s.xml", 2, true);
+  ASSERT_TRUE(exitedWith(runFosssim({"-s", s, "-d", "0", "-q", "-o", path("t.bin")}), 0));
+  const std::string bytes = slurp(path("t.bin"));
+  ASSERT_EQ(bytes.size(), 11u * (64 + 4));  // 11 records, no impulses: 2 particles flying apart
+  struct Case {
+    std::string name, bytes, fragment;
+  };
+  std::string absurd = bytes;
+  absurd.replace(64, 4, std::string("\xff\xff\xff\x7f", 4));  // record 0's impulse count: 2^31-1
+  std::string negative = bytes;
+  negative.replace(64 + 68, 4, std::string("\xfe\xff\xff\xff", 4));  // record 1's: -2
+  const std::vector<Case> cases = {
+      {"empty.bin", "", "ends before the initial record"},
+      {"truncated.bin", bytes.substr(0, bytes.size() - 5), "record 10"},
+      {"half.bin", bytes.substr(0, bytes.size() / 2), "record 5 (byte "},
+      {"trailing.bin", bytes + "x", "more records"},
+      {"absurd.bin", absurd, "impulse count 2147483647"},
+      {"negative.bin", negative, "impulse count -2"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    expectFailure(runFosssim({"-s", s, "-d", "0", "-q", "-i", write(c.name, c.bytes)}),
+                  {"Overall success: Failed.", c.fragment});
+  }
+  expectFailure(runFosssim({"-s", s, "-d", "0", "-q", "-i", path("missing.bin")}), {"missing.bin: cannot open"});
+  expectFailure(runFosssim({"-s", s, "-d", "0", "-q", "-i", dir_.string()}), {"directory"});
+}
+
+TEST_F(CliFiles, ASimulationThatBlowsUpIsAnError) {
+  // Forces beyond the range of doubles: the step reports the particle, nothing is written as if fine.
+  const std::string s = write("boom.xml", "<scene><duration time=\"1\"/><integrator type=\"explicit-euler\" dt=\"0.1\"/>"
+                                          "<particle m=\"1e-300\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>"
+                                          "<simplegravity fx=\"0\" fy=\"0\"/><constantforce fx=\"1e300\" fy=\"0\"/></scene>");
+  expectFailure(runFosssim({"-s", s, "-d", "0", "-q", "-o", path("boom.bin")}), {"step 1", "particle 0", "non-finite"});
+}
+
+TEST_F(CliFiles, WarningsDoNotFailTheRun) {
+  const std::string s = write("warn.xml", "<scene><duration time=\"0.1\"/><integrator type=\"explicit-euler\" dt=\"0.01\"/>\n"
+                                          "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\" spin=\"3\"/>\n"
+                                          "<glue strength=\"1\"/></scene>");
+  const Outcome o = runFosssim({"-s", s, "-d", "0", "-q"});
+  EXPECT_TRUE(exitedWith(o, 0)) << o;
+  EXPECT_TRUE(contains(o.err, "FOSSSim: warning: " + s + ":2: <particle> attribute 'spin'")) << o;
+  EXPECT_TRUE(contains(o.err, "FOSSSim: warning: " + s + ":3: <glue>")) << o;
+}
+
+}  // namespace
+}  // namespace fosssim::testing

@@ -1,0 +1,121 @@
+// The command line: options (exit 2 with a one-line message for a bad command line, 0 and the
+// usage for -h), and every bad scene in tests/data/bad (exit 1 with a located message, never a
+// crash or a hang). Exit codes: 0 ok, 1 bad input or failed run or grade, 2 bad command line.
+#include "run_fosssim.h"
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace fosssim::testing {
+namespace {
+
+const std::string kBad = std::string(FOSSSIM_TEST_DATA) + "/bad";
+
+/// A small good scene in a temporary file, for the option tests.
+std::string goodScene() {
+  static const std::string path = [] {
+    const std::string p = std::filesystem::temp_directory_path() / ("fosssim-cli-good-" + std::to_string(getpid()) + ".xml");
+    std::ofstream(p) << "<scene><duration time=\"0.1\"/><integrator type=\"explicit-euler\" dt=\"0.01\"/>"
+                        "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"1\" vy=\"0\" fixed=\"0\"/></scene>\n";
+    return p;
+  }();
+  return path;
+}
+
+void expectUsageError(const std::vector<std::string>& args, const std::string& fragment) {
+  const Outcome o = runFosssim(args);
+  EXPECT_TRUE(exitedWith(o, 2)) << o;
+  EXPECT_TRUE(contains(o.err, fragment)) << "missing \"" << fragment << "\"\n" << o;
+  EXPECT_EQ(o.out, "") << o;  // nothing ran
+}
+
+TEST(Cli, HelpPrintsTheUsageAndSucceeds) {
+  for (const char* h : {"-h", "--help"}) {
+    const Outcome o = runFosssim({h});
+    EXPECT_TRUE(exitedWith(o, 0)) << o;
+    EXPECT_EQ(o.out.rfind("usage: FOSSSim -s scene.xml", 0), 0u) << o;
+    for (const char* option : {"-s FILE", "-d 0|1", "-p 0|1", "-g 0|1", "-o FILE", "-i FILE", "-m DIR"})
+      EXPECT_TRUE(contains(o.out, option)) << option;
+  }
+  // -h wins over a missing scene, and runs nothing.
+  const Outcome o = runFosssim({"-d", "0", "-h"});
+  EXPECT_TRUE(exitedWith(o, 0)) << o;
+}
+
+TEST(Cli, NoSceneIsAUsageError) {
+  expectUsageError({}, "no scene file given");
+  expectUsageError({"-d", "0"}, "no scene file given");
+  expectUsageError({"-s", ""}, "-s");
+}
+
+TEST(Cli, UnknownOptionsAreNamed) {
+  expectUsageError({"-s", goodScene(), "--frobnicate"}, "\"--frobnicate\"");
+  expectUsageError({"-x", "-s", goodScene()}, "\"-x\"");
+  expectUsageError({goodScene()}, goodScene());  // a scene without -s
+  expectUsageError({"-s", goodScene(), "-D", "0"}, "\"-D\"");
+}
+
+TEST(Cli, OutputAndInputTogetherIsAUsageError) {
+  expectUsageError({"-s", goodScene(), "-d", "0", "-o", "a.bin", "-i", "b.bin"}, "-o");
+  expectUsageError({"-s", goodScene(), "-i", "b.bin", "-o", "a.bin"}, "cannot be used together");
+}
+
+TEST(Cli, FlagsTakeZeroOrOne) {
+  for (const char* flag : {"-d", "-p", "-g"})
+    for (const char* bad : {"2", "yes", "-1", "", "00", "1.0", "true"})
+      expectUsageError({"-s", goodScene(), flag, bad},
+                       std::string("option ") + flag + (*bad ? " takes 0 or 1" : " needs a value"));
+}
+
+TEST(Cli, OptionsWithoutTheirValue) {
+  for (const char* option : {"-s", "-d", "-p", "-g", "-o", "-i", "-m"})
+    expectUsageError({option}, std::string("option ") + option + " needs a value");
+  // An empty file name is no file name.
+  for (const char* option : {"-o", "-i", "-m"}) expectUsageError({"-s", goodScene(), "-d", "0", option, ""}, option);
+}
+
+TEST(Cli, AGoodSceneRunsHeadless) {
+  const Outcome o = runFosssim({"-s", goodScene(), "-d", "0", "-q"});
+  EXPECT_TRUE(exitedWith(o, 0)) << o;
+  EXPECT_FALSE(contains(o.err, "error")) << o;
+}
+
+/// tests/data/bad/EXPECTED: file, then fragments of the message, tab-separated.
+std::map<std::string, std::vector<std::string>> expectations() {
+  std::map<std::string, std::vector<std::string>> table;
+  std::ifstream in(kBad + "/EXPECTED");
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::vector<std::string> fields;
+    std::stringstream s(line);
+    for (std::string f; std::getline(s, f, '\t');) fields.push_back(f);
+    table[fields.front()] = std::vector<std::string>(fields.begin() + 1, fields.end());
+  }
+  return table;
+}
+
+TEST(Cli, EveryBadSceneFailsWithALocatedMessage) {
+  const auto table = expectations();
+  ASSERT_GE(table.size(), 25u) << "tests/data/bad/EXPECTED is missing or short";
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(kBad)) {
+    const std::string name = entry.path().filename().string();
+    if (name == "EXPECTED") continue;
+    ++files;
+    SCOPED_TRACE(name);
+    const auto it = table.find(name);
+    ASSERT_NE(it, table.end()) << name << " has no line in tests/data/bad/EXPECTED";
+    const std::string path = entry.path().string();
+    const Outcome o = runFosssim({"-s", path, "-d", "0", "-q"});
+    EXPECT_TRUE(exitedWith(o, 1)) << o;
+    EXPECT_TRUE(contains(o.err, "FOSSSim: error: " + path + ":")) << o;
+    for (const std::string& fragment : it->second) EXPECT_TRUE(contains(o.err, fragment)) << fragment << "\n" << o;
+    EXPECT_EQ(o.out, "");
+  }
+  EXPECT_EQ(files, static_cast<int>(table.size())) << "EXPECTED names files that do not exist";
+}
+
+}  // namespace
+}  // namespace fosssim::testing
