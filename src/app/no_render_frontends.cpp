@@ -1,11 +1,41 @@
-// Frontends of a build without the renderer (FOSSSIM_RENDER=OFF): no window, no PNG or movie.
+// Frontends of a build without the renderer (FOSSSIM_RENDER=OFF): no window, no PNG or movie;
+// -m still writes SVG frames, which need no OpenGL (fosssim_picture).
 #include "frontends.h"
 
-namespace fosssim::app {
+#include "fosssim/render/frame_outputs.h"
 
-Status addPictureOutputs(const Options& options, const SceneFile&, ObserverList&) {
-  if (options.pngs || !options.movie.empty() || !options.svgDir.empty())
-    return Status::error("this FOSSSim was built without the renderer (FOSSSIM_RENDER=OFF): -g, -m and --movie are unavailable");
+namespace fosssim::app {
+namespace {
+
+/// Forwards run events to the SVG frames.
+class PictureOutputs final : public RunObserver {
+ public:
+  explicit PictureOutputs(render::FrameOutputs outputs) : outputs_(std::move(outputs)) {}
+  Status start(const SceneFile& file, const State& initial, const RecordLayout&) override {
+    outputs_.start(file, initial);
+    return Status::ok();
+  }
+  Status afterStep(const SceneFile& file, const State& state, const CollisionLog&) override {
+    return outputs_.afterStep(file, state);
+  }
+  Status finish() override { return outputs_.finish(); }
+
+ private:
+  render::FrameOutputs outputs_;
+};
+
+}  // namespace
+
+Status addPictureOutputs(const Options& options, const SceneFile&, ObserverList& observers) {
+  if (options.pngs || !options.movie.empty())
+    return Status::error("this FOSSSim was built without the renderer (FOSSSIM_RENDER=OFF): -g and --movie are "
+                         "unavailable (-m SVG frames work)");
+  if (options.svgDir.empty()) return Status::ok();
+  render::FrameOutputs outputs(options.frameWidth, options.frameHeight, options.frameEvery);
+  std::unique_ptr<render::SvgFrames> svg;
+  if (Status s = render::SvgFrames::open(options.svgDir, svg); !s) return s;
+  outputs.add(std::move(svg));
+  observers.items.push_back(std::make_unique<PictureOutputs>(std::move(outputs)));
   return Status::ok();
 }
 

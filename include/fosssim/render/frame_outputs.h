@@ -1,0 +1,59 @@
+// Per-step picture outputs (-m SVG, -g PNG, --movie) behind one interface, so that the command
+// line's front ends only forward run events: which steps get a frame and what each frame shows
+// is decided here once, for every output alike.
+#pragma once
+
+#include "fosssim/core/status.h"
+#include "fosssim/render/frame_sequence.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace fosssim::render {
+
+/// Receives the pictures of the frames that are due.
+class PictureSink {
+ public:
+  virtual ~PictureSink() = default;
+  /// Frame `number` (1, 2, ...) shows `picture`.
+  virtual Status frame(const Picture& picture, long number) = 0;
+  /// After the last frame (also after a failure, to release resources).
+  virtual Status finish() { return Status::ok(); }
+};
+
+/// -m: one SVG file per frame, dir/frame%020d.svg.
+class SvgFrames final : public PictureSink {
+ public:
+  /// Creates `dir` (and its parents) when it does not exist.
+  static Status open(const std::string& dir, std::unique_ptr<SvgFrames>& out);
+  Status frame(const Picture& picture, long number) override;
+
+ private:
+  explicit SvgFrames(std::string dir) : dir_(std::move(dir)) {}
+  std::string dir_;
+};
+
+/// A FrameSequence feeding any number of sinks.
+class FrameOutputs {
+ public:
+  /// Frames of width x height pixels after every `every`-th step.
+  FrameOutputs(int width, int height, int every) : sequence_(width, height, every) {}
+  void add(std::unique_ptr<PictureSink> sink) { sinks_.push_back(std::move(sink)); }
+  bool empty() const { return sinks_.empty(); }
+
+  void start(const SceneFile& file, const State& initial) { sequence_.start(file, initial); }
+  /// Call after every step; builds the picture once and hands it to every sink when due.
+  Status afterStep(const SceneFile& file, const State& state);
+  /// Finishes every sink; the first failure is returned.
+  Status finish();
+
+ private:
+  FrameSequence sequence_;
+  std::vector<std::unique_ptr<PictureSink>> sinks_;
+};
+
+/// Creates `dir` and its parents if needed; `what` names the option in the message (e.g. "-g").
+Status createDirectory(const std::string& dir, const std::string& what);
+
+}  // namespace fosssim::render

@@ -1,0 +1,45 @@
+#include "fosssim/render/frame_outputs.h"
+
+#include "fosssim/render/svg_writer.h"
+
+#include <filesystem>
+#include <system_error>
+
+namespace fosssim::render {
+
+Status createDirectory(const std::string& dir, const std::string& what) {
+  if (dir.empty()) return Status::ok();  // the current directory
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) return Status::error(what + ": cannot create the folder \"" + dir + "\": " + ec.message());
+  if (!std::filesystem::is_directory(dir, ec))
+    return Status::error(what + ": \"" + dir + "\" exists and is not a folder");
+  return Status::ok();
+}
+
+Status SvgFrames::open(const std::string& dir, std::unique_ptr<SvgFrames>& out) {
+  if (Status s = createDirectory(dir, "-m"); !s) return s;
+  out.reset(new SvgFrames(dir));
+  return Status::ok();
+}
+
+Status SvgFrames::frame(const Picture& picture, long number) { return writeSvg(svgFrameName(dir_, number), picture); }
+
+Status FrameOutputs::afterStep(const SceneFile& file, const State& state) {
+  if (!sequence_.advance(state) || sinks_.empty()) return Status::ok();
+  const Picture picture = sequence_.picture(file, state);
+  for (auto& sink : sinks_)
+    if (Status s = sink->frame(picture, sequence_.frameNumber()); !s) return s;
+  return Status::ok();
+}
+
+Status FrameOutputs::finish() {
+  Status first = Status::ok();
+  for (auto& sink : sinks_) {
+    Status s = sink->finish();
+    if (first && !s) first = s;
+  }
+  return first;
+}
+
+}  // namespace fosssim::render

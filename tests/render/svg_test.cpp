@@ -1,0 +1,158 @@
+// -m: the SVG document of a picture, parsed back and checked element by element; and the
+// FOSSSim executable writing one per frame (this works in builds without the renderer too).
+#include "render_test_support.h"
+
+#include "fosssim/render/frame_outputs.h"
+#include "fosssim/render/svg_writer.h"
+
+#include <tinyxml2.h>
+
+#include <vector>
+
+namespace fosssim::render {
+namespace {
+
+using testing::kShapesScene;
+using testing::parsed;
+using testing::TempDir;
+
+Picture shapesPicture() {
+  const SceneFile file = parsed(kShapesScene);
+  PathTrails trails(file.look.paths, file.scene.dt);
+  State moved = file.initial;
+  trails.record(moved);
+  at(moved.x, 0).x() += 0.1;
+  trails.record(moved);
+  View view;
+  view.width = 100;
+  view.height = 80;
+  view.camera = initialCamera(file.look, file.initial, 100, 80);
+  return makePicture(file, file.initial, trails, view);
+}
+
+const tinyxml2::XMLElement* group(const tinyxml2::XMLElement* svg, const char* id) {
+  for (auto* g = svg->FirstChildElement(); g; g = g->NextSiblingElement())
+    if (g->Attribute("id", id)) return g;
+  return nullptr;
+}
+
+std::vector<const tinyxml2::XMLElement*> children(const tinyxml2::XMLElement* g, const char* name) {
+  std::vector<const tinyxml2::XMLElement*> out;
+  for (auto* e = g->FirstChildElement(name); e; e = e->NextSiblingElement(name)) out.push_back(e);
+  return out;
+}
+
+TEST(Svg, IsAWellFormedDocumentOfThePicturesSize) {
+  tinyxml2::XMLDocument doc;
+  ASSERT_EQ(doc.Parse(svgDocument(shapesPicture()).c_str()), tinyxml2::XML_SUCCESS);
+  const auto* svg = doc.RootElement();
+  ASSERT_NE(svg, nullptr);
+  EXPECT_STREQ(svg->Name(), "svg");
+  EXPECT_STREQ(svg->Attribute("xmlns"), "http://www.w3.org/2000/svg");
+  EXPECT_EQ(svg->IntAttribute("width"), 100);
+  EXPECT_EQ(svg->IntAttribute("height"), 80);
+  EXPECT_STREQ(svg->Attribute("viewBox"), "0 0 100 80");
+}
+
+TEST(Svg, ElementsComeInDrawOrder) {
+  tinyxml2::XMLDocument doc;
+  ASSERT_EQ(doc.Parse(svgDocument(shapesPicture()).c_str()), tinyxml2::XML_SUCCESS);
+  std::vector<std::string> ids;
+  for (auto* e = doc.RootElement()->FirstChildElement(); e; e = e->NextSiblingElement())
+    ids.push_back(e->Attribute("id") ? e->Attribute("id") : "?");
+  EXPECT_EQ(ids, (std::vector<std::string>{"background", "paths", "edges", "halfplanes", "particles", "labels"}));
+}
+
+TEST(Svg, ShapesHaveTheScenesGeometryAndColours) {
+  tinyxml2::XMLDocument doc;
+  ASSERT_EQ(doc.Parse(svgDocument(shapesPicture()).c_str()), tinyxml2::XML_SUCCESS);
+  const auto* svg = doc.RootElement();
+  // 40 pixels per unit, origin at (50, 40) counted from the bottom; SVG counts from the top.
+  EXPECT_STREQ(group(svg, "background")->Attribute("fill"), "#336699");
+
+  const auto paths = children(group(svg, "paths"), "polyline");
+  ASSERT_EQ(paths.size(), 1u);
+  EXPECT_STREQ(paths[0]->Attribute("stroke"), "#ffff00");
+  EXPECT_STREQ(paths[0]->Attribute("points"), "70,30 74,30");
+
+  const auto edges = children(group(svg, "edges"), "line");
+  ASSERT_EQ(edges.size(), 1u);
+  EXPECT_DOUBLE_EQ(edges[0]->DoubleAttribute("x1"), 30);
+  EXPECT_DOUBLE_EQ(edges[0]->DoubleAttribute("y1"), 20);
+  EXPECT_DOUBLE_EQ(edges[0]->DoubleAttribute("x2"), 30);
+  EXPECT_DOUBLE_EQ(edges[0]->DoubleAttribute("y2"), 52);
+  EXPECT_DOUBLE_EQ(edges[0]->DoubleAttribute("stroke-width"), 4);  // 2 * 0.05 * 40: the capsule
+  EXPECT_STREQ(edges[0]->Attribute("stroke"), "#006363");
+  EXPECT_STREQ(group(svg, "edges")->Attribute("stroke-linecap"), "round");
+
+  const auto planes = children(group(svg, "halfplanes"), "polygon");
+  ASSERT_EQ(planes.size(), 1u);
+  EXPECT_STREQ(planes[0]->Attribute("fill"), "#008000");
+  // The solid side is below the boundary row (y = 60 from the top), down past the picture.
+  std::stringstream points(planes[0]->Attribute("points"));
+  std::string xy;
+  int count = 0;
+  while (points >> xy) {
+    const double y = std::stod(xy.substr(xy.find(',') + 1));
+    EXPECT_GE(y, 60 - 1e-9) << xy;
+    ++count;
+  }
+  EXPECT_EQ(count, 4);
+
+  const auto disks = children(group(svg, "particles"), "circle");
+  ASSERT_EQ(disks.size(), 4u);
+  EXPECT_DOUBLE_EQ(disks[0]->DoubleAttribute("cx"), 70);
+  EXPECT_DOUBLE_EQ(disks[0]->DoubleAttribute("cy"), 30);
+  EXPECT_DOUBLE_EQ(disks[0]->DoubleAttribute("r"), 8);
+  EXPECT_STREQ(disks[0]->Attribute("fill"), "#ff0000");
+  EXPECT_STREQ(disks[1]->Attribute("fill"), "#a64b00");  // the reference's default colour
+
+  const auto labels = children(group(svg, "labels"), "path");
+  ASSERT_EQ(labels.size(), 1u);
+  EXPECT_STREQ(labels[0]->Attribute("stroke"), "#cc9966");  // 1 - background
+  ASSERT_NE(labels[0]->FirstChildElement("title"), nullptr);
+  EXPECT_STREQ(labels[0]->FirstChildElement("title")->GetText(), "t = 0.00");
+  EXPECT_EQ(labels[0]->Attribute("d")[0], 'M');
+}
+
+TEST(Svg, FrameNamesFollowTheReference) {
+  EXPECT_EQ(svgFrameName("out", 1), "out/frame00000000000000000001.svg");
+  EXPECT_EQ(svgFrameName("out", 123), "out/frame00000000000000000123.svg");
+}
+
+TEST(Svg, FrameOutputsCreateTheFolderAndWriteEveryKthFrame) {
+  TempDir tmp;
+  const SceneFile file = parsed(kShapesScene);
+  std::unique_ptr<SvgFrames> svg;
+  ASSERT_TRUE(SvgFrames::open(tmp / "a/b", svg).isOk());
+  FrameOutputs outputs(64, 48, 4);
+  outputs.add(std::move(svg));
+  outputs.start(file, file.initial);
+  for (int step = 0; step < 10; ++step) ASSERT_TRUE(outputs.afterStep(file, file.initial).isOk());
+  ASSERT_TRUE(outputs.finish().isOk());
+  EXPECT_TRUE(std::filesystem::exists(svgFrameName(tmp / "a/b", 1)));
+  EXPECT_TRUE(std::filesystem::exists(svgFrameName(tmp / "a/b", 2)));
+  EXPECT_FALSE(std::filesystem::exists(svgFrameName(tmp / "a/b", 3)));
+}
+
+TEST(Svg, CommandLineWritesOneSvgPerStep) {
+  TempDir tmp;
+  testing::writeText(tmp / "scene.xml", kShapesScene);
+  const auto r = testing::run(std::string(FOSSSIM_EXECUTABLE) + " -s " + (tmp / "scene.xml") + " -d 0 -q -m " +
+                              (tmp / "svg"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(tmp / "svg")) {
+    ++files;
+    tinyxml2::XMLDocument doc;
+    EXPECT_EQ(doc.LoadFile(entry.path().c_str()), tinyxml2::XML_SUCCESS) << entry.path();
+  }
+  EXPECT_EQ(files, 10);  // 0.1 s at dt 0.01
+  EXPECT_TRUE(std::filesystem::exists(svgFrameName(tmp / "svg", 10)));
+  EXPECT_FALSE(std::filesystem::exists(svgFrameName(tmp / "svg", 0)));
+  const std::string last = testing::readText(svgFrameName(tmp / "svg", 10));
+  EXPECT_NE(last.find("<title>t = 0.10</title>"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace fosssim::render
