@@ -1,0 +1,39 @@
+// The interactive window (freeglut): shows a running simulation and lets the user pause, step,
+// zoom and pan, with the reference's keys. The window draws with the same painter as the
+// off-screen frames; only the context (this backend) differs.
+#pragma once
+
+#include "fosssim/core/state.h"
+#include "fosssim/core/status.h"
+#include "fosssim/io/scene_file.h"
+
+#include <functional>
+#include <string>
+
+namespace fosssim::render {
+
+/// True when a window can be opened: DISPLAY is set, the X server answers and offers GLX with a
+/// double-buffered RGBA visual. Checked with Xlib before glutInit, which would otherwise end the
+/// process on failure. Otherwise `why` says what is missing.
+bool windowAvailable(std::string& why);
+
+struct WindowSettings {
+  std::string sceneName;        ///< shown in the title and the status line
+  int width = 512, height = 512;
+  bool startPaused = true;      ///< -p
+  double stepsPerSecond = 100;  ///< <maxsimfreq>: the pace of a running simulation
+  long totalSteps = 0;          ///< stepping stops after this many; the window stays
+  /// The step function draws off-screen frames (OffscreenRenderer) on this thread: the window
+  /// then re-binds its own context after every step.
+  bool stepsRenderOffscreen = false;
+};
+
+/// Opens the window and runs its event loop until the user quits (q, Esc or closing it).
+/// `state` is what is shown; `step` advances it by one step (and does whatever else the caller
+/// wants per step, e.g. write frames). A failing step stops the loop and is returned.
+/// Keys: space pause/resume, s single step (and pause), q/Esc quit, c re-centre (the scene's
+/// viewport, or fit the particles), +/- zoom, arrows pan; mouse: drag pans, wheel zooms.
+Status runWindow(const WindowSettings& settings, const SceneFile& file, const State& state,
+                 const std::function<Status()>& step);
+
+}  // namespace fosssim::render

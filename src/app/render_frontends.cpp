@@ -1,0 +1,93 @@
+// Frontends of the build with the renderer: -g PNG frames and --movie (OSMesa), -m SVG, and the
+// GLUT window for -d 1. The drawing itself is in fosssim_render; this only wires options to it.
+#include "frontends.h"
+
+#include "fosssim/render/frame_outputs.h"
+#include "fosssim/render/glut_window.h"
+#include "fosssim/render/raster_frames.h"
+
+#include <cstdio>
+#include <filesystem>
+
+namespace fosssim::app {
+namespace {
+
+/// Forwards run events to the picture outputs.
+class PictureOutputs final : public RunObserver {
+ public:
+  explicit PictureOutputs(render::FrameOutputs outputs) : outputs_(std::move(outputs)) {}
+  Status start(const SceneFile& file, const State& initial, const RecordLayout&) override {
+    outputs_.start(file, initial);
+    return Status::ok();
+  }
+  Status afterStep(const SceneFile& file, const State& state, const CollisionLog&) override {
+    return outputs_.afterStep(file, state);
+  }
+  Status finish() override { return outputs_.finish(); }
+
+ private:
+  render::FrameOutputs outputs_;
+};
+
+}  // namespace
+
+Status addPictureOutputs(const Options& options, const SceneFile&, ObserverList& observers) {
+  render::FrameOutputs outputs(options.frameWidth, options.frameHeight, options.frameEvery);
+  if (!options.svgDir.empty()) {
+    std::unique_ptr<render::SvgFrames> svg;
+    if (Status s = render::SvgFrames::open(options.svgDir, svg); !s) return s;
+    outputs.add(std::move(svg));
+  }
+  if (options.pngs || !options.movie.empty()) {
+    render::RasterSettings raster;
+    raster.width = options.frameWidth;
+    raster.height = options.frameHeight;
+    if (options.pngs) raster.pngDir = options.pngDir.empty() ? "." : options.pngDir;
+    raster.movie = options.movie;
+    raster.fps = options.fps;
+    std::unique_ptr<render::RasterFrames> frames;
+    if (Status s = render::RasterFrames::open(raster, frames); !s) return s;
+    outputs.add(std::move(frames));
+  }
+  if (!outputs.empty()) observers.items.push_back(std::make_unique<PictureOutputs>(std::move(outputs)));
+  return Status::ok();
+}
+
+bool windowAvailable(std::string& why) { return render::windowAvailable(why); }
+
+int runWindow(const Options& options, SceneFile& file, Simulator& simulator, ObserverList& observers) {
+  State state = file.initial;
+  Status status = Status::ok();
+  for (auto& o : observers.items)
+    if (status) status = o->start(file, state, simulator.layout());
+
+  // One step as the headless run takes it, so that -o and -g work from the window too.
+  const std::function<Status()> step = [&]() -> Status {
+    if (Status s = simulator.step(file.scene, state, &observers); !s) return s;
+    for (auto& o : observers.items)
+      if (Status s = o->afterStep(file, state, simulator.log()); !s) return s;
+    return Status::ok();
+  };
+  if (status) {
+    render::WindowSettings settings;
+    settings.sceneName = std::filesystem::path(file.path).filename().string();
+    settings.width = options.frameWidth;
+    settings.height = options.frameHeight;
+    settings.startPaused = options.paused;
+    settings.stepsPerSecond = file.look.maxSimFreq;
+    settings.totalSteps = file.scene.numSteps();
+    settings.stepsRenderOffscreen = options.pngs || !options.movie.empty();
+    status = render::runWindow(settings, file, state, step);
+  }
+  for (auto& o : observers.items) {
+    Status finished = o->finish();
+    if (status && !finished) status = finished;
+  }
+  if (!status) {
+    std::fprintf(stderr, "FOSSSim: error: %s\n", status.message().c_str());
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace fosssim::app

@@ -1,0 +1,325 @@
+// The GLUT backend. GLUT reports events through plain function callbacks, so the window's state
+// lives in one object that the callbacks reach through a file-level pointer (one window at a time).
+#include "fosssim/render/glut_window.h"
+
+#include "gl_painter.h"
+
+#include "fosssim/render/camera.h"
+#include "fosssim/render/path_trails.h"
+#include "fosssim/render/picture.h"
+
+#include <GL/freeglut.h>
+#include <GL/glx.h>
+#include <X11/Xlib.h>
+#undef Status  // Xlib's macro for int would hide fosssim::Status
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <thread>
+
+namespace fosssim::render {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr double kZoomFactor = 1.25;
+constexpr double kPanFraction = 0.1;    // of the visible height per arrow key press
+constexpr int kTickMs = 10;             // timer period: fine enough for 100 steps/s and up
+constexpr double kMaxStepTimePerTick = 0.05;  // seconds: keep the window responsive
+
+double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+class Window {
+ public:
+  Window(const WindowSettings& settings, const SceneFile& file, const State& state, const std::function<Status()>& step)
+      : settings_(settings), file_(file), state_(state), step_(step), painter_(gl_),
+        trails_(file.look.paths, file.scene.dt) {
+    view_.width = settings.width;
+    view_.height = settings.height;
+    view_.camera = initialCamera(file.look, state, view_.width, view_.height);
+    trails_.record(state);
+    paused_ = settings.startPaused;
+    anchor_ = rateTime_ = Clock::now();
+  }
+
+  Status loadGl() {
+    const GlProcLookup lookup = [](const char* name) { return reinterpret_cast<GlProc>(glutGetProcAddress(name)); };
+    return loadGlFunctions(lookup, "GLUT window", gl_);
+  }
+  const Status& status() const { return status_; }
+
+  void display() {
+    Picture pic = makePicture(file_, state_, trails_, view_);
+    const double cap = labelCapHeight(view_.height);
+    pic.labels.push_back({statusText(), Vec2(0.7 * cap, 0.7 * cap), cap, pic.labels.front().color});
+    painter_.paint(pic);
+    glutSwapBuffers();
+    const std::string title = "FOSSSim: " + statusText();
+    if (title != title_) {
+      glutSetWindowTitle(title.c_str());
+      title_ = title;
+    }
+  }
+
+  void reshape(int w, int h) {
+    view_.width = std::max(w, 1);
+    view_.height = std::max(h, 1);
+    glutPostRedisplay();
+  }
+
+  void key(unsigned char k, int, int) {
+    switch (k) {
+      case ' ':
+        paused_ = !paused_;
+        anchor_ = Clock::now();
+        anchorSteps_ = 0;
+        break;
+      case 's':
+      case 'S':
+        paused_ = true;
+        advance(1);
+        break;
+      case 'q':
+      case 'Q':
+      case 27:
+        glutLeaveMainLoop();
+        return;
+      case 'c':
+      case 'C':
+        // Back to the scene's viewport, or fit the particles where they are now.
+        view_.camera = initialCamera(file_.look, state_, view_.width, view_.height);
+        break;
+      case '+':
+      case '=':
+        view_.camera.size /= kZoomFactor;
+        break;
+      case '-':
+      case '_':
+        view_.camera.size *= kZoomFactor;
+        break;
+      default:
+        return;
+    }
+    glutPostRedisplay();
+  }
+
+  void special(int k, int, int) {
+    const double step = kPanFraction * 2 * view_.camera.size;
+    if (k == GLUT_KEY_LEFT) view_.camera.cx -= step;
+    else if (k == GLUT_KEY_RIGHT) view_.camera.cx += step;
+    else if (k == GLUT_KEY_UP) view_.camera.cy += step;
+    else if (k == GLUT_KEY_DOWN) view_.camera.cy -= step;
+    else return;
+    glutPostRedisplay();
+  }
+
+  void mouse(int button, int buttonState, int x, int y) {
+    if (button == GLUT_LEFT_BUTTON) {
+      dragging_ = buttonState == GLUT_DOWN;
+      dragX_ = x;
+      dragY_ = y;
+    } else if (buttonState == GLUT_DOWN && (button == 3 || button == 4)) {  // freeglut's wheel
+      view_.camera.size = button == 3 ? view_.camera.size / kZoomFactor : view_.camera.size * kZoomFactor;
+      glutPostRedisplay();
+    }
+  }
+
+  void motion(int x, int y) {
+    if (!dragging_) return;
+    // The world point under the cursor follows it (window y grows downwards).
+    view_.camera.cx -= (x - dragX_) / view_.scale();
+    view_.camera.cy += (y - dragY_) / view_.scale();
+    dragX_ = x;
+    dragY_ = y;
+    glutPostRedisplay();
+  }
+
+  void tick() {
+    glutTimerFunc(kTickMs, [](int) { if (current) current->tick(); }, 0);
+    if (paused_ || finished()) {
+      updateRate();
+      return;
+    }
+    // Keep to <maxsimfreq> steps per wall second, but never fall into catching up forever
+    // with a scene whose steps are slower than that.
+    const auto now = Clock::now();
+    const double due = seconds(now - anchor_) * settings_.stepsPerSecond - static_cast<double>(anchorSteps_);
+    if (due > settings_.stepsPerSecond * 0.25) {
+      anchor_ = now;
+      anchorSteps_ = 0;
+    }
+    const long n = std::max(0L, static_cast<long>(due));
+    const auto begin = Clock::now();
+    long done = 0;
+    while (done < n && !finished() && seconds(Clock::now() - begin) < kMaxStepTimePerTick)
+      if (advance(1)) ++done;
+      else break;
+    anchorSteps_ += done;
+    updateRate();
+  }
+
+  static Window* current;
+
+ private:
+  bool finished() const { return stepsTaken_ >= settings_.totalSteps || !status_; }
+
+  /// Takes up to n steps; false when it could not (finished or failed).
+  bool advance(long n) {
+    bool any = false;
+    for (long k = 0; k < n && !finished(); ++k) {
+      status_ = step_();
+      if (settings_.stepsRenderOffscreen) restoreContext();
+      if (!status_) {
+        std::fprintf(stderr, "FOSSSim: error: %s\n", status_.message().c_str());
+        glutLeaveMainLoop();
+        return false;
+      }
+      ++stepsTaken_;
+      trails_.record(state_);
+      any = true;
+    }
+    if (any) glutPostRedisplay();
+    return any;
+  }
+
+  /// A step may draw off-screen frames (-g, --movie) through OSMesa on this thread, which leaves
+  /// Mesa's dispatch pointing at the off-screen context; re-binding ours puts the window back.
+  void restoreContext() {
+    Display* dpy = glXGetCurrentDisplay();
+    const GLXDrawable drawable = glXGetCurrentDrawable();
+    const GLXContext context = glXGetCurrentContext();
+    if (!dpy || !context) return;
+    glXMakeCurrent(dpy, None, nullptr);
+    glXMakeCurrent(dpy, drawable, context);
+  }
+
+  void updateRate() {
+    const auto now = Clock::now();
+    const double dt = seconds(now - rateTime_);
+    if (dt < 0.5) return;
+    const double rate = static_cast<double>(stepsTaken_ - rateSteps_) / dt;
+    rateTime_ = now;
+    rateSteps_ = stepsTaken_;
+    if (std::abs(rate - rate_) > 0.5) {
+      rate_ = rate;
+      glutPostRedisplay();
+    }
+  }
+
+  std::string statusText() const {
+    char text[256];
+    const char* mode = !status_ ? "failed" : finished() ? "done" : paused_ ? "paused" : "running";
+    std::snprintf(text, sizeof text, "%s  step %ld/%ld  %s  %.0f steps/s  %s", settings_.sceneName.c_str(), state_.step,
+                  settings_.totalSteps, timeText(state_.time, file_.scene.dt).c_str(), rate_, mode);
+    return text;
+  }
+
+  WindowSettings settings_;
+  const SceneFile& file_;
+  const State& state_;
+  const std::function<Status()>& step_;
+  GlFunctions gl_;
+  GlPainter painter_;
+  View view_;
+  PathTrails trails_;
+  Status status_ = Status::ok();
+  bool paused_ = true;
+  long stepsTaken_ = 0;
+  Clock::time_point anchor_;  // pacing: steps due since the anchor
+  long anchorSteps_ = 0;
+  Clock::time_point rateTime_;  // steps per second, measured every half second
+  long rateSteps_ = 0;
+  double rate_ = 0;
+  bool dragging_ = false;
+  int dragX_ = 0, dragY_ = 0;
+  std::string title_;
+};
+
+Window* Window::current = nullptr;
+
+/// Opens a connection to the X display after checking that it can show OpenGL windows; null with
+/// the reason otherwise. A few retries: Xvfb started without -noreset resets itself when its last
+/// client leaves, and refuses connections for a moment while it does.
+Display* openCheckedDisplay(std::string& why) {
+  const char* name = std::getenv("DISPLAY");
+  if (!name || !*name) {
+    why = "DISPLAY is not set";
+    return nullptr;
+  }
+  Display* dpy = nullptr;
+  for (int attempt = 0; attempt < 5 && !dpy; ++attempt) {
+    if (attempt > 0) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    dpy = XOpenDisplay(nullptr);
+  }
+  if (!dpy) {
+    why = std::string("cannot open the X display \"") + name + "\"";
+    return nullptr;
+  }
+  int errorBase = 0, eventBase = 0;
+  if (!glXQueryExtension(dpy, &errorBase, &eventBase)) {
+    why = std::string("the X display \"") + name + "\" has no GLX (OpenGL) extension";
+    XCloseDisplay(dpy);
+    return nullptr;
+  }
+  int attributes[] = {GLX_RGBA, GLX_DOUBLEBUFFER, None};
+  XVisualInfo* visual = glXChooseVisual(dpy, DefaultScreen(dpy), attributes);
+  if (!visual) {
+    why = std::string("the X display \"") + name + "\" offers no double-buffered RGBA OpenGL visual";
+    XCloseDisplay(dpy);
+    return nullptr;
+  }
+  XFree(visual);
+  return dpy;
+}
+
+}  // namespace
+
+bool windowAvailable(std::string& why) {
+  Display* dpy = openCheckedDisplay(why);
+  if (dpy) XCloseDisplay(dpy);
+  return dpy != nullptr;
+}
+
+Status runWindow(const WindowSettings& settings, const SceneFile& file, const State& state,
+                 const std::function<Status()>& step) {
+  if (Window::current) return Status::error("a FOSSSim window is already open");
+  // Checked again (and held open until GLUT has its own connection): glutInit ends the process
+  // when it cannot open the display, and our connection keeps a fresh Xvfb from resetting.
+  std::string why;
+  Display* probe = openCheckedDisplay(why);
+  if (!probe) return Status::error("cannot open a window: " + why);
+
+  int argc = 1;
+  char program[] = "FOSSSim";
+  char* argv[] = {program, nullptr};
+  glutInit(&argc, argv);
+  glutSetOption(GLUT_ACTION_ON_WINDOW_CLOSE, GLUT_ACTION_GLUTMAINLOOP_RETURNS);
+  glutInitDisplayMode(GLUT_RGBA | GLUT_DOUBLE);
+  glutInitWindowSize(settings.width, settings.height);
+  Window window(settings, file, state, step);
+  const int id = glutCreateWindow(("FOSSSim: " + settings.sceneName).c_str());
+  XCloseDisplay(probe);
+  if (Status s = window.loadGl(); !s) {
+    glutDestroyWindow(id);
+    glutExit();
+    return s;
+  }
+  Window::current = &window;
+  glutDisplayFunc([] { Window::current->display(); });
+  glutReshapeFunc([](int w, int h) { Window::current->reshape(w, h); });
+  glutKeyboardFunc([](unsigned char k, int x, int y) { Window::current->key(k, x, y); });
+  glutSpecialFunc([](int k, int x, int y) { Window::current->special(k, x, y); });
+  glutMouseFunc([](int b, int s, int x, int y) { Window::current->mouse(b, s, x, y); });
+  glutMotionFunc([](int x, int y) { Window::current->motion(x, y); });
+  glutTimerFunc(kTickMs, [](int) { if (Window::current) Window::current->tick(); }, 0);
+  glutMainLoop();
+  Window::current = nullptr;
+  if (glutGetWindow() != 0) glutDestroyWindow(id);
+  glutExit();
+  return window.status();
+}
+
+}  // namespace fosssim::render

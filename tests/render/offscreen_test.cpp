@@ -1,0 +1,209 @@
+// Headless frames (OSMesa): pixels that must hold in a rendered picture, PNG files, and the
+// command line's -g, --frame-every, --frame-size, --movie and -d 1 without a display.
+#include "render_test_support.h"
+
+#include "fosssim/render/offscreen_renderer.h"
+#include "fosssim/render/png_writer.h"
+
+#include <cstdlib>
+
+namespace fosssim::render {
+namespace {
+
+using testing::kShapesScene;
+using testing::parsed;
+using testing::TempDir;
+
+/// The shapes scene (render_test_support.h) drawn at 100 x 80: 40 pixels per unit, origin at
+/// pixel (50, 40) counted from the bottom-left.
+class Offscreen : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    file_ = parsed(kShapesScene);
+    View view;
+    view.width = 100;
+    view.height = 80;
+    view.camera = initialCamera(file_.look, file_.initial, 100, 80);
+    picture_ = makePicture(file_, file_.initial, PathTrails(), view);
+    std::unique_ptr<OffscreenRenderer> renderer;
+    const Status s = OffscreenRenderer::create(100, 80, renderer);
+    ASSERT_TRUE(s.isOk()) << s.message();
+    const Status r = renderer->render(picture_, image_);
+    ASSERT_TRUE(r.isOk()) << r.message();
+    ASSERT_EQ(image_.width, 100);
+    ASSERT_EQ(image_.height, 80);
+  }
+
+  /// Pixel (i, j) counted from the bottom-left, as the picture's coordinates are.
+  void expectColor(int i, int j, int r, int g, int b, const char* what) const {
+    const std::uint8_t* p = image_.pixel(i, image_.height - 1 - j);
+    EXPECT_NEAR(p[0], r, 2) << what << " at (" << i << ", " << j << ")";
+    EXPECT_NEAR(p[1], g, 2) << what << " at (" << i << ", " << j << ")";
+    EXPECT_NEAR(p[2], b, 2) << what << " at (" << i << ", " << j << ")";
+  }
+
+  SceneFile file_;
+  Picture picture_;
+  Image image_;
+};
+
+TEST_F(Offscreen, BackgroundAwayFromObjects) {
+  expectColor(90, 40, 51, 102, 153, "background");
+  expectColor(90, 22, 51, 102, 153, "free side of the half-plane");
+}
+
+TEST_F(Offscreen, ParticleColourAtItsCentre) {
+  expectColor(70, 50, 255, 0, 0, "particle 0");
+  expectColor(30, 60, 166, 75, 0, "particle 1 (default colour)");
+}
+
+TEST_F(Offscreen, HalfPlaneSolidSideIsFilled) {
+  expectColor(10, 5, 0, 128, 0, "solid side");
+  expectColor(90, 2, 0, 128, 0, "solid side");
+  expectColor(70, 15, 0, 128, 0, "just below the boundary");
+}
+
+TEST_F(Offscreen, ParticlesAreDrawnOverHalfPlanesAndEdges) {
+  expectColor(50, 20, 166, 75, 0, "particle on the half-plane's boundary");
+  expectColor(30, 44, 0, 99, 99, "edge between its particles");
+  expectColor(29, 44, 0, 99, 99, "edge between its particles");
+}
+
+TEST_F(Offscreen, DiskEdgesAreSmoothed) {
+  // Around particle 0 (centre (70, 50), radius 8 px) some pixels mix red and background.
+  int mixed = 0;
+  for (int j = 40; j < 60; ++j)
+    for (int i = 60; i < 80; ++i) {
+      const std::uint8_t* p = image_.pixel(i, image_.height - 1 - j);
+      if (p[0] > 60 && p[0] < 245 && p[2] > 10 && p[2] < 145) ++mixed;
+    }
+  EXPECT_GE(mixed, 20);
+}
+
+TEST_F(Offscreen, TimeIsShownInTheTopLeftCornerInTheInverseColour) {
+  // Ink is (204, 153, 102) on (51, 102, 153): count pixels nearer the ink than the background
+  // (thin anti-aliased strokes at this small size cover few pixels fully).
+  int ink = 0, fullInk = 0;
+  for (int y = 0; y < 20; ++y)
+    for (int x = 0; x < 60; ++x) {
+      const std::uint8_t* p = image_.pixel(x, y);
+      auto d2 = [&](int r, int g, int b) { return (p[0] - r) * (p[0] - r) + (p[1] - g) * (p[1] - g) + (p[2] - b) * (p[2] - b); };
+      if (d2(204, 153, 102) < d2(51, 102, 153)) ++ink;
+      if (d2(204, 153, 102) < 3 * 8 * 8) ++fullInk;
+    }
+  EXPECT_GE(ink, 30);
+  EXPECT_GE(fullInk, 3);
+  // and nothing of it elsewhere, e.g. the top-right corner
+  for (int y = 0; y < 20; ++y)
+    for (int x = 80; x < 100; ++x) EXPECT_EQ(image_.pixel(x, y)[0], 51) << x << "," << y;
+}
+
+TEST_F(Offscreen, PngRoundTrip) {
+  TempDir tmp;
+  const std::string path = pngFrameName(tmp.path, 7);
+  EXPECT_EQ(path, tmp.path + "/frame00007.png");
+  ASSERT_TRUE(writePng(path, image_).isOk());
+  Image back;
+  const Status s = readPng(path, back);
+  ASSERT_TRUE(s.isOk()) << s.message();
+  EXPECT_EQ(back.width, image_.width);
+  EXPECT_EQ(back.height, image_.height);
+  EXPECT_EQ(back.rgb, image_.rgb);
+}
+
+TEST(OffscreenRenderer, RejectsAPictureOfAnotherSize) {
+  std::unique_ptr<OffscreenRenderer> renderer;
+  ASSERT_TRUE(OffscreenRenderer::create(32, 32, renderer).isOk());
+  Picture pic;
+  pic.view.width = 64;
+  pic.view.height = 64;
+  Image image;
+  EXPECT_FALSE(renderer->render(pic, image).isOk());
+}
+
+// --- the command line -------------------------------------------------------------------------
+
+std::string fosssim() { return FOSSSIM_EXECUTABLE; }
+
+std::vector<std::string> filesIn(const std::string& dir) {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(dir, ec))
+    if (e.is_regular_file()) names.push_back(std::filesystem::relative(e.path(), dir).string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+TEST(CommandLine, PngFramesAfterEveryStepNumberedFromOneInANewFolder) {
+  TempDir tmp;
+  testing::writeText(tmp / "scene.xml", kShapesScene);
+  const auto r = testing::run("cd " + tmp.path + " && " + fosssim() + " -s scene.xml -d 0 -q -g 1");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::vector<std::string> expected = {"scene.xml"};
+  for (int k = 1; k <= 10; ++k) expected.push_back(pngFrameName("pngs", k));
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(filesIn(tmp.path), expected);
+  Image frame;
+  ASSERT_TRUE(readPng(tmp / "pngs/frame00010.png", frame).isOk());
+  EXPECT_EQ(frame.width, 512);
+  EXPECT_EQ(frame.height, 512);
+}
+
+TEST(CommandLine, FrameEveryAndFrameSizeAndPngDir) {
+  TempDir tmp;
+  testing::writeText(tmp / "scene.xml", kShapesScene);
+  const auto r = testing::run(fosssim() + " -s " + (tmp / "scene.xml") + " -d 0 -q -g 1 --frame-every 3 " +
+                              "--frame-size 64x48 --png-dir " + (tmp / "deep/frames"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(filesIn(tmp / "deep"), (std::vector<std::string>{"frames/frame00001.png", "frames/frame00002.png",
+                                                             "frames/frame00003.png"}));
+  Image frame;
+  ASSERT_TRUE(readPng(tmp / "deep/frames/frame00003.png", frame).isOk());
+  EXPECT_EQ(frame.width, 64);
+  EXPECT_EQ(frame.height, 48);
+}
+
+TEST(CommandLine, MoviePipedIntoFfmpegLeavesNoFrames) {
+  if (testing::onPath("ffmpeg").empty()) GTEST_SKIP() << "ffmpeg is not installed (scripts/setup installs it)";
+  TempDir tmp;
+  testing::writeText(tmp / "scene.xml", kShapesScene);
+  const auto r = testing::run("cd " + tmp.path + " && " + fosssim() +
+                              " -s scene.xml -d 0 -q --movie out/movie.mp4 --fps 10 --frame-size 96x64");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(filesIn(tmp.path), (std::vector<std::string>{"out/movie.mp4", "scene.xml"}));
+  EXPECT_GT(std::filesystem::file_size(tmp / "out/movie.mp4"), 0u);
+  if (!testing::onPath("ffprobe").empty()) {
+    const auto probe = testing::run("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+                                    "stream=width,height,nb_read_frames -of csv=p=0 " + (tmp / "out/movie.mp4"));
+    EXPECT_EQ(probe.output, "96,64,10\n");
+  }
+}
+
+TEST(CommandLine, MovieWithoutFfmpegSaysSo) {
+  TempDir tmp;
+  testing::writeText(tmp / "scene.xml", kShapesScene);
+  const auto r = testing::run("cd " + tmp.path + " && PATH=" + tmp.path + " " + fosssim() +
+                              " -s scene.xml -d 0 -q --movie movie.mp4");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.output.find("--movie needs ffmpeg, which is not on PATH"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(tmp / "movie.mp4"));
+}
+
+TEST(CommandLine, WindowWithoutADisplayRunsHeadless) {
+  TempDir tmp;
+  testing::writeText(tmp / "scene.xml", kShapesScene);
+  const auto r = testing::run("cd " + tmp.path + " && env -u DISPLAY " + fosssim() + " -s scene.xml -d 1 -g 1");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("no window (DISPLAY is not set); running headless"), std::string::npos) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(tmp / "pngs/frame00010.png"));
+}
+
+TEST(CommandLine, HelpNamesThePictureOptions) {
+  const auto r = testing::run(fosssim() + " -h");
+  ASSERT_EQ(r.exitCode, 0);
+  for (const char* option : {"--frame-size", "--frame-every", "--png-dir", "--movie", "--fps", "-m DIR", "-g 0|1"})
+    EXPECT_NE(r.output.find(option), std::string::npos) << option;
+}
+
+}  // namespace
+}  // namespace fosssim::render

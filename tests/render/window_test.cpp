@@ -1,0 +1,231 @@
+// The interactive window, for real: FOSSSim -d 1 under Xvfb, driven with xdotool key presses,
+// photographed with xwd. Skipped (saying why) where Xvfb, xdotool or xwd are not installed.
+#include "render_test_support.h"
+
+#include <chrono>
+#include <csignal>
+#include <cstdint>
+#include <fcntl.h>
+#include <poll.h>
+#include <spawn.h>
+#include <thread>
+#include <vector>
+
+extern char** environ;
+
+namespace fosssim::testing {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// A blue particle moving right at 1 unit/s on white, 256 pixels per unit in a 512 x 512 window.
+const char* kWindowScene = R"(<scene>
+  <duration time="1.0"/>
+  <integrator type="explicit-euler" dt="0.1"/>
+  <viewport cx="0" cy="0" size="1"/>
+  <particle m="1" px="-0.5" py="0" vx="1" vy="0" fixed="0" radius="0.1"/>
+  <particlecolor i="0" r="0" g="0" b="1"/>
+</scene>)";
+
+/// A child process that is killed (by its pid) and reaped when the guard goes.
+struct Child {
+  pid_t pid = -1;
+  ~Child() { stop(); }
+  void stop() {
+    if (pid <= 0) return;
+    kill(pid, SIGTERM);
+    for (int k = 0; k < 50 && waitpid(pid, nullptr, WNOHANG) == 0; ++k)
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    if (waitpid(pid, nullptr, WNOHANG) == 0) {
+      kill(pid, SIGKILL);
+      waitpid(pid, nullptr, 0);
+    }
+    pid = -1;
+  }
+  /// Waits up to `seconds` for the child to exit; its exit code, or -1 if it did not.
+  int wait(double seconds) {
+    const auto end = Clock::now() + std::chrono::duration<double>(seconds);
+    while (Clock::now() < end) {
+      int status = 0;
+      if (waitpid(pid, &status, WNOHANG) == pid) {
+        pid = -1;
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return -1;
+  }
+};
+
+pid_t spawn(const std::vector<std::string>& args, int stdoutFd = -1, int extraFd = -1) {
+  std::vector<char*> argv;
+  std::vector<std::string> copy = args;
+  for (auto& a : copy) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  if (stdoutFd >= 0) {
+    posix_spawn_file_actions_adddup2(&actions, stdoutFd, STDOUT_FILENO);
+    posix_spawn_file_actions_adddup2(&actions, stdoutFd, STDERR_FILENO);
+  }
+  (void)extraFd;  // inherited as is (not close-on-exec)
+  pid_t pid = -1;
+  if (posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ) != 0) pid = -1;
+  posix_spawn_file_actions_destroy(&actions);
+  return pid;
+}
+
+/// Starts Xvfb on a display number of its own choosing (-displayfd), returns ":N" or empty.
+std::string startXvfb(Child& xvfb, std::string& why) {
+  int fds[2];
+  if (pipe(fds) != 0) {
+    why = "cannot create a pipe";
+    return "";
+  }
+  const int devnull = open("/dev/null", O_WRONLY);
+  xvfb.pid = spawn({"Xvfb", "-displayfd", std::to_string(fds[1]), "-screen", "0", "800x600x24", "-nolisten", "tcp",
+                    "-noreset"},
+                   devnull, fds[1]);
+  close(devnull);
+  close(fds[1]);
+  std::string number;
+  pollfd p{fds[0], POLLIN, 0};
+  const auto end = Clock::now() + std::chrono::seconds(20);
+  while (Clock::now() < end && number.find('\n') == std::string::npos) {
+    if (poll(&p, 1, 100) > 0) {
+      char buf[32];
+      const ssize_t n = read(fds[0], buf, sizeof buf);
+      if (n <= 0) break;
+      number.append(buf, static_cast<std::size_t>(n));
+    }
+  }
+  close(fds[0]);
+  if (xvfb.pid <= 0 || number.find('\n') == std::string::npos) {
+    why = "Xvfb did not start (no display number reported within 20 s)";
+    return "";
+  }
+  return ":" + number.substr(0, number.find('\n'));
+}
+
+/// An XWD screenshot (the format of x11-apps' xwd): 24/32-bit TrueColor, ZPixmap.
+struct Screenshot {
+  int width = 0, height = 0;
+  std::vector<std::uint32_t> rgb;  // 0xRRGGBB, top row first
+  bool load(const std::string& path, std::string& why) {
+    const std::string data = readText(path);
+    auto field = [&](int k) {
+      const auto* b = reinterpret_cast<const unsigned char*>(data.data()) + 4 * k;
+      return (std::uint32_t(b[0]) << 24) | (std::uint32_t(b[1]) << 16) | (std::uint32_t(b[2]) << 8) | b[3];
+    };
+    if (data.size() < 100) return (why = "XWD file too short", false);
+    const std::uint32_t headerSize = field(0), format = field(2), w = field(4), h = field(5), byteOrder = field(7),
+                        bitsPerPixel = field(11), bytesPerLine = field(12), redMask = field(14),
+                        greenMask = field(15), blueMask = field(16), colors = field(19);
+    if (format != 2 || bitsPerPixel != 32) return (why = "XWD file is not a 32-bit ZPixmap", false);
+    const std::size_t offset = headerSize + 12 * std::size_t(colors);
+    if (data.size() < offset + std::size_t(bytesPerLine) * h) return (why = "XWD file truncated", false);
+    auto shift = [](std::uint32_t mask) {
+      int s = 0;
+      while (mask && !(mask & 1)) mask >>= 1, ++s;
+      return s;
+    };
+    width = int(w);
+    height = int(h);
+    rgb.resize(std::size_t(w) * h);
+    for (std::uint32_t y = 0; y < h; ++y)
+      for (std::uint32_t x = 0; x < w; ++x) {
+        const auto* b = reinterpret_cast<const unsigned char*>(data.data()) + offset + y * bytesPerLine + 4 * x;
+        const std::uint32_t v = byteOrder == 0 ? (b[0] | b[1] << 8 | b[2] << 16 | std::uint32_t(b[3]) << 24)
+                                               : (std::uint32_t(b[0]) << 24 | b[1] << 16 | b[2] << 8 | b[3]);
+        const std::uint32_t r = (v & redMask) >> shift(redMask), g = (v & greenMask) >> shift(greenMask),
+                            bl = (v & blueMask) >> shift(blueMask);
+        rgb[std::size_t(y) * w + x] = r << 16 | g << 8 | bl;
+      }
+    return true;
+  }
+  std::uint32_t at(int x, int y) const { return rgb[std::size_t(y) * width + x]; }
+};
+
+std::string hex(std::uint32_t c) {
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "#%06x", c);
+  return buf;
+}
+
+TEST(Window, StepsWithKeysAndShowsTheScene) {
+  for (const char* tool : {"Xvfb", "xdotool", "xwd"})
+    if (onPath(tool).empty())
+      GTEST_SKIP() << tool << " is not installed, so the window cannot be tested here (scripts/setup installs xvfb, "
+                   << "xdotool and x11-apps)";
+  Child xvfb;
+  std::string why;
+  const std::string display = startXvfb(xvfb, why);
+  if (display.empty()) GTEST_SKIP() << "Xvfb cannot run here: " << why;
+
+  TempDir tmp;
+  writeText(tmp / "window.xml", kWindowScene);
+  setenv("DISPLAY", display.c_str(), 1);
+  const int log = open((tmp / "fosssim.log").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  Child app;
+  app.pid = spawn({FOSSSIM_EXECUTABLE, "-s", tmp / "window.xml", "-d", "1", "-p", "1", "-o", tmp / "run.bin"}, log);
+  close(log);
+  ASSERT_GT(app.pid, 0);
+
+  const std::string x = "DISPLAY=" + display + " ";
+  std::string window;
+  for (auto end = Clock::now() + std::chrono::seconds(20); Clock::now() < end && window.empty();) {
+    const auto r = run(x + "xdotool search --name '^FOSSSim: '");
+    if (r.exitCode == 0) window = r.output.substr(0, r.output.find('\n'));
+    else std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  ASSERT_FALSE(window.empty()) << "no FOSSSim window appeared; its output:\n" << readText(tmp / "fosssim.log");
+
+  // Three single steps: the particle moves 0.3 units = 77 pixels to the right.
+  ASSERT_EQ(run(x + "xdotool key --window " + window + " s s s").exitCode, 0);
+  std::string title;
+  for (auto end = Clock::now() + std::chrono::seconds(10); Clock::now() < end;) {
+    title = run(x + "xdotool getwindowname " + window).output;
+    if (title.find("step 3/10") != std::string::npos) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  EXPECT_NE(title.find("window.xml  step 3/10  t = 0.3"), std::string::npos) << title;
+  EXPECT_NE(title.find("paused"), std::string::npos) << title;
+
+  const auto shot = run(x + "xwd -silent -id " + window + " -out " + (tmp / "shot.xwd"));
+  ASSERT_EQ(shot.exitCode, 0) << shot.output;
+  Screenshot image;
+  ASSERT_TRUE(image.load(tmp / "shot.xwd", why)) << why;
+  ASSERT_GE(image.width, 500);
+  ASSERT_GE(image.height, 500);
+  // World (-0.2, 0) is pixel (204.8, 256) from the top-left of the window.
+  EXPECT_EQ(image.at(205, 255), 0x0000ffu) << hex(image.at(205, 255)) << ": the particle after 3 steps";
+  EXPECT_EQ(image.at(215, 250), 0x0000ffu) << hex(image.at(215, 250));
+  EXPECT_EQ(image.at(128, 255), 0xffffffu) << hex(image.at(128, 255)) << ": where the particle started";
+  EXPECT_EQ(image.at(400, 100), 0xffffffu) << hex(image.at(400, 100)) << ": background";
+
+  // Only the key press: the window is gone before a release could be delivered to it.
+  // Zoom in (+): 1.25 times the scale, so the particle's centre moves to x = 256 - 0.2 * 320 = 192
+  // and its radius grows from 25.6 to 32 pixels.
+  ASSERT_EQ(run(x + "xdotool key --window " + window + " plus").exitCode, 0);
+  Screenshot zoomed;
+  for (auto end = Clock::now() + std::chrono::seconds(10); Clock::now() < end;) {
+    ASSERT_EQ(run(x + "xwd -silent -id " + window + " -out " + (tmp / "zoomed.xwd")).exitCode, 0);
+    ASSERT_TRUE(zoomed.load(tmp / "zoomed.xwd", why)) << why;
+    if (zoomed.at(192 - 27, 255) == 0x0000ffu) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  EXPECT_EQ(zoomed.at(192, 255), 0x0000ffu) << hex(zoomed.at(192, 255)) << ": the particle, zoomed in";
+  EXPECT_EQ(zoomed.at(192 - 27, 255), 0x0000ffu) << hex(zoomed.at(192 - 27, 255)) << ": within the larger radius";
+  EXPECT_EQ(image.at(192 - 27, 255), 0xffffffu) << hex(image.at(192 - 27, 255)) << ": outside before zooming";
+
+  const auto quit = run(x + "xdotool keydown --window " + window + " q");
+  ASSERT_EQ(quit.exitCode, 0) << quit.output;
+  EXPECT_EQ(app.wait(10), 0) << readText(tmp / "fosssim.log");
+  // -o still works from the window: record 0 and three steps of one particle (x, v: 4 doubles).
+  EXPECT_EQ(std::filesystem::file_size(tmp / "run.bin"), 4u * 4u * sizeof(double));
+  xvfb.stop();
+  unsetenv("DISPLAY");
+}
+
+}  // namespace
+}  // namespace fosssim::testing
