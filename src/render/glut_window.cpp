@@ -11,6 +11,8 @@
 #include <GL/freeglut.h>
 #include <GL/glx.h>
 #include <X11/Xlib.h>
+#include <dlfcn.h>
+#include <link.h>
 #undef Status  // Xlib's macro for int would hide fosssim::Status
 
 #include <algorithm>
@@ -240,6 +242,23 @@ class Window {
 
 Window* Window::current = nullptr;
 
+#if defined(__SANITIZE_ADDRESS__)
+/// Sanitizer builds only: pins the GL driver modules (*_dri.so) that GLX loaded, so that they are
+/// still mapped when LeakSanitizer reports at exit and its suppressions (osmesa_context.cpp) can
+/// name Mesa's lifetime allocations instead of showing them as "<unknown module>".
+void pinDriverModules() {
+  dl_iterate_phdr(
+      [](dl_phdr_info* info, std::size_t, void*) {
+        const std::string name = info->dlpi_name ? info->dlpi_name : "";
+        if (name.find("_dri.so") != std::string::npos) dlopen(name.c_str(), RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
+        return 0;
+      },
+      nullptr);
+}
+#else
+void pinDriverModules() {}
+#endif
+
 /// Opens a connection to the X display after checking that it can show OpenGL windows; null with
 /// the reason otherwise. A few retries: Xvfb started without -noreset resets itself when its last
 /// client leaves, and refuses connections for a moment while it does.
@@ -302,6 +321,7 @@ Status runWindow(const WindowSettings& settings, const SceneFile& file, const St
   Window window(settings, file, state, step);
   const int id = glutCreateWindow(("FOSSSim: " + settings.sceneName).c_str());
   XCloseDisplay(probe);
+  pinDriverModules();
   if (Status s = window.loadGl(); !s) {
     glutDestroyWindow(id);
     glutExit();
