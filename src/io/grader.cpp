@@ -11,6 +11,15 @@ namespace {
 /// Below this L1 norm a polynomial counts as zero (the reference grader's threshold).
 constexpr double kZeroPolynomialNorm = 1e-10;
 
+std::string listOf(const double* c, int n) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "(";
+  for (int k = 0; k < n; ++k) s << (k ? ", " : "") << c[k];
+  s << ")";
+  return s.str();
+}
+
 const char* kindName(PairKind kind) {
   switch (kind) {
     case PairKind::ParticleParticle: return "particle-particle";
@@ -131,7 +140,8 @@ class Grader final : public StepObserver {
     for (int k = 0; k < ref.size(); ++k)
       if (!samePolynomial(mine.coefficients(k), mine.length(k), ref.coefficients(k), ref.length(k), tol_.polynomial)) {
         ++report_.polynomialMismatches;
-        finding(std::string(which) + " polynomial " + std::to_string(k) + " differs");
+        finding(std::string(which) + " polynomial " + std::to_string(k) + " differs: mine " +
+                listOf(mine.coefficients(k), mine.length(k)) + ", the file's " + listOf(ref.coefficients(k), ref.length(k)));
       }
   }
 

@@ -47,9 +47,10 @@ void HybridHandler::failsafe(const Scene& scene, const State& start, State& stat
   // least once, even when the first detection found nothing (its log shows the second query).
   // Zones only grow, so this ends after at most N + (number of zones marked immovable) rounds.
   do {
+    predicted_ = state.x;
     zones_.moveRigidly(scene, start.x, predicted_, state.x);
   } while (grow(state.x));
-  for (int p : zones_.members()) at(state.v, p) = (at(state.x, p) - at(start.x, p)) / ctx.dt;
+  for (int p : zones_.members()) at(state.v, p) = divide(at(state.x, p) - at(start.x, p), ctx.dt);
 }
 
 }  // namespace fosssim

@@ -8,8 +8,7 @@
 // at one point) only translates.
 #include "impact_zones.h"
 
-#include <Eigen/Geometry>
-
+#include <algorithm>
 #include <cmath>
 
 namespace fosssim {
@@ -74,6 +73,9 @@ int ImpactZones::zoneCount() {
 }
 
 void ImpactZones::moveRigidly(const Scene& scene, const VecX& start, const VecX& predicted, VecX& x) {
+  // Sums run over each zone's particles in ascending index order (the reference keeps zones as
+  // ordered sets), so that rounding matches it.
+  std::sort(members_.begin(), members_.end());
   std::vector<Accumulator>& zones = accumulators_;
   zones.clear();
   for (int p : members_) {
@@ -89,7 +91,7 @@ void ImpactZones::moveRigidly(const Scene& scene, const VecX& start, const VecX&
     z.centre += m * at(start, p);
     z.shift += m * (at(predicted, p) - at(start, p));
   }
-  for (Accumulator& z : zones) z.centre /= z.mass, z.shift /= z.mass;
+  for (Accumulator& z : zones) z.centre = divide(z.centre, z.mass), z.shift = divide(z.shift, z.mass);
   for (int p : members_) {
     Accumulator& z = zones[slot_[find(p)]];
     const double m = scene.massOf(p);
@@ -104,8 +106,9 @@ void ImpactZones::moveRigidly(const Scene& scene, const VecX& start, const VecX&
       continue;
     }
     const double angle = z.inertia > 0 ? z.angular / z.inertia : 0.0;
-    const Eigen::Rotation2D<double> rotation(angle);
-    at(x, p) = z.centre + z.shift + rotation * (at(start, p) - z.centre);
+    const double c = std::cos(angle), s = std::sin(angle);
+    const Vec2 arm = at(start, p) - z.centre;
+    at(x, p) = z.centre + z.shift + Vec2(c * arm.x() - s * arm.y(), s * arm.x() + c * arm.y());
   }
   for (int p : members_) slot_[find(p)] = -1;
 }

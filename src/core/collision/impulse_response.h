@@ -38,7 +38,7 @@ inline VelocityChange particleParticleResponse(const Scene& scene, int i, int j,
   VelocityChange out;
   const double wi = inverseMass(scene, i), wj = inverseMass(scene, j), w = wi + wj;
   if (w == 0.0) return out;
-  const Vec2 nhat = n.normalized();
+  const Vec2 nhat = normalize(n);
   const double N = (1.0 + cor) * (vj - vi).dot(nhat);
   if (wi != 0.0) out.add(i, N * wi / w * nhat);
   if (wj != 0.0) out.add(j, -N * wj / w * nhat);
@@ -55,7 +55,7 @@ inline VelocityChange particleEdgeResponse(const Scene& scene, int i, const Edge
   const double a = alpha, b = 1.0 - alpha;
   const double W = w1 + b * b * w2 + a * a * w3;
   if (W == 0.0) return out;
-  const Vec2 nhat = n.normalized();
+  const Vec2 nhat = normalize(n);
   const double N = (1.0 + cor) * (v2 + a * (v3 - v2) - v1).dot(nhat);
   if (w1 != 0.0) out.add(i, N * w1 / W * nhat);
   if (w2 != 0.0) out.add(e.i, -b * N * w2 / W * nhat);
@@ -68,7 +68,7 @@ inline VelocityChange particleHalfPlaneResponse(const Scene& scene, int i, const
                                                 const Vec2& v1) {
   VelocityChange out;
   if (scene.isFixed(i)) return out;
-  const Vec2 nhat = n.normalized();
+  const Vec2 nhat = normalize(n);
   out.add(i, -(1.0 + cor) * v1.dot(nhat) * nhat);
   return out;
 }
@@ -81,7 +81,7 @@ namespace fosssim {
 /// velocity over the step, d = (qe - qs)/h (the reference's choice).
 inline VelocityChange collisionResponse(const Scene& scene, const Collision& c, double cor, const VecX& qs,
                                         const VecX& qe, double h) {
-  auto d = [&](int p) -> Vec2 { return (at(qe, p) - at(qs, p)) / h; };
+  auto d = [&](int p) -> Vec2 { return divide(at(qe, p) - at(qs, p), h); };
   switch (c.kind) {
     case PairKind::ParticleParticle:
       return particleParticleResponse(scene, c.i, c.j, c.n, cor, d(c.i), d(c.j));

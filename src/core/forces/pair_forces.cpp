@@ -13,17 +13,18 @@ double GravitationalForce::energy(const Scene& scene, const VecX& x, const VecX&
 }
 
 void GravitationalForce::addGradient(const Scene& scene, const VecX& x, const VecX&, VecX& gradE) const {
-  const Vec2 r = at(x, j_) - at(x, i_);
-  const double l = r.norm();
-  const Vec2 g = G_ * scene.massOf(i_) * scene.massOf(j_) / (l * l * l) * r;
-  at(gradE, i_) -= g;
-  at(gradE, j_) += g;
+  Vec2 n = at(x, j_) - at(x, i_);
+  const double l = n.norm();
+  n = divide(n, l);
+  n *= G_ * scene.massOf(i_) * scene.massOf(j_) / (l * l);
+  at(gradE, i_) -= n;
+  at(gradE, j_) += n;
 }
 
 void GravitationalForce::addJacobianX(const Scene& scene, const VecX& x, const VecX&, Triplets& out) const {
   const Vec2 r = at(x, j_) - at(x, i_);
   const double l = r.norm();
-  const Vec2 n = r / l;
+  const Vec2 n = divide(r, l);
   const Mat2 K = G_ * scene.massOf(i_) * scene.massOf(j_) / (l * l * l) *
                  (Mat2::Identity() - 3.0 * n * n.transpose());
   addBlock(out, i_, i_, K);
@@ -34,10 +35,10 @@ void GravitationalForce::addJacobianX(const Scene& scene, const VecX& x, const V
 
 void VortexForce::addGradient(const Scene&, const VecX& x, const VecX& v, VecX& gradE) const {
   const Vec2 r = at(x, j_) - at(x, i_);
-  const double l2 = r.squaredNorm();
-  const Vec2 rhat = r / std::sqrt(l2);
+  const double l = r.norm();
+  const Vec2 rhat = divide(r, l);
   const Vec2 perp(-rhat.y(), rhat.x());
-  const Vec2 forceOnJ = kvc_ / l2 * (kbs_ * perp - (at(v, j_) - at(v, i_)));
+  const Vec2 forceOnJ = kvc_ * divide(kbs_ * perp - (at(v, j_) - at(v, i_)), l * l);
   at(gradE, i_) += forceOnJ;
   at(gradE, j_) -= forceOnJ;
 }

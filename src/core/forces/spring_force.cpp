@@ -29,7 +29,7 @@ double SpringForce::energy(const Scene&, const VecX& x, const VecX&) const {
 void SpringForce::addGradient(const Scene&, const VecX& x, const VecX& v, VecX& gradE) const {
   Vec2 n = at(x, j_) - at(x, i_);
   const double l = n.norm();
-  n /= l;
+  n = divide(n, l);
   const Vec2 elastic = k_ * (l - l0_) * n;
   at(gradE, i_) -= elastic;
   at(gradE, j_) += elastic;
@@ -43,7 +43,7 @@ void SpringForce::addGradient(const Scene&, const VecX& x, const VecX& v, VecX& 
 void SpringForce::addJacobianX(const Scene&, const VecX& x, const VecX& v, Triplets& out) const {
   Vec2 n = at(x, j_) - at(x, i_);
   const double l = n.norm();
-  n /= l;
+  n = divide(n, l);
   const Mat2 P = Mat2::Identity() - n * n.transpose();
   Mat2 K = k_ * (n * n.transpose() + (l - l0_) / l * P);
   if (b_ != 0.0) {
@@ -55,7 +55,7 @@ void SpringForce::addJacobianX(const Scene&, const VecX& x, const VecX& v, Tripl
 
 void SpringForce::addJacobianV(const Scene&, const VecX& x, const VecX&, Triplets& out) const {
   if (b_ == 0.0) return;
-  const Vec2 n = (at(x, j_) - at(x, i_)).normalized();
+  const Vec2 n = normalize(at(x, j_) - at(x, i_));
   addPairBlocks(out, i_, j_, b_ * n * n.transpose());
 }
 
