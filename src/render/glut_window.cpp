@@ -174,8 +174,7 @@ class Window {
     for (long k = 0; k < n && !finished(); ++k) {
       status_ = step_();
       if (settings_.stepsRenderOffscreen) restoreContext();
-      if (!status_) {
-        std::fprintf(stderr, "FOSSSim: error: %s\n", status_.message().c_str());
+      if (!status_) {  // runWindow returns it; the caller reports it
         glutLeaveMainLoop();
         return false;
       }

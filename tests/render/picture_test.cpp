@@ -2,7 +2,7 @@
 #include "render_test_support.h"
 
 #include "fosssim/render/camera.h"
-#include "fosssim/render/frame_sequence.h"
+#include "fosssim/render/frame_outputs.h"
 #include "fosssim/render/path_trails.h"
 #include "fosssim/render/picture.h"
 #include "fosssim/render/stroke_font.h"

@@ -4,7 +4,7 @@
 // Runs the scene once without pictures, then again drawing every step off-screen, and prints
 // the time per step of the simulation and of each phase of a frame.
 #include "fosssim/core/simulator.h"
-#include "fosssim/render/frame_sequence.h"
+#include "fosssim/render/frame_outputs.h"
 #include "fosssim/render/offscreen_renderer.h"
 #include "fosssim/render/png_writer.h"
 #include "fosssim/render/svg_writer.h"
