@@ -28,14 +28,20 @@ Status Simulator::step(const Scene& scene, State& state, StepObserver* observer)
                          "): " + what);
   };
 
+  stats_.clear();
+  const StepTimer stepTimer(timing_, stats_.total);
+
   // 1. Predict: the integrator moves every particle as if nothing collided.
   start_ = state;
-  if (Status s = integrator_->step(scene, state, dt); !s) return failure(s.message());
+  {
+    const StepTimer timer(timing_, stats_.integrate);
+    if (Status s = integrator_->step(scene, state, dt); !s) return failure(s.message());
+  }
 
   // 2-3. Detect and respond: the handler turns the prediction into a collision-free end state.
   log_.clear();
   if (handler_) {
-    StepContext ctx{dt, &log_, observer};
+    StepContext ctx{dt, &log_, observer, &stats_};
     if (Status s = handler_->handle(scene, start_, state, ctx); !s) return failure(s.message());
   }
 

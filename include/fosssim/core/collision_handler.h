@@ -4,6 +4,7 @@
 #include "fosssim/core/collision_log.h"
 #include "fosssim/core/scene.h"
 #include "fosssim/core/state.h"
+#include "fosssim/core/step_stats.h"
 #include "fosssim/core/status.h"
 
 #include <memory>
@@ -32,6 +33,7 @@ struct StepContext {
   double dt = 0;
   CollisionLog* log = nullptr;          ///< never null; polynomials only if log->polynomials.enabled()
   StepObserver* observer = nullptr;     ///< may be null
+  StepStats* stats = nullptr;           ///< never null; handlers add their timings and counts
 };
 
 class CollisionHandler {

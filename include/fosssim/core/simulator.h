@@ -27,6 +27,9 @@ class Simulator {
 
   /// What the last step's collision handling did.
   const CollisionLog& log() const { return log_; }
+  /// What the last step cost and did (timings are measured only when enabled).
+  const StepStats& stats() const { return stats_; }
+  void setTiming(bool on) { timing_ = on; }
   /// What this scene's trajectory records contain.
   const RecordLayout& layout() const { return collision_->layout; }
 
@@ -36,6 +39,8 @@ class Simulator {
   std::unique_ptr<Integrator> integrator_;
   std::unique_ptr<CollisionHandler> handler_;  ///< null for "none" and "penalty"
   CollisionLog log_;
+  StepStats stats_;
+  bool timing_ = false;
   State start_;  ///< the state at the beginning of the current step (scratch)
 };
 

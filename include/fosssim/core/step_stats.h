@@ -1,0 +1,51 @@
+// What one step cost and did: phase timings and counters, for the benchmarks, the study and
+// users asking where the time goes. Filled by Simulator::step when statistics are enabled.
+#pragma once
+
+namespace fosssim {
+
+struct StepStats {
+  // --- wall time per phase, seconds -------------------------------------------------------------
+  double integrate = 0;    ///< forces, Jacobians and the integrator's solve
+  double broadPhase = 0;   ///< finding candidate pairs
+  double narrowPhase = 0;  ///< continuous-time (or discrete) queries on candidate pairs
+  double response = 0;     ///< computing and applying impulses
+  double failsafe = 0;     ///< rigid impact zones, including their detection passes
+  double total = 0;        ///< the whole step
+
+  // --- counters -------------------------------------------------------------------------------
+  long candidatePairs = 0;   ///< pairs handed to the narrow phase (all kinds, all passes)
+  long queries[3] = {0, 0, 0};  ///< narrow-phase queries by PairKind (particle-particle, -edge, -half-plane)
+  long collisions = 0;       ///< collisions found by the impulse phase (all passes)
+  int impulsePasses = 0;     ///< hybrid: detection passes of the impulse phase
+  bool failsafeUsed = false; ///< hybrid: the rigid impact-zone failsafe ran
+  int zones = 0;             ///< hybrid: impact zones at the end of the failsafe
+  int largestZone = 0;       ///< hybrid: particles in the largest zone
+
+  void clear() { *this = StepStats{}; }
+};
+
+}  // namespace fosssim
+
+#include <chrono>
+
+namespace fosssim {
+
+/// Adds the lifetime of the timer to `into` when enabled (RAII; costs nothing when disabled).
+class StepTimer {
+ public:
+  StepTimer(bool enabled, double& into) : into_(enabled ? &into : nullptr) {
+    if (into_) begin_ = std::chrono::steady_clock::now();
+  }
+  ~StepTimer() {
+    if (into_) *into_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin_).count();
+  }
+  StepTimer(const StepTimer&) = delete;
+  StepTimer& operator=(const StepTimer&) = delete;
+
+ private:
+  double* into_;
+  std::chrono::steady_clock::time_point begin_;
+};
+
+}  // namespace fosssim
