@@ -7,6 +7,7 @@
 #include "fosssim/render/camera.h"
 #include "fosssim/render/path_trails.h"
 #include "fosssim/render/picture.h"
+#include "fosssim/render/stroke_font.h"
 
 #include <GL/freeglut.h>
 #include <GL/glx.h>
@@ -55,11 +56,14 @@ class Window {
 
   void display() {
     Picture pic = makePicture(file_, state_, trails_, view_);
-    const double cap = labelCapHeight(view_.height);
-    pic.labels.push_back({statusText(), Vec2(0.7 * cap, 0.7 * cap), cap, pic.labels.front().color});
+    const std::string status = statusText();
+    double cap = labelCapHeight(view_.height);
+    const double room = view_.width - 1.4 * cap;  // a narrow window gets smaller letters
+    if (textWidth(status, cap) > room) cap = std::max(4.0, cap * room / textWidth(status, cap));
+    pic.labels.push_back({status, Vec2(0.7 * cap, 0.7 * cap), cap, pic.labels.front().color});
     painter_.paint(pic);
     glutSwapBuffers();
-    const std::string title = "FOSSSim: " + statusText();
+    const std::string title = "FOSSSim: " + status;
     if (title != title_) {
       glutSetWindowTitle(title.c_str());
       title_ = title;
