@@ -12,14 +12,14 @@ namespace fosssim {
 namespace {
 
 using testing::addBody;
-using testing::Setup;
+using testing::TestScene;
 
 /// Central-difference step: balances truncation (h^2) against rounding (eps/h) for O(1) inputs.
 constexpr double kStep = 1e-6;
 /// Agreement required between analytic and finite-difference values, relative to their size.
 constexpr double kTolerance = 1e-6;
 
-VecX gradient(const Setup& s, const Force& f, const VecX& x, const VecX& v) {
+VecX gradient(const TestScene& s, const Force& f, const VecX& x, const VecX& v) {
   VecX g = VecX::Zero(x.size());
   f.addGradient(s.scene, x, v, g);
   return g;
@@ -32,7 +32,7 @@ Eigen::MatrixXd dense(const Triplets& t, Eigen::Index n) {
 }
 
 /// Finite-difference Jacobian of the gradient with respect to x (wrtV = false) or v.
-Eigen::MatrixXd numericJacobian(const Setup& s, const Force& f, const VecX& x, const VecX& v, bool wrtV) {
+Eigen::MatrixXd numericJacobian(const TestScene& s, const Force& f, const VecX& x, const VecX& v, bool wrtV) {
   const Eigen::Index n = x.size();
   Eigen::MatrixXd J(n, n);
   for (Eigen::Index c = 0; c < n; ++c) {
@@ -44,7 +44,7 @@ Eigen::MatrixXd numericJacobian(const Setup& s, const Force& f, const VecX& x, c
   return J;
 }
 
-VecX numericGradient(const Setup& s, const Force& f, const VecX& x, const VecX& v) {
+VecX numericGradient(const TestScene& s, const Force& f, const VecX& x, const VecX& v) {
   VecX g(x.size());
   for (Eigen::Index c = 0; c < x.size(); ++c) {
     VecX xp = x, xm = x;
@@ -62,9 +62,9 @@ void expectClose(const Eigen::MatrixXd& analytic, const Eigen::MatrixXd& numeric
 }
 
 /// Four particles at random positions and velocities (and masses), none coincident.
-Setup randomSetup(std::mt19937& rng) {
+TestScene randomSetup(std::mt19937& rng) {
   std::uniform_real_distribution<double> pos(-2, 2), vel(-1, 1), mass(0.5, 3);
-  Setup s;
+  TestScene s;
   for (int i = 0; i < 4; ++i) addBody(s, mass(rng), Vec2(pos(rng), pos(rng)), Vec2(vel(rng), vel(rng)), 0.3);
   s.scene.edges.push_back(Edge{1, 2, 0.2});
   s.scene.halfplanes.push_back(HalfPlane{Vec2(0, -1.5), Vec2(0.3, 2.0)});
@@ -74,7 +74,7 @@ Setup randomSetup(std::mt19937& rng) {
 void checkForce(const std::function<std::unique_ptr<Force>()>& make) {
   std::mt19937 rng(7);
   for (int trial = 0; trial < 20; ++trial) {
-    Setup s = randomSetup(rng);
+    TestScene s = randomSetup(rng);
     const auto force = make();
     const VecX& x = s.state.x;
     const VecX& v = s.state.v;
@@ -113,7 +113,7 @@ TEST(Forces, PenaltyGradientMatchesItsEnergy) {
 }
 
 TEST(Forces, SpringPullsEndpointsTogetherWhenStretched) {
-  Setup s;
+  TestScene s;
   addBody(s, 1, Vec2(0, 0), Vec2(0, 0));
   addBody(s, 1, Vec2(2, 0), Vec2(0, 0));
   SpringForce spring(0, 1, 3.0, 1.0, 0.0);
@@ -125,7 +125,7 @@ TEST(Forces, SpringPullsEndpointsTogetherWhenStretched) {
 }
 
 TEST(Forces, VortexForceIsPerpendicularAndOpposite) {
-  Setup s;
+  TestScene s;
   addBody(s, 1, Vec2(0, 0), Vec2(0, 0));
   addBody(s, 1, Vec2(2, 0), Vec2(0, 0));
   VortexForce vortex(0, 1, 0.5, 4.0);
@@ -138,7 +138,7 @@ TEST(Forces, VortexForceIsPerpendicularAndOpposite) {
 
 TEST(Forces, InternalForcesSumToZero) {
   std::mt19937 rng(3);
-  Setup s = randomSetup(rng);
+  TestScene s = randomSetup(rng);
   const std::unique_ptr<Force> forces[] = {std::make_unique<SpringForce>(0, 1, 2, 1, 0.5),
                                            std::make_unique<GravitationalForce>(1, 2, 1.0),
                                            std::make_unique<VortexForce>(0, 3, 0.8, 2.0)};
@@ -149,7 +149,7 @@ TEST(Forces, InternalForcesSumToZero) {
 }
 
 TEST(Forces, PenaltyIsZeroOutsideReachAndRepulsiveInside) {
-  Setup s;
+  TestScene s;
   addBody(s, 1, Vec2(0, 0), Vec2(0, 0), 0.5);
   addBody(s, 1, Vec2(1.05, 0), Vec2(0, 0), 0.5);
   PenaltyForce thin(100, 0.01), thick(100, 0.1);

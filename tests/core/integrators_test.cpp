@@ -11,12 +11,12 @@
 namespace fosssim {
 namespace {
 
-using testing::Setup;
+using testing::TestScene;
 
 const char* const kAll[] = {"explicit-euler", "symplectic-euler", "forward-backward-euler", "implicit-euler",
                             "linearized-implicit-euler"};
 
-void run(Setup& s, long steps) {
+void run(TestScene& s, long steps) {
   std::unique_ptr<Simulator> sim;
   ASSERT_TRUE(Simulator::create(s.scene, {}, sim).isOk());
   for (long k = 0; k < steps; ++k) ASSERT_TRUE(sim->step(s.scene, s.state).isOk());
@@ -36,7 +36,7 @@ TEST(Integrators, ProjectileErrorIsFirstOrderWithTheKnownConstant) {
   const double T = 1.0;
   for (const char* keyword : kAll) {
     for (double h : {0.01, 0.005}) {
-      Setup s = testing::projectile(keyword, h, v0, g);
+      TestScene s = testing::projectile(keyword, h, v0, g);
       run(s, std::lround(T / h));
       const Vec2 exact = v0 * T + 0.5 * g * T * T;
       const double sign = std::string(keyword) == "explicit-euler" ? -1.0 : 1.0;
@@ -47,7 +47,7 @@ TEST(Integrators, ProjectileErrorIsFirstOrderWithTheKnownConstant) {
   }
 }
 
-double springEnergy(const Setup& s) {
+double springEnergy(const TestScene& s) {
   return kineticEnergy(s.scene, s.state.v) + potentialEnergy(s.scene, s.state.x, s.state.v);
 }
 
@@ -58,7 +58,7 @@ TEST(Integrators, EnergyDriftIsOrderedOnAnUndampedSpring) {
   const long steps = std::lround(10 * 2 * M_PI / 0.1);
   double drift[5];
   for (int m = 0; m < 5; ++m) {
-    Setup s = testing::spring(kAll[m], h, k);
+    TestScene s = testing::spring(kAll[m], h, k);
     const double e0 = springEnergy(s);
     run(s, steps);
     drift[m] = (springEnergy(s) - e0) / e0;
@@ -73,7 +73,7 @@ TEST(Integrators, EnergyDriftIsOrderedOnAnUndampedSpring) {
 
 TEST(Integrators, InternalForcesKeepMomentum) {
   for (const char* keyword : kAll) {
-    Setup s = testing::spring(keyword, 0.01, 50.0);
+    TestScene s = testing::spring(keyword, 0.01, 50.0);
     s.state.v << 1.0, 2.0, -0.5, 0.25;
     s.scene.mass[2] = s.scene.mass[3] = 3.0;
     s.scene.forces.push_back(std::make_unique<GravitationalForce>(0, 1, 0.7));
@@ -86,7 +86,7 @@ TEST(Integrators, InternalForcesKeepMomentum) {
 
 TEST(Integrators, FixedParticlesNeverMove) {
   for (const char* keyword : kAll) {
-    Setup s = testing::spring(keyword, 0.01, 20.0);
+    TestScene s = testing::spring(keyword, 0.01, 20.0);
     s.scene.fixed[0] = 1;
     s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, -9.81)));
     const Vec2 x0 = s.state.x.head<2>();
@@ -99,7 +99,7 @@ TEST(Integrators, FixedParticlesNeverMove) {
 
 // Implicit Euler's result satisfies its defining equation M (v' - v) = h F(x + h v', v').
 TEST(Integrators, ImplicitEulerSolvesItsEquation) {
-  Setup s = testing::spring("implicit-euler", 0.05, 100.0, 1.7);
+  TestScene s = testing::spring("implicit-euler", 0.05, 100.0, 1.7);
   s.scene.forces.push_back(std::make_unique<GravitationalForce>(0, 1, 2.0));
   s.scene.forces.push_back(std::make_unique<DragDampingForce>(0.3));
   const State before = s.state;
@@ -112,7 +112,7 @@ TEST(Integrators, ImplicitEulerSolvesItsEquation) {
 }
 
 TEST(Simulator, NonFiniteStateIsReportedWithStepAndParticle) {
-  Setup s = testing::spring("explicit-euler", 0.01, 1.0);
+  TestScene s = testing::spring("explicit-euler", 0.01, 1.0);
   s.state.x[2] = s.state.x[0];  // coincident spring ends: the direction is 0/0
   std::unique_ptr<Simulator> sim;
   ASSERT_TRUE(Simulator::create(s.scene, {}, sim).isOk());

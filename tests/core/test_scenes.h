@@ -8,13 +8,13 @@
 namespace fosssim::testing {
 
 /// A scene together with a state to run it from.
-struct Setup {
+struct TestScene {
   Scene scene;
   State state;
 };
 
 /// Appends a particle to both the scene and the state.
-inline int addBody(Setup& s, double m, Vec2 x, Vec2 v, double radius = 0.1, bool fixed = false) {
+inline int addBody(TestScene& s, double m, Vec2 x, Vec2 v, double radius = 0.1, bool fixed = false) {
   addParticle(s.scene, m, fixed, radius);
   const Eigen::Index n = s.state.x.size();
   s.state.x.conservativeResize(n + 2);
@@ -24,8 +24,8 @@ inline int addBody(Setup& s, double m, Vec2 x, Vec2 v, double radius = 0.1, bool
   return static_cast<int>(n / 2);
 }
 
-inline Setup projectile(const std::string& integrator, double dt, Vec2 v0, Vec2 g) {
-  Setup s;
+inline TestScene projectile(const std::string& integrator, double dt, Vec2 v0, Vec2 g) {
+  TestScene s;
   addBody(s, 2.0, Vec2(0, 0), v0);
   s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(g));
   s.scene.integrator = integrator;
@@ -34,8 +34,8 @@ inline Setup projectile(const std::string& integrator, double dt, Vec2 v0, Vec2 
 }
 
 /// Two particles joined by an undamped spring, stretched from rest length 1 to `length`.
-inline Setup spring(const std::string& integrator, double dt, double k, double length = 1.5) {
-  Setup s;
+inline TestScene spring(const std::string& integrator, double dt, double k, double length = 1.5) {
+  TestScene s;
   addBody(s, 1.0, Vec2(0, 0), Vec2(0, 0));
   addBody(s, 1.0, Vec2(length, 0), Vec2(0, 0));
   s.scene.edges.push_back(Edge{0, 1, 0.01});
