@@ -167,7 +167,11 @@ TEST(Window, StepsWithKeysAndShowsTheScene) {
   setenv("DISPLAY", display.c_str(), 1);
   const int log = open((tmp / "fosssim.log").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   Child app;
-  app.pid = spawn({FOSSSIM_EXECUTABLE, "-s", tmp / "window.xml", "-d", "1", "-p", "1", "-o", tmp / "run.bin"}, log);
+  // With -o and -g: the window's steps feed the other outputs, and the off-screen frames (OSMesa,
+  // same thread) must not disturb the window's own context.
+  app.pid = spawn({FOSSSIM_EXECUTABLE, "-s", tmp / "window.xml", "-d", "1", "-p", "1", "-o", tmp / "run.bin", "-g",
+                   "1", "--png-dir", tmp / "pngs"},
+                  log);
   close(log);
   ASSERT_GT(app.pid, 0);
 
@@ -221,8 +225,11 @@ TEST(Window, StepsWithKeysAndShowsTheScene) {
   const auto quit = run(x + "xdotool keydown --window " + window + " q");
   ASSERT_EQ(quit.exitCode, 0) << quit.output;
   EXPECT_EQ(app.wait(10), 0) << readText(tmp / "fosssim.log");
-  // -o still works from the window: record 0 and three steps of one particle (x, v: 4 doubles).
+  // -o and -g still work from the window: record 0 and three steps of one particle (x, v: 4
+  // doubles each), and three frames.
   EXPECT_EQ(std::filesystem::file_size(tmp / "run.bin"), 4u * 4u * sizeof(double));
+  EXPECT_TRUE(std::filesystem::exists(tmp / "pngs/frame00003.png"));
+  EXPECT_FALSE(std::filesystem::exists(tmp / "pngs/frame00004.png"));
   xvfb.stop();
   unsetenv("DISPLAY");
 }
