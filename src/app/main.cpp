@@ -2,6 +2,7 @@
 #include "frontends.h"
 #include "options.h"
 #include "outputs.h"
+#include "verify_output.h"
 
 #include "fosssim/core/simulator.h"
 #include "fosssim/io/grader.h"
@@ -70,6 +71,7 @@ int run(int argc, char** argv) {
 
   ObserverList observers;
   if (!options.output.empty()) observers.items.push_back(std::make_unique<TrajectoryOutput>(options.output));
+  if (options.verify) observers.items.push_back(std::make_unique<VerifyOutput>(*simulator));
   if (Status s = addPictureOutputs(options, file, observers); !s) return fail(s.message());
 
   if (options.display) {

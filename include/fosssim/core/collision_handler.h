@@ -42,6 +42,9 @@ class CollisionHandler {
   /// start: the state at the beginning of the step; state: the integrator's prediction, changed
   /// in place into the collision-free end of the step.
   virtual Status handle(const Scene& scene, const State& start, State& state, StepContext& ctx) = 0;
+  /// The rigid impact zone that moved `particle` in the last step, or -1 (only the hybrid
+  /// handler has zones). Pairs inside one zone are exempt from verification.
+  virtual int zoneOf(int /*particle*/) const { return -1; }
 };
 
 /// One row of the collision table: the keyword of <collision type="..."> and what it builds.

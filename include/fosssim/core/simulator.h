@@ -27,6 +27,10 @@ class Simulator {
 
   /// What the last step's collision handling did.
   const CollisionLog& log() const { return log_; }
+  /// The rigid impact zone that moved `particle` in the last step, or -1.
+  int zoneOf(int particle) const { return handler_ ? handler_->zoneOf(particle) : -1; }
+  /// The state at the beginning of the last step.
+  const State& lastStart() const { return start_; }
   /// What the last step cost and did (timings are measured only when enabled).
   const StepStats& stats() const { return stats_; }
   void setTiming(bool on) { timing_ = on; }

@@ -1,0 +1,28 @@
+#include "fosssim/core/verify.h"
+
+#include "continuous_detection.h"
+
+namespace fosssim {
+
+std::vector<Violation> unresolvedCollisions(const Scene& scene, const VecX& start, const VecX& end,
+                                            const ZoneOf& zoneOf, size_t limit) {
+  std::vector<Violation> found;
+  const ContinuousDetector detector(math::QuinticForm::Exact);
+  auto sameZone = [&](const Collision& c) {
+    const int z = zoneOf ? zoneOf(c.i) : -1;
+    if (z < 0) return false;
+    switch (c.kind) {
+      case PairKind::ParticleParticle: return zoneOf(c.j) == z;
+      case PairKind::ParticleEdge:
+        return zoneOf(scene.edges[c.j].i) == z && zoneOf(scene.edges[c.j].j) == z;
+      case PairKind::ParticleHalfPlane: return false;
+    }
+    return false;
+  };
+  detector.forEachCollision(scene, start, end, nullptr, [&](const Collision& c) {
+    if ((limit == 0 || found.size() < limit) && !sameZone(c)) found.push_back(Violation{c.kind, c.i, c.j, c.tau});
+  });
+  return found;
+}
+
+}  // namespace fosssim
