@@ -23,12 +23,13 @@ class CliFiles : public ::testing::Test {
     std::ofstream(path(name), std::ios::binary) << text;
     return path(name);
   }
-  /// A scene of `n` particles; with `simple`, records carry impulses.
-  std::string scene(const std::string& name, int n, bool simple = false) const {
+  /// A scene of `n` particles; with a collision type, records carry impulses (and polynomials).
+  std::string scene(const std::string& name, int n, const std::string& collision = "") const {
     std::string text = "<scene><duration time=\"0.1\"/><integrator type=\"explicit-euler\" dt=\"0.01\"/>";
     for (int k = 0; k < n; ++k)
       text += "<particle m=\"1\" px=\"" + std::to_string(k) + "\" py=\"0\" vx=\"1\" vy=\"0\" fixed=\"0\"/>";
-    return write(name, text + (simple ? "<collision type=\"simple\"/>" : "") + "</scene>\n");
+    if (!collision.empty()) text += "<collision type=\"" + collision + "\"/>";
+    return write(name, text + "</scene>\n");
   }
   fs::path dir_;
 };
@@ -74,9 +75,9 @@ TEST_F(CliFiles, AFailedStartIsNotReportedAsARun) {
 }
 
 TEST_F(CliFiles, OwnTrajectoryGradesAndAnotherScenesDoesNot) {
-  for (const bool simple : {false, true}) {
-    SCOPED_TRACE(simple ? "simple collisions" : "no collisions");
-    const std::string two = scene("two.xml", 2, simple), three = scene("three.xml", 3, simple);
+  for (const char* collision : {"", "simple", "continuous-time"}) {
+    SCOPED_TRACE(collision);
+    const std::string two = scene("two.xml", 2, collision), three = scene("three.xml", 3, collision);
     ASSERT_TRUE(exitedWith(runFosssim({"-s", two, "-d", "0", "-q", "-o", path("two.bin")}), 0));
     const Outcome own = runFosssim({"-s", two, "-d", "0", "-q", "-i", path("two.bin")});
     EXPECT_TRUE(exitedWith(own, 0)) << own;
@@ -87,7 +88,7 @@ TEST_F(CliFiles, OwnTrajectoryGradesAndAnotherScenesDoesNot) {
 }
 
 TEST_F(CliFiles, TrajectoriesThatDoNotFit) {
-  const std::string s = scene("s.xml", 2, true);
+  const std::string s = scene("s.xml", 2, "simple");
   ASSERT_TRUE(exitedWith(runFosssim({"-s", s, "-d", "0", "-q", "-o", path("t.bin")}), 0));
   const std::string bytes = slurp(path("t.bin"));
   ASSERT_EQ(bytes.size(), 11u * (64 + 4));  // 11 records, no impulses: 2 particles flying apart
