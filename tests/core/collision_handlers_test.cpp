@@ -107,7 +107,9 @@ TEST(CollisionHandlers, FastParticleTunnelsOnlyThroughDiscreteDetection) {
     run(s, *sim, 3);
     const bool tunnelled = s.state.x[1] < 0;
     EXPECT_EQ(tunnelled, std::string(type) == "simple") << type << " ends at y = " << s.state.x[1];
-    if (!tunnelled) EXPECT_NEAR(s.state.v[1], 100.0, 1e-9) << type;
+    if (!tunnelled) {
+      EXPECT_NEAR(s.state.v[1], 100.0, 1e-9) << type;
+    }
   }
 }
 
