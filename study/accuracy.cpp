@@ -1,0 +1,62 @@
+// The accuracy matrix: every problem x method x dt, judged by the problem's own measurement and
+// timed separately (timeRun), so that measuring never inflates the cost that is reported.
+#include "experiments.h"
+
+#include "csv.h"
+
+#include <cmath>
+
+namespace fosssim::study {
+
+AccuracyCell measureAccuracy(const Problem& problem, const Method& method, double dt, const StudyOptions& options,
+                             bool timed) {
+  AccuracyCell cell;
+  SceneFile file;
+  if (Status s = problem.scene(method, dt).load(problem.name + ".xml", file); !s) {
+    cell.run.outcome = Outcome::Error;
+    cell.run.message = s.message();
+    return cell;
+  }
+  std::unique_ptr<Measurement> measure = problem.measure();
+  cell.run = runScene(file, RunOptions{}, [&](const Scene& scene, const State& s) { measure->step(scene, s); });
+  if (!cell.run.ok()) return cell;
+  cell.metrics = measure->finish(file.scene, file.initial, cell.run);
+  if (timed) cell.wallSeconds = timeRun(file, cell.run.steps, options.timingRepeats, options.timingBudget);
+  return cell;
+}
+
+Status runAccuracy(const StudyOptions& options) {
+  CsvWriter csv;
+  if (Status s = csv.open(options.outDir + "/accuracy.csv",
+                          {"problem", "title", "kind", "error_label", "method", "integrator", "collision", "dt",
+                           "steps", "outcome", "sim_time", "wall_s", "wall_per_sim_s", "us_per_step", "error",
+                           "position_error", "velocity_error", "energy_error", "momentum_error", "angmom_error",
+                           "period_error", "contact_time_error", "collisions", "overlap_steps", "overlap_pair_steps",
+                           "max_overlap", "failsafe_steps", "message"});
+      !s)
+    return s;
+  std::vector<Problem> problems = integratorProblems(options.quick);
+  for (Problem& p : collisionProblems(options.quick)) problems.push_back(std::move(p));
+  for (const Problem& p : problems) {
+    if (options.log) *options.log << "accuracy: " << p.name << std::flush;
+    for (const Method& m : p.methods) {
+      for (double dt : p.dts) {
+        const AccuracyCell c = measureAccuracy(p, m, dt, options, true);
+        const RunResult& r = c.run;
+        const double simTime = r.final.time;
+        csv << p.name << p.title << p.kind << p.errorLabel << m.label << m.integrator << m.collision.type << dt
+            << r.steps << outcomeName(r.outcome) << simTime << c.wallSeconds << c.wallSeconds / simTime
+            << 1e6 * c.wallSeconds / static_cast<double>(r.steps) << c.metrics.error << c.metrics.position
+            << c.metrics.velocity << c.metrics.energy << c.metrics.momentum << c.metrics.angularMomentum
+            << c.metrics.period << c.metrics.contactTime << r.collisions << r.overlap.stepsWithOverlap
+            << r.overlap.pairSteps << r.overlap.deepest << r.failsafeSteps << r.message;
+        if (Status s = csv.endRow(); !s) return s;
+      }
+      if (options.log) *options.log << "." << std::flush;
+    }
+    if (options.log) *options.log << "\n";
+  }
+  return Status::ok();
+}
+
+}  // namespace fosssim::study

@@ -1,0 +1,41 @@
+// The study's experiments, each writing one CSV file into the output directory:
+//   accuracy.csv    error and cost of every method over a sweep of dt, per accuracy problem
+//   stability.csv   the largest stable dt of every integrator against spring stiffness
+//   robustness.csv  outcome of a fast disk against a thin edge, per collision method, speed and dt
+//   hybrid.csv      the hybrid handler's failsafe use, zone sizes and cost against maxiters
+//   profile.csv     per scene: the parts of the simulator it uses and what each costs per step
+#pragma once
+
+#include "problems.h"
+
+#include "fosssim/core/status.h"
+
+#include <ostream>
+#include <string>
+
+namespace fosssim::study {
+
+struct StudyOptions {
+  std::string outDir = ".";
+  bool quick = false;          ///< a tiny matrix (tests, smoke runs): same code, fewer cells
+  std::ostream* log = nullptr; ///< progress lines, may be null
+  double timingBudget = 0.15;  ///< seconds of repeated runs per timed cell (minimum taken)
+  int timingRepeats = 5;
+};
+
+/// One cell of the accuracy matrix.
+struct AccuracyCell {
+  RunResult run;
+  Metrics metrics;
+  double wallSeconds = kNotApplicable;  ///< timeRun's minimum; NaN if not timed or unstable
+};
+AccuracyCell measureAccuracy(const Problem& problem, const Method& method, double dt, const StudyOptions& options,
+                             bool timed);
+
+Status runAccuracy(const StudyOptions& options);
+Status runStability(const StudyOptions& options);
+Status runRobustness(const StudyOptions& options);
+Status runHybridCost(const StudyOptions& options);
+Status runProfile(const StudyOptions& options);
+
+}  // namespace fosssim::study

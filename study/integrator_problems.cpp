@@ -1,0 +1,199 @@
+// The problems that compare integrators: forces only, no collisions. Every answer comes from
+// closed_forms.h; the scenes are chosen so that one period or flight is resolved by the coarsest
+// time step and the finest one is still cheap.
+#include "closed_forms.h"
+#include "problems.h"
+
+#include <cmath>
+
+namespace fosssim::study {
+namespace {
+
+std::vector<double> sweep(bool quick, std::vector<double> full) {
+  if (!quick) return full;
+  return {full.front(), full[full.size() / 2]};
+}
+
+// ---- Projectile --------------------------------------------------------------------------------
+
+const Projectile kThrow{Vec2(0, 0), Vec2(3, 10), Vec2(0, -9.81)};
+constexpr double kThrowMass = 1.0;
+
+class ProjectileMeasure final : public Measurement {
+ public:
+  Metrics finish(const Scene& scene, const State& initial, const RunResult& run) override {
+    const State& s = run.final;
+    Metrics m;
+    m.position = (at(s.x, 0) - kThrow.position(s.time)).norm();
+    m.velocity = (at(s.v, 0) - kThrow.velocity(s.time)).norm();
+    const double e0 = mechanicalEnergy(scene, initial);
+    m.energy = std::abs(mechanicalEnergy(scene, s) - e0) / kineticEnergy(scene, initial.v);
+    m.error = m.position;
+    return m;
+  }
+};
+
+Problem projectile(bool quick) {
+  Problem p;
+  p.name = "projectile";
+  p.title = "Projectile under gravity (2 s flight)";
+  p.errorLabel = "position error at the end [m]";
+  p.kind = "integrators";
+  p.methods = integratorMethods();
+  p.dts = sweep(quick, {0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 5e-4, 2e-4, 1e-4});
+  p.scene = [](const Method& m, double dt) {
+    SceneXml x;
+    x.duration(2.0).method(m, dt).gravity(kThrow.g);
+    x.particle(kThrow.x0, kThrow.v0, kThrowMass);
+    return x;
+  };
+  p.measure = [] { return std::make_unique<ProjectileMeasure>(); };
+  return p;
+}
+
+// ---- Springs -----------------------------------------------------------------------------------
+// A unit mass on a spring to a fixed anchor at the origin, stretched along x and let go: the
+// motion stays on the x axis, where the spring force -k (l - l0) - b l' is linear in l.
+
+constexpr double kRest = 1.0, kStretch = 0.5, kSpringK = 10.0, kSpringMass = 1.0;
+
+class SpringMeasure final : public Measurement {
+ public:
+  explicit SpringMeasure(double b) : exact_{kSpringMass, kSpringK, b, kStretch, 0.0} {}
+  Metrics finish(const Scene&, const State&, const RunResult& run) override {
+    const State& s = run.final;
+    const Vec2 x = at(s.x, 1) - at(s.x, 0), v = at(s.v, 1);
+    Metrics m;
+    m.position = (x - Vec2(kRest + exact_.displacement(s.time), 0)).norm();
+    m.velocity = (v - Vec2(exact_.velocity(s.time), 0)).norm();
+    // The energy of the spring-mass system itself (a damped spring has no potential in the
+    // simulator's sense, so the study computes it), against the closed form's.
+    const double u = x.norm() - kRest;
+    const double energy = 0.5 * kSpringMass * v.squaredNorm() + 0.5 * kSpringK * u * u;
+    m.energy = std::abs(energy - exact_.energy(s.time)) / exact_.energy(0);
+    m.error = m.position;
+    return m;
+  }
+
+ private:
+  Oscillator exact_;
+};
+
+Problem spring(bool quick, double b) {
+  Problem p;
+  const bool damped = b > 0;
+  p.name = damped ? "spring-damped" : "spring";
+  p.title = damped ? "Damped spring (k = 10, b = 1, 5 s)" : "Undamped spring (k = 10, 10 s, 5 periods)";
+  p.errorLabel = "position error at the end [m]";
+  p.kind = "integrators";
+  p.methods = integratorMethods();
+  p.dts = sweep(quick, {0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 5e-4, 2e-4, 1e-4});
+  p.scene = [b, damped](const Method& m, double dt) {
+    SceneXml x;
+    x.duration(damped ? 5.0 : 10.0).method(m, dt);
+    const int anchor = x.particle(Vec2(0, 0), Vec2(0, 0), 1.0, true, 0.05);
+    const int bob = x.particle(Vec2(kRest + kStretch, 0), Vec2(0, 0), kSpringMass, false, 0.05);
+    x.spring(x.edge(anchor, bob), kSpringK, kRest, b);
+    return x;
+  };
+  p.measure = [b] { return std::make_unique<SpringMeasure>(b); };
+  return p;
+}
+
+// ---- Two-body orbit ----------------------------------------------------------------------------
+// Two equal masses, G (m1 + m2) = 1, released at apoapsis r = 1 with 0.8 of the circular speed:
+// eccentricity 0.36, a = 1/1.36, period 2 pi a^1.5 = 3.96 s. The centre of mass rests at the origin.
+
+constexpr double kG = 1.0, kBodyMass = 0.5;
+const Vec2 kRelX(1.0, 0.0), kRelV(0.0, 0.8);
+
+double mu() { return kG * 2 * kBodyMass; }
+
+class OrbitMeasure final : public Measurement {
+ public:
+  void step(const Scene&, const State& s) override {
+    const Vec2 r = at(s.x, 1) - at(s.x, 0);
+    double angle = std::atan2(r.y(), r.x());
+    // Unwrap: the orbit turns counter-clockwise by less than pi per step at any sane step.
+    while (angle < lastAngle_ - M_PI) angle += 2 * M_PI;
+    while (angle > lastAngle_ + M_PI) angle -= 2 * M_PI;
+    if (std::isnan(periodTime_) && angle >= 2 * M_PI)
+      periodTime_ = lastTime_ + (s.time - lastTime_) * (2 * M_PI - lastAngle_) / (angle - lastAngle_);
+    lastAngle_ = angle;
+    lastTime_ = s.time;
+  }
+
+  Metrics finish(const Scene& scene, const State& initial, const RunResult& run) override {
+    const KeplerOrbit orbit(mu(), kRelX, kRelV);
+    const State& s = run.final;
+    Metrics m;
+    m.position = (at(s.x, 1) - at(s.x, 0) - orbit.position(s.time)).norm();
+    const double e0 = mechanicalEnergy(scene, initial);
+    m.energy = std::abs(mechanicalEnergy(scene, s) - e0) / std::abs(e0);
+    m.momentum = momentum(scene, s.v).norm() / momentumScale(scene, initial.v);
+    auto angular = [&](const State& st) {
+      double L = 0;
+      for (int i = 0; i < 2; ++i) L += scene.massOf(i) * cross(at(st.x, i), at(st.v, i));
+      return L;
+    };
+    m.angularMomentum = std::abs(angular(s) - angular(initial)) / std::abs(angular(initial));
+    m.period = std::abs(periodTime_ - orbit.period()) / orbit.period();  // NaN: never went round
+    m.error = m.position;
+    return m;
+  }
+
+ private:
+  double lastAngle_ = 0, lastTime_ = 0;
+  double periodTime_ = kNotApplicable;
+};
+
+Problem orbit(bool quick) {
+  Problem p;
+  p.name = "orbit";
+  p.title = "Two-body orbit (e = 0.36, 2 periods)";
+  p.errorLabel = "separation error at the end [m]";
+  p.kind = "integrators";
+  p.methods = integratorMethods();
+  p.dts = sweep(quick, {0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 5e-4, 2e-4, 1e-4});
+  p.scene = [](const Method& m, double dt) {
+    const KeplerOrbit orbit(mu(), kRelX, kRelV);
+    SceneXml x;
+    x.duration(2 * orbit.period()).method(m, dt);
+    // Each body sits opposite the other about the resting centre of mass (equal masses).
+    const int a = x.particle(-0.5 * kRelX, -0.5 * kRelV, kBodyMass, false, 0.02);
+    const int b = x.particle(0.5 * kRelX, 0.5 * kRelV, kBodyMass, false, 0.02);
+    x.gravitational(a, b, kG);
+    return x;
+  };
+  p.measure = [] { return std::make_unique<OrbitMeasure>(); };
+  return p;
+}
+
+}  // namespace
+
+std::vector<Method> integratorMethods() {
+  std::vector<Method> out;
+  for (const char* name : {"explicit-euler", "symplectic-euler", "implicit-euler", "linearized-implicit-euler"})
+    out.push_back(Method{name, name, CollisionChoice{}});
+  return out;
+}
+
+Vec2 momentum(const Scene& scene, const VecX& v) {
+  Vec2 p = Vec2::Zero();
+  for (int i = 0; i < scene.numParticles(); ++i)
+    if (!scene.isFixed(i)) p += scene.massOf(i) * at(v, i);
+  return p;
+}
+
+double momentumScale(const Scene& scene, const VecX& v) {
+  double s = 0;
+  for (int i = 0; i < scene.numParticles(); ++i)
+    if (!scene.isFixed(i)) s += scene.massOf(i) * at(v, i).norm();
+  return s;
+}
+
+std::vector<Problem> integratorProblems(bool quick) {
+  return {projectile(quick), spring(quick, 0.0), spring(quick, 1.0), orbit(quick)};
+}
+
+}  // namespace fosssim::study

@@ -1,0 +1,93 @@
+#include "robustness.h"
+
+#include "csv.h"
+#include "experiments.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fosssim::study {
+namespace {
+
+constexpr double kDiskRadius = 0.02, kEdgeRadius = 0.01, kReach = kDiskRadius + kEdgeRadius;
+
+}  // namespace
+
+const char* edgeOutcomeName(EdgeOutcome outcome) {
+  switch (outcome) {
+    case EdgeOutcome::Bounced: return "bounced";
+    case EdgeOutcome::Tunnelled: return "tunnelled";
+    case EdgeOutcome::Stuck: return "stuck";
+    case EdgeOutcome::Unstable: return "unstable";
+  }
+  return "unstable";
+}
+
+SceneXml edgeThrowScene(const Method& method, double speed, double dt, double* startHeight) {
+  const double h = kReach + std::max(0.1, 5.37 * speed * dt);
+  if (startHeight) *startHeight = h;
+  SceneXml x;
+  x.duration(2 * h / speed).method(method, dt);
+  const int a = x.particle(Vec2(-1, 0), Vec2(0, 0), 1.0, true, kEdgeRadius);
+  const int b = x.particle(Vec2(1, 0), Vec2(0, 0), 1.0, true, kEdgeRadius);
+  x.edge(a, b, kEdgeRadius);
+  x.particle(Vec2(0, h), Vec2(0, -speed), 1.0, false, kDiskRadius);
+  return x;
+}
+
+EdgeThrow throwAtEdge(const Method& method, double speed, double dt) {
+  EdgeThrow out;
+  SceneFile file;
+  if (Status s = edgeThrowScene(method, speed, dt, &out.startHeight).load("thin-edge.xml", file); !s) {
+    out.run.outcome = Outcome::Error;
+    out.run.message = s.message();
+    return out;
+  }
+  out.run = runScene(file, RunOptions{});
+  if (!out.run.ok()) return out;
+  const Vec2 x = at(out.run.final.x, 2), v = at(out.run.final.v, 2);
+  // Distance from the disk's centre to the edge's segment (the edge never moves).
+  const double distance = (x - Vec2(std::clamp(x.x(), -1.0, 1.0), 0)).norm();
+  if (distance < kReach)
+    out.outcome = EdgeOutcome::Stuck;
+  else if (x.y() < 0)
+    out.outcome = EdgeOutcome::Tunnelled;
+  else
+    out.outcome = v.y() > 0 ? EdgeOutcome::Bounced : EdgeOutcome::Stuck;
+  return out;
+}
+
+Status runRobustness(const StudyOptions& options) {
+  CsvWriter csv;
+  if (Status s = csv.open(options.outDir + "/robustness.csv",
+                          {"method", "collision", "k", "speed", "dt", "speed_dt", "outcome", "steps", "exit_speed_ratio",
+                           "max_overlap", "max_overlap_rel", "overlap_steps", "collisions", "run_outcome",
+                           "message"});
+      !s)
+    return s;
+  std::vector<double> speeds, dts;
+  const int speedStep = options.quick ? 4 : 1, dtStep = options.quick ? 3 : 1;
+  for (int e = -2; e <= 6; e += speedStep) speeds.push_back(std::pow(10.0, e / 2.0));
+  for (int e = -8; e <= -2; e += dtStep) dts.push_back(std::pow(10.0, e / 2.0));
+  for (const Method& m : collisionMethods()) {
+    if (options.log) *options.log << "robustness: " << m.label << std::flush;
+    for (double speed : speeds) {
+      for (double dt : dts) {
+        const EdgeThrow t = throwAtEdge(m, speed, dt);
+        const RunResult& r = t.run;
+        const EdgeOutcome outcome = r.ok() ? t.outcome : EdgeOutcome::Unstable;
+        const double exitRatio = r.ok() ? at(r.final.v, 2).norm() / speed : kNotApplicable;
+        csv << m.label << m.collision.type << (m.collision.k >= 0 ? m.collision.k : kNotApplicable) << speed << dt
+            << speed * dt << edgeOutcomeName(outcome) << r.steps << exitRatio << r.overlap.deepest
+            << r.overlap.deepest / kReach << r.overlap.stepsWithOverlap << r.collisions << outcomeName(r.outcome)
+            << r.message;
+        if (Status s = csv.endRow(); !s) return s;
+      }
+      if (options.log) *options.log << "." << std::flush;
+    }
+    if (options.log) *options.log << "\n";
+  }
+  return Status::ok();
+}
+
+}  // namespace fosssim::study

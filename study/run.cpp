@@ -1,0 +1,126 @@
+#include "run.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+namespace fosssim::study {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
+
+/// Sorts a failed step's message into an outcome (the simulator's messages are the contract:
+/// "non-finite" for a state that overflowed, the implicit solver's own words for its failures).
+Outcome classify(const std::string& message) {
+  if (message.find("non-finite") != std::string::npos) return Outcome::NonFinite;
+  if (message.find("singular") != std::string::npos || message.find("converge") != std::string::npos)
+    return Outcome::SolverFailure;
+  return Outcome::Error;
+}
+
+void addPhases(StepStats& sum, const StepStats& s) {
+  sum.integrate += s.integrate;
+  sum.broadPhase += s.broadPhase;
+  sum.narrowPhase += s.narrowPhase;
+  sum.response += s.response;
+  sum.failsafe += s.failsafe;
+  sum.total += s.total;
+  sum.candidatePairs += s.candidatePairs;
+  for (int k = 0; k < 3; ++k) sum.queries[k] += s.queries[k];
+  sum.collisions += s.collisions;
+  sum.impulsePasses += s.impulsePasses;
+}
+
+}  // namespace
+
+const char* outcomeName(Outcome outcome) {
+  switch (outcome) {
+    case Outcome::Ok: return "ok";
+    case Outcome::NonFinite: return "non-finite";
+    case Outcome::EnergyBlowUp: return "energy-blow-up";
+    case Outcome::SolverFailure: return "solver-failure";
+    case Outcome::Error: return "error";
+  }
+  return "error";
+}
+
+double mechanicalEnergy(const Scene& scene, const State& state) {
+  return kineticEnergy(scene, state.v) + potentialEnergy(scene, state.x, state.v);
+}
+
+RunResult runScene(const SceneFile& file, const RunOptions& options, const StepVisitor& visit) {
+  RunResult r;
+  const Scene& scene = file.scene;
+  r.final = file.initial;
+  std::unique_ptr<Simulator> sim;
+  if (Status s = Simulator::create(scene, {}, sim); !s) {
+    r.outcome = Outcome::Error;
+    r.message = s.message();
+    return r;
+  }
+  sim->setTiming(options.phaseTimings);
+
+  const double kinetic0 = kineticEnergy(scene, r.final.v);
+  const double potential0 = potentialEnergy(scene, r.final.x, r.final.v);
+  r.energy0 = r.energyEnd = kinetic0 + potential0;
+  const double scale = std::max({std::abs(r.energy0), kinetic0, std::abs(potential0)});
+  const double allowed = options.energyGrowthLimit * scale;
+  if (options.measureOverlap) r.overlap.add(measureOverlap(scene, r.final.x));
+
+  const long steps = options.steps >= 0 ? options.steps : scene.numSteps();
+  for (long k = 0; k < steps; ++k) {
+    const Clock::time_point begin = Clock::now();
+    const Status s = sim->step(scene, r.final);
+    r.stepSeconds += seconds(begin, Clock::now());
+    if (!s) {
+      r.outcome = classify(s.message());
+      r.message = s.message();
+      return r;
+    }
+    ++r.steps;
+    const StepStats& st = sim->stats();
+    addPhases(r.phases, st);
+    r.collisions += std::max<long>(static_cast<long>(sim->log().impulses.size()), st.collisions);
+    r.impulsePasses += st.impulsePasses;
+    if (st.failsafeUsed) {
+      ++r.failsafeSteps;
+      r.zoneSum += st.zones;
+    }
+    r.largestZone = std::max(r.largestZone, st.largestZone);
+    if (options.measureOverlap) r.overlap.add(measureOverlap(scene, r.final.x));
+    if (options.checkEnergy && scale > 0) {
+      r.energyEnd = mechanicalEnergy(scene, r.final);
+      if (!(std::abs(r.energyEnd - r.energy0) <= allowed)) {  // also catches NaN
+        r.outcome = Outcome::EnergyBlowUp;
+        r.message = "step " + std::to_string(r.final.step) + ": energy " + std::to_string(r.energyEnd) +
+                    " departs from its start " + std::to_string(r.energy0) + " by more than " +
+                    std::to_string(options.energyGrowthLimit) + " times its scale";
+        return r;
+      }
+    }
+    if (visit) visit(scene, r.final);
+  }
+  if (!options.checkEnergy) r.energyEnd = mechanicalEnergy(scene, r.final);
+  return r;
+}
+
+double timeRun(const SceneFile& file, long steps, int maxRepeats, double budgetSeconds) {
+  std::unique_ptr<Simulator> sim;
+  if (!Simulator::create(file.scene, {}, sim)) return std::numeric_limits<double>::quiet_NaN();
+  double best = std::numeric_limits<double>::infinity(), spent = 0;
+  for (int repeat = 0; repeat < std::max(1, maxRepeats) && (repeat == 0 || spent < budgetSeconds); ++repeat) {
+    State state = file.initial;
+    const Clock::time_point begin = Clock::now();
+    for (long k = 0; k < steps; ++k)
+      if (!sim->step(file.scene, state)) return std::numeric_limits<double>::quiet_NaN();
+    const double t = seconds(begin, Clock::now());
+    best = std::min(best, t);
+    spent += t;
+  }
+  return best;
+}
+
+}  // namespace fosssim::study
