@@ -10,15 +10,6 @@ namespace {
 /// Violations printed per step; the rest are counted.
 constexpr size_t kReportedPerStep = 5;
 
-const char* pairName(PairKind kind) {
-  switch (kind) {
-    case PairKind::ParticleParticle: return "particle-particle";
-    case PairKind::ParticleEdge: return "particle-edge";
-    case PairKind::ParticleHalfPlane: return "particle-half-plane";
-  }
-  return "?";
-}
-
 }  // namespace
 
 Status VerifyOutput::afterStep(const SceneFile& file, const State& state, const CollisionLog&) {
@@ -35,7 +26,7 @@ Status VerifyOutput::afterStep(const SceneFile& file, const State& state, const 
   ++stepsWithViolations_;
   for (size_t k = 0; k < found.size() && k < kReportedPerStep; ++k)
     std::fprintf(stderr, "verify: step %ld: %s pair (%d, %d) still collides at %.6g of the step\n", state.step,
-                 pairName(found[k].kind), found[k].i, found[k].j, found[k].tau);
+                 pairKindName(found[k].kind), found[k].i, found[k].j, found[k].tau);
   if (found.size() > kReportedPerStep)
     std::fprintf(stderr, "verify: step %ld: ... and %zu more\n", state.step, found.size() - kReportedPerStep);
   return Status::ok();

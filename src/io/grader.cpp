@@ -20,18 +20,9 @@ std::string listOf(const double* c, int n) {
   return s.str();
 }
 
-const char* kindName(PairKind kind) {
-  switch (kind) {
-    case PairKind::ParticleParticle: return "particle-particle";
-    case PairKind::ParticleEdge: return "particle-edge";
-    case PairKind::ParticleHalfPlane: return "particle-half-plane";
-  }
-  return "?";
-}
-
 std::string describe(const Impulse& im) {
   std::ostringstream s;
-  s << kindName(im.kind) << " (" << im.i << ", " << im.j << ") normal (" << im.n.x() << ", " << im.n.y() << ")";
+  s << pairKindName(im.kind) << " (" << im.i << ", " << im.j << ") normal (" << im.n.x() << ", " << im.n.y() << ")";
   return s.str();
 }
 

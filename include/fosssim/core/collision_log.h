@@ -10,6 +10,16 @@ namespace fosssim {
 
 enum class PairKind : int { ParticleParticle = 0, ParticleEdge = 1, ParticleHalfPlane = 2 };
 
+/// "particle-particle", "particle-edge" or "particle-half-plane", for messages.
+inline const char* pairKindName(PairKind kind) {
+  switch (kind) {
+    case PairKind::ParticleParticle: return "particle-particle";
+    case PairKind::ParticleEdge: return "particle-edge";
+    case PairKind::ParticleHalfPlane: return "particle-half-plane";
+  }
+  return "unknown pair kind";
+}
+
 /// One collision response. For particle-edge and particle-half-plane, j is the edge or
 /// half-plane index.
 struct Impulse {
