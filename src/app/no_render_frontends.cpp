@@ -1,30 +1,11 @@
 // Frontends of a build without the renderer (FOSSSIM_RENDER=OFF): no window, no PNG or movie;
 // -m still writes SVG frames, which need no OpenGL (fosssim_picture).
 #include "frontends.h"
+#include "picture_outputs.h"
 
 #include "fosssim/render/frame_outputs.h"
 
 namespace fosssim::app {
-namespace {
-
-/// Forwards run events to the SVG frames.
-class PictureOutputs final : public RunObserver {
- public:
-  explicit PictureOutputs(render::FrameOutputs outputs) : outputs_(std::move(outputs)) {}
-  Status start(const SceneFile& file, const State& initial, const RecordLayout&) override {
-    outputs_.start(file, initial);
-    return Status::ok();
-  }
-  Status afterStep(const SceneFile& file, const State& state, const CollisionLog&) override {
-    return outputs_.afterStep(file, state);
-  }
-  Status finish() override { return outputs_.finish(); }
-
- private:
-  render::FrameOutputs outputs_;
-};
-
-}  // namespace
 
 Status addPictureOutputs(const Options& options, const SceneFile&, ObserverList& observers) {
   if (options.pngs || !options.movie.empty())

@@ -1,6 +1,7 @@
 // Frontends of the build with the renderer: -g PNG frames and --movie (OSMesa), -m SVG, and the
 // GLUT window for -d 1. The drawing itself is in fosssim_render; this only wires options to it.
 #include "frontends.h"
+#include "picture_outputs.h"
 
 #include "fosssim/render/frame_outputs.h"
 #include "fosssim/render/glut_window.h"
@@ -10,26 +11,6 @@
 #include <filesystem>
 
 namespace fosssim::app {
-namespace {
-
-/// Forwards run events to the picture outputs.
-class PictureOutputs final : public RunObserver {
- public:
-  explicit PictureOutputs(render::FrameOutputs outputs) : outputs_(std::move(outputs)) {}
-  Status start(const SceneFile& file, const State& initial, const RecordLayout&) override {
-    outputs_.start(file, initial);
-    return Status::ok();
-  }
-  Status afterStep(const SceneFile& file, const State& state, const CollisionLog&) override {
-    return outputs_.afterStep(file, state);
-  }
-  Status finish() override { return outputs_.finish(); }
-
- private:
-  render::FrameOutputs outputs_;
-};
-
-}  // namespace
 
 Status addPictureOutputs(const Options& options, const SceneFile&, ObserverList& observers) {
   render::FrameOutputs outputs(options.frameWidth, options.frameHeight, options.frameEvery);
