@@ -47,6 +47,10 @@ void HybridHandler::failsafe(const Scene& scene, const State& start, State& stat
   // least once, even when the first detection found nothing (its log shows the second query).
   // Zones only grow, so this ends after at most N + (number of zones marked immovable) rounds.
   do {
+    // Each round fits the rigid motions to the positions the previous round left (zones that did
+    // not change are refitted to their own rigid motion): the reference's sequencing, which
+    // replaying its trajectories reproduces bit for bit, unlike fitting every round to the
+    // integrator's prediction.
     predicted_ = state.x;
     zones_.moveRigidly(scene, start.x, predicted_, state.x);
   } while (grow(state.x));
