@@ -41,7 +41,7 @@ Status Simulator::step(const Scene& scene, State& state, StepObserver* observer)
   // 2-3. Detect and respond: the handler turns the prediction into a collision-free end state.
   log_.clear();
   if (handler_) {
-    StepContext ctx{dt, &log_, observer, &stats_};
+    StepContext ctx{dt, &log_, observer, &stats_, timing_};
     if (Status s = handler_->handle(scene, start_, state, ctx); !s) return failure(s.message());
   }
 

@@ -34,6 +34,7 @@ struct StepContext {
   CollisionLog* log = nullptr;          ///< never null; polynomials only if log->polynomials.enabled()
   StepObserver* observer = nullptr;     ///< may be null
   StepStats* stats = nullptr;           ///< never null; handlers add their timings and counts
+  bool timing = false;                  ///< measure phase times into *stats
 };
 
 class CollisionHandler {

@@ -38,6 +38,7 @@ class HybridHandler final : public CollisionHandler {
   HybridHandler(const CollisionSettings& settings, const HandlerOptions& options)
       : cor_(settings.cor), maxIterations_(settings.maxIterations), detector_(quinticForm(options)) {}
   Status handle(const Scene& scene, const State& start, State& state, StepContext& ctx) override;
+  int zoneOf(int particle) const override { return zones_.zoneOf(particle); }
 
  private:
   /// Iterative impulses; true when a detection pass found nothing.

@@ -5,6 +5,7 @@
 
 #include "fosssim/core/collision_log.h"
 #include "fosssim/core/scene.h"
+#include "fosssim/core/step_stats.h"
 #include "fosssim/math/ccd.h"
 
 namespace fosssim {
@@ -23,6 +24,9 @@ class ContinuousDetector {
  public:
   explicit ContinuousDetector(math::QuinticForm form) : form_(form) {}
 
+  /// Where forEachCollision counts its queries (may be null).
+  void setStats(StepStats* stats) { stats_ = stats; }
+
   /// Each returns true and fills `hit` when the pair collides during the step; when `log` is
   /// non-null (and enabled) the pair's polynomials are appended to it in the reference's order.
   bool particleParticle(const Scene& scene, const VecX& qs, const VecX& qe, int i, int j, Collision& hit,
@@ -40,6 +44,14 @@ class ContinuousDetector {
     Collision hit;
     const int n = scene.numParticles();
     const int edges = static_cast<int>(scene.edges.size()), planes = static_cast<int>(scene.halfplanes.size());
+    if (stats_) {
+      const long incident = 2L * edges;  // particle-edge pairs skipped: the particle is an endpoint
+      stats_->queries[0] += static_cast<long>(n) * (n - 1) / 2;
+      stats_->queries[1] += static_cast<long>(n) * edges - incident;
+      stats_->queries[2] += static_cast<long>(n) * planes;
+      stats_->candidatePairs += static_cast<long>(n) * (n - 1) / 2 + static_cast<long>(n) * edges - incident +
+                                static_cast<long>(n) * planes;
+    }
     for (int i = 0; i < n; ++i) {
       for (int j = i + 1; j < n; ++j)
         if (particleParticle(scene, qs, qe, i, j, hit, log)) onHit(hit);
@@ -52,6 +64,7 @@ class ContinuousDetector {
 
  private:
   math::QuinticForm form_;
+  StepStats* stats_ = nullptr;
 };
 
 }  // namespace fosssim

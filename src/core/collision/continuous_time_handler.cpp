@@ -8,7 +8,10 @@
 namespace fosssim {
 
 Status ContinuousTimeHandler::handle(const Scene& scene, const State& start, State& state, StepContext& ctx) {
+  detector_.setStats(ctx.stats);
+  const StepTimer timer(ctx.timing, ctx.stats->narrowPhase);  // responses are interleaved: counted here too
   detector_.forEachCollision(scene, start.x, state.x, &ctx.log->polynomials, [&](const Collision& c) {
+    ++ctx.stats->collisions;
     ctx.log->impulses.push_back(Impulse{c.kind, c.i, c.j, c.n, c.tau});
     applyWithDisplacement(collisionResponse(scene, c, cor_, start.x, state.x, ctx.dt), ctx.dt, state.x, state.v);
   });

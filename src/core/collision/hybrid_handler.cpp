@@ -12,18 +12,31 @@
 namespace fosssim {
 
 Status HybridHandler::handle(const Scene& scene, const State& start, State& state, StepContext& ctx) {
+  detector_.setStats(ctx.stats);
+  zones_.reset(scene.numParticles());
   const bool resolved = impulsePasses(scene, start, state, ctx);
   if (ctx.observer) ctx.observer->midStep(*ctx.log, state);
-  if (!resolved) failsafe(scene, start, state, ctx);
+  if (!resolved) {
+    const StepTimer timer(ctx.timing, ctx.stats->failsafe);
+    failsafe(scene, start, state, ctx);
+    ctx.stats->failsafeUsed = true;
+    zones_.sizes(ctx.stats->zones, ctx.stats->largestZone);
+  }
   return Status::ok();
 }
 
 bool HybridHandler::impulsePasses(const Scene& scene, const State& start, State& state, StepContext& ctx) {
   for (int pass = 0; pass < maxIterations_; ++pass) {
     collisions_.clear();
-    detector_.forEachCollision(scene, start.x, state.x, &ctx.log->polynomials,
-                               [&](const Collision& c) { collisions_.push_back(c); });
+    {
+      const StepTimer timer(ctx.timing, ctx.stats->narrowPhase);
+      detector_.forEachCollision(scene, start.x, state.x, &ctx.log->polynomials,
+                                 [&](const Collision& c) { collisions_.push_back(c); });
+    }
+    ++ctx.stats->impulsePasses;
+    ctx.stats->collisions += static_cast<long>(collisions_.size());
     if (collisions_.empty()) return true;
+    const StepTimer timer(ctx.timing, ctx.stats->response);
     changes_.clear();
     for (const Collision& c : collisions_)
       changes_.push_back(collisionResponse(scene, c, cor_, start.x, state.x, ctx.dt));
@@ -34,7 +47,6 @@ bool HybridHandler::impulsePasses(const Scene& scene, const State& start, State&
 
 void HybridHandler::failsafe(const Scene& scene, const State& start, State& state, StepContext& ctx) {
   predicted_ = state.x;
-  zones_.reset(scene.numParticles());
   PolynomialLog* log = &ctx.log->polynomials;
   auto grow = [&](const VecX& end) {
     bool changed = false;

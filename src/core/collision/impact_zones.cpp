@@ -66,10 +66,21 @@ bool ImpactZones::add(const Scene& scene, const Collision& c) {
   return changed;
 }
 
-int ImpactZones::zoneCount() {
-  int count = 0;
-  for (int p : members_) count += find(p) == p;
-  return count;
+void ImpactZones::sizes(int& zones, int& largest) {
+  zones = largest = 0;
+  for (int p : members_) slot_[find(p)] = 0;
+  for (int p : members_) ++slot_[find(p)];
+  for (int p : members_) {
+    const int r = find(p);
+    if (slot_[r] > 0) ++zones, largest = std::max(largest, slot_[r]), slot_[r] = 0;
+  }
+  for (int p : members_) slot_[p] = -1;
+}
+
+int ImpactZones::zoneOf(int p) const {
+  if (p < 0 || p >= static_cast<int>(parent_.size()) || parent_[p] < 0) return -1;
+  while (parent_[p] != p) p = parent_[p];
+  return p;
 }
 
 void ImpactZones::moveRigidly(const Scene& scene, const VecX& start, const VecX& predicted, VecX& x) {

@@ -25,7 +25,10 @@ class ImpactZones {
   void moveRigidly(const Scene& scene, const VecX& start, const VecX& predicted, VecX& x);
   /// The particles in some zone (in the order they joined).
   const std::vector<int>& members() const { return members_; }
-  int zoneCount();
+  /// Number of zones and the size of the largest.
+  void sizes(int& zones, int& largest);
+  /// The zone (its representative particle) holding particle p, or -1.
+  int zoneOf(int p) const;
 
  private:
   int find(int p);
