@@ -3,6 +3,7 @@
 // tunnelling through thin edges, chains that need several impulse passes, piles that need the
 // rigid-zone failsafe, and mirror symmetry.
 #include "fosssim/core/simulator.h"
+#include "fosssim/core/verify.h"
 #include "test_scenes.h"
 
 #include <gtest/gtest.h>
@@ -132,6 +133,31 @@ TEST(CollisionHandlers, ChainNeedsSeveralImpulsePasses) {
   for (int i = 0; i < 5; ++i)
     for (int j = i + 1; j < 5; ++j)
       EXPECT_GE((at(s.state.x, j) - at(s.state.x, i)).norm(), 0.2 - 1e-6) << i << " " << j;
+}
+
+// A dense pile dropped into a V with a single impulse pass: impulses alone cannot resolve it, so
+// the rigid-zone failsafe must act, and after every step nothing collides outside a zone.
+TEST(CollisionHandlers, PileNeedsTheFailsafeAndEndsCollisionFree) {
+  TestScene s = collisionSetup("hybrid", 0.0, 0.02);
+  s.scene.collision.maxIterations = 1;
+  for (int row = 0; row < 4; ++row)
+    for (int col = 0; col < 5; ++col)
+      addBody(s, 1.0 + 0.1 * col, Vec2(-0.5 + 0.21 * col + 0.05 * row, 0.6 + 0.21 * row), Vec2(0, -3), 0.1);
+  s.scene.halfplanes.push_back(HalfPlane{Vec2(0, 0), Vec2(1, 1)});
+  s.scene.halfplanes.push_back(HalfPlane{Vec2(0, 0), Vec2(-1, 1)});
+  s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, -9.81)));
+  auto sim = makeSimulator(s);
+  int failsafeSteps = 0, largestZone = 0;
+  for (int k = 0; k < 60; ++k) {
+    ASSERT_TRUE(sim->step(s.scene, s.state).isOk());
+    failsafeSteps += sim->stats().failsafeUsed;
+    largestZone = std::max(largestZone, sim->stats().largestZone);
+    const auto left = unresolvedCollisions(s.scene, sim->lastStart().x, s.state.x,
+                                           [&](int p) { return sim->zoneOf(p); });
+    ASSERT_TRUE(left.empty()) << "step " << k + 1 << ": pair (" << left[0].i << ", " << left[0].j << ")";
+  }
+  EXPECT_GT(failsafeSteps, 0);
+  EXPECT_GE(largestZone, 2);
 }
 
 // Mirror-symmetric scene, simultaneous impulses: the result stays mirror-symmetric.
