@@ -248,6 +248,11 @@ std::vector<Method> collisionMethods() {
   std::vector<Method> out;
   for (const char* type : {"simple", "continuous-time", "hybrid"})
     out.push_back(Method{type, integrator, CollisionChoice{type}});
+  // The hybrid handler without its penalty layer (k = 0 still adds the force, at no strength):
+  // shows what the default layer (k = 10, thickness 0.1) does to accuracy.
+  CollisionChoice bare{"hybrid"};
+  bare.k = 0;
+  out.push_back(Method{"hybrid k=0", integrator, bare});
   for (double k : {1e2, 1e4, 1e6}) {
     CollisionChoice c{"penalty"};
     c.k = k;

@@ -19,8 +19,8 @@ struct StudyOptions {
   std::string outDir = ".";
   bool quick = false;          ///< a tiny matrix (tests, smoke runs): same code, fewer cells
   std::ostream* log = nullptr; ///< progress lines, may be null
-  double timingBudget = 0.15;  ///< seconds of repeated runs per timed cell (minimum taken)
-  int timingRepeats = 5;
+  double timingBudget = 0.3;   ///< seconds of repeated runs per timed cell (minimum taken)
+  int timingRepeats = 7;
 };
 
 /// One cell of the accuracy matrix.

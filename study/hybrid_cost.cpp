@@ -5,17 +5,30 @@
 #include "experiments.h"
 #include "pile.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace fosssim::study {
+namespace {
+
+/// Mean height of the disks' centres: a settled pile sits low; a frozen one stays up.
+double meanHeight(const State& s) {
+  double sum = 0;
+  for (int i = 0; i < s.numParticles(); ++i) sum += at(s.x, i).y();
+  return sum / std::max(1, s.numParticles());
+}
+
+}  // namespace
 
 Status runHybridCost(const StudyOptions& options) {
   CsvWriter csv;
   if (Status s = csv.open(options.outDir + "/hybrid.csv",
                           {"method", "collision", "maxiters", "particles", "dt", "steps", "outcome", "wall_per_sim_s",
                            "us_per_step", "integrate_us", "narrow_us", "response_us", "failsafe_us",
-                           "failsafe_steps", "failsafe_fraction", "mean_zones", "largest_zone", "mean_passes",
-                           "collisions_per_step", "overlap_steps", "max_overlap", "kinetic_end", "message"});
+                           "failsafe_steps", "failsafe_fraction", "mean_zones", "largest_zone", "mean_failsafe_particles",
+                           "most_failsafe_particles", "mean_passes",
+                           "collisions_per_step", "overlap_steps", "max_overlap", "kinetic_end", "mean_height_start",
+                           "mean_height_end", "message"});
       !s)
     return s;
   const double dt = 0.002;
@@ -50,10 +63,13 @@ Status runHybridCost(const StudyOptions& options) {
         << r.stepSeconds * perStep << r.phases.integrate * perStep << r.phases.narrowPhase * perStep
         << r.phases.response * perStep << r.phases.failsafe * perStep << r.failsafeSteps
         << (hybrid ? r.failsafeSteps / steps : kNotApplicable)
-        << (r.failsafeSteps ? static_cast<double>(r.zoneSum) / r.failsafeSteps : kNotApplicable)
-        << static_cast<long>(r.largestZone) << (hybrid ? r.impulsePasses / steps : kNotApplicable)
+        // Zone counts and passes come from the handler's StepStats; zero means it does not count them.
+        << (r.zoneSum > 0 ? static_cast<double>(r.zoneSum) / r.failsafeSteps : kNotApplicable)
+        << (r.largestZone > 0 ? static_cast<double>(r.largestZone) : kNotApplicable)
+        << (r.failsafeSteps ? static_cast<double>(r.failsafeParticles) / r.failsafeSteps : kNotApplicable)
+        << static_cast<long>(r.mostFailsafeParticles) << (hybrid && r.impulsePasses > 0 ? r.impulsePasses / steps : kNotApplicable)
         << r.collisions / steps << r.overlap.stepsWithOverlap << r.overlap.deepest
-        << kineticEnergy(file.scene, r.final.v) << r.message;
+        << kineticEnergy(file.scene, r.final.v) << meanHeight(file.initial) << meanHeight(r.final) << r.message;
     if (Status s = csv.endRow(); !s) return s;
     if (options.log) *options.log << "." << std::flush;
   }

@@ -58,8 +58,9 @@ std::vector<Problem> collisionProblems(bool quick);
 
 /// The four integrators the study compares (aliases left out).
 std::vector<Method> integratorMethods();
-/// The collision methods the study compares: simple, continuous-time, hybrid (defaults), and
-/// penalty at k = 1e2 (the default), 1e4, 1e6, all with symplectic Euler.
+/// The collision methods the study compares: simple, continuous-time, hybrid (defaults), hybrid
+/// with k = 0 (no penalty layer), and penalty at k = 1e2 (the default), 1e4, 1e6, all with
+/// symplectic Euler.
 std::vector<Method> collisionMethods();
 
 /// Total momentum sum m_i v_i, and the scale sum m_i |v_i| that makes its error relative.

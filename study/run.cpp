@@ -34,6 +34,23 @@ void addPhases(StepStats& sum, const StepStats& s) {
   sum.impulsePasses += s.impulsePasses;
 }
 
+/// Sees the hybrid handler's state between its impulse passes and its failsafe (the trajectory
+/// files' mid-step record). A particle that moves after that point was moved by the failsafe:
+/// this tells failsafe use and zone membership from the outside, whatever the handler counts.
+class FailsafeWatch final : public StepObserver {
+ public:
+  void midStep(const CollisionLog&, State& state) override { mid_ = state.x; }
+  /// Particles whose end position differs from the mid-step one.
+  int moved(const State& end) const {
+    int n = 0;
+    for (int i = 0; i < end.numParticles(); ++i) n += at(end.x, i) != at(mid_, i);
+    return n;
+  }
+
+ private:
+  VecX mid_;
+};
+
 }  // namespace
 
 const char* outcomeName(Outcome outcome) {
@@ -70,10 +87,12 @@ RunResult runScene(const SceneFile& file, const RunOptions& options, const StepV
   const double allowed = options.energyGrowthLimit * scale;
   if (options.measureOverlap) r.overlap.add(measureOverlap(scene, r.final.x));
 
+  const bool hybrid = scene.collision.type == "hybrid";
+  FailsafeWatch watch;
   const long steps = options.steps >= 0 ? options.steps : scene.numSteps();
   for (long k = 0; k < steps; ++k) {
     const Clock::time_point begin = Clock::now();
-    const Status s = sim->step(scene, r.final);
+    const Status s = sim->step(scene, r.final, hybrid ? &watch : nullptr);
     r.stepSeconds += seconds(begin, Clock::now());
     if (!s) {
       r.outcome = classify(s.message());
@@ -85,9 +104,12 @@ RunResult runScene(const SceneFile& file, const RunOptions& options, const StepV
     addPhases(r.phases, st);
     r.collisions += std::max<long>(static_cast<long>(sim->log().impulses.size()), st.collisions);
     r.impulsePasses += st.impulsePasses;
-    if (st.failsafeUsed) {
+    const int moved = hybrid ? watch.moved(r.final) : 0;
+    if (st.failsafeUsed || moved > 0) {
       ++r.failsafeSteps;
       r.zoneSum += st.zones;
+      r.failsafeParticles += moved;
+      r.mostFailsafeParticles = std::max(r.mostFailsafeParticles, moved);
     }
     r.largestZone = std::max(r.largestZone, st.largestZone);
     if (options.measureOverlap) r.overlap.add(measureOverlap(scene, r.final.x));

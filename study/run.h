@@ -44,6 +44,8 @@ struct RunResult {
   double stepSeconds = 0;   ///< wall time spent inside Simulator::step (clock read around each step)
   long collisions = 0;      ///< collisions handled: logged impulses, or the handler's own count
   long failsafeSteps = 0;   ///< hybrid: steps whose impulse passes did not resolve every collision
+  long failsafeParticles = 0;     ///< hybrid: particles the failsafe moved, summed over steps
+  int mostFailsafeParticles = 0;  ///< hybrid: most particles the failsafe moved in one step
   long impulsePasses = 0;   ///< hybrid: detection passes, summed over steps
   long zoneSum = 0;         ///< hybrid: impact zones, summed over failsafe steps
   int largestZone = 0;      ///< hybrid: particles in the largest impact zone of the run
