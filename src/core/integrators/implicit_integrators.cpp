@@ -25,9 +25,8 @@ constexpr int kMaxNewtonIterations = 100;
 
 Status ImplicitSystem::assemble(const Scene& scene, const VecX& x, const VecX& v, double h,
                                 const VecX& dvCurrent) {
-  const Eigen::Index n = x.size();
   // Right-hand side h F - M dv.
-  rhs_.setZero(n);
+  rhs_.setZero(x.size());
   accumulateGradient(scene, x, v, rhs_);
   rhs_ = -h * rhs_ - scene.mass.cwiseProduct(dvCurrent);
 
@@ -37,7 +36,36 @@ Status ImplicitSystem::assemble(const Scene& scene, const VecX& x, const VecX& v
     force->addJacobianX(scene, x, v, jacobianX_);
     force->addJacobianV(scene, x, v, jacobianV_);
   }
-  // Fixed particles' rows and columns become the identity (their velocity change is zero).
+  // Fixed particles' velocity changes are zero: identity rows, zero right-hand side.
+  for (int i = 0; i < scene.numParticles(); ++i)
+    if (scene.isFixed(i)) at(rhs_, i).setZero();
+  dense_ = x.size() <= kMaxDenseDofs;
+  return dense_ ? assembleDense(scene, h) : assembleSparse(scene, h);
+}
+
+Status ImplicitSystem::assembleDense(const Scene& scene, double h) {
+  const Eigen::Index n = rhs_.size();
+  denseMatrix_.setZero(n, n);
+  denseDamping_.setZero(n, n);
+  for (const auto& t : jacobianX_) denseMatrix_(t.row(), t.col()) += t.value();
+  for (const auto& t : jacobianV_) denseDamping_(t.row(), t.col()) += t.value();
+  denseMatrix_ *= h * h;
+  denseMatrix_ += h * denseDamping_;
+  denseMatrix_.diagonal() += scene.mass;
+  for (int i = 0; i < scene.numParticles(); ++i) {
+    if (!scene.isFixed(i)) continue;
+    denseMatrix_.middleRows(2 * i, 2).setZero();
+    denseMatrix_.middleCols(2 * i, 2).setZero();
+    denseMatrix_.block<2, 2>(2 * i, 2 * i).setIdentity();
+  }
+  denseLu_.compute(denseMatrix_);
+  if (!denseLu_.isInvertible())
+    return Status::error("the implicit system (M - h dF/dv - h^2 dF/dx) is singular");
+  return Status::ok();
+}
+
+Status ImplicitSystem::assembleSparse(const Scene& scene, double h) {
+  const Eigen::Index n = rhs_.size();
   auto fixedDof = [&](Eigen::Index r) { return scene.isFixed(static_cast<int>(r / 2)); };
   entries_.clear();
   entries_.reserve(jacobianX_.size() + jacobianV_.size() + n);
@@ -45,14 +73,7 @@ Status ImplicitSystem::assemble(const Scene& scene, const VecX& x, const VecX& v
     if (!fixedDof(t.row()) && !fixedDof(t.col())) entries_.emplace_back(t.row(), t.col(), h * h * t.value());
   for (const auto& t : jacobianV_)
     if (!fixedDof(t.row()) && !fixedDof(t.col())) entries_.emplace_back(t.row(), t.col(), h * t.value());
-  for (Eigen::Index r = 0; r < n; ++r) {
-    if (fixedDof(r)) {
-      entries_.emplace_back(r, r, 1.0);
-      rhs_[r] = 0.0;
-    } else {
-      entries_.emplace_back(r, r, scene.mass[r]);
-    }
-  }
+  for (Eigen::Index r = 0; r < n; ++r) entries_.emplace_back(r, r, fixedDof(r) ? 1.0 : scene.mass[r]);
   matrix_.resize(n, n);
   matrix_.setFromTriplets(entries_.begin(), entries_.end());
   lu_.compute(matrix_);
@@ -62,7 +83,7 @@ Status ImplicitSystem::assemble(const Scene& scene, const VecX& x, const VecX& v
 }
 
 const VecX& ImplicitSystem::solve() {
-  delta_ = lu_.solve(rhs_);
+  delta_ = dense_ ? VecX(denseLu_.solve(rhs_)) : VecX(lu_.solve(rhs_));
   return delta_;
 }
 

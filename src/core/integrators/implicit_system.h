@@ -2,10 +2,16 @@
 //   (M + h dE/dv + h^2 d2E/dx2) delta = h F - M dv_current
 // (that is M - h dF/dv - h^2 dF/dx on the left), assembled at a given (x, v) with fixed
 // particles' rows and columns replaced by the identity and a zero right-hand side.
+//
+// Small systems are solved densely, assembled and factored exactly as the course's reference does
+// (sum the Hessians, scale by h^2, add h times the damping Jacobians, add M; full-pivoting LU), so
+// implicit scenes reproduce its trajectories bit for bit. Larger ones, where a dense O(n^3) solve
+// would be unusable, use a sparse LU of the same matrix.
 #pragma once
 
 #include "fosssim/core/integrator.h"
 
+#include <Eigen/Dense>
 #include <Eigen/SparseLU>
 
 namespace fosssim {
@@ -18,8 +24,17 @@ class ImplicitSystem {
   /// Solves for delta with the last assembled system.
   const VecX& solve();
 
+  /// Systems with at most this many degrees of freedom (2 per particle) are solved densely.
+  static constexpr Eigen::Index kMaxDenseDofs = 256;
+
  private:
+  Status assembleDense(const Scene& scene, double h);
+  Status assembleSparse(const Scene& scene, double h);
+
   Triplets jacobianX_, jacobianV_, entries_;
+  bool dense_ = true;
+  Eigen::MatrixXd denseMatrix_, denseDamping_;
+  Eigen::FullPivLU<Eigen::MatrixXd> denseLu_;
   SparseMat matrix_;
   Eigen::SparseLU<SparseMat> lu_;
   VecX rhs_, delta_;
