@@ -22,6 +22,7 @@ import study_data as sd  # noqa: E402
 
 plt.rcParams.update({
     "svg.fonttype": "none",  # text stays text: small, searchable SVG files
+    "svg.hashsalt": "fosssim-study",  # the same ids every time: regenerated files differ only in data
     "font.size": 9,
     "axes.titlesize": 10,
     "legend.fontsize": 8,
@@ -52,7 +53,9 @@ def style(method):
 
 def save(fig, out_dir, name):
     for ext in ("png", "svg"):
-        fig.savefig(os.path.join(out_dir, f"{name}.{ext}"), dpi=80, bbox_inches="tight")
+        # No creation date in the files, so that a regeneration with the same data changes nothing.
+        metadata = {"Date": None} if ext == "svg" else {"Software": None}
+        fig.savefig(os.path.join(out_dir, f"{name}.{ext}"), dpi=80, bbox_inches="tight", metadata=metadata)
     plt.close(fig)
 
 
@@ -190,7 +193,9 @@ def chart_robustness(data_dir):
         for r in rows:
             if r["method"] == m:
                 grid[speeds.index(r["speed"])][dts.index(r["dt"])] = OUTCOMES.index(r["outcome"])
-        ax.pcolormesh(edges(dts), edges(speeds), grid, cmap=cmap, vmin=-0.5, vmax=3.5, edgecolors="white", lw=0.3)
+        # Rasterised in the SVG too: a few hundred cells as vector paths would make it large.
+        ax.pcolormesh(edges(dts), edges(speeds), grid, cmap=cmap, vmin=-0.5, vmax=3.5, edgecolors="white", lw=0.3,
+                      rasterized=True)
         band = 0.06  # the thickness of the contact band: 2 (disk radius + edge radius)
         ax.plot(dts, [band / d for d in dts], color="black", lw=1, ls="--")
         ax.set_xscale("log")
@@ -272,7 +277,7 @@ def chart_hybrid(data_dir):
     hyb = sorted([r for r in rows if r["collision"] == "hybrid"], key=lambda r: r["maxiters"])
     others = [r for r in rows if r["collision"] != "hybrid"]
     x = [r["maxiters"] for r in hyb]
-    fig, axes = plt.subplots(1, 3, figsize=(15, 4.6))
+    fig, axes = plt.subplots(1, 3, figsize=(15, 5.6))
     ax = axes[0]
     ax.plot(x, [100 * r["failsafe_fraction"] for r in hyb], marker="o", color="#2ca02c", label="steps that used the failsafe [%]")
     ax.set_ylabel("steps that used the failsafe [%]")
@@ -285,9 +290,10 @@ def chart_hybrid(data_dir):
         ax2.set_ylabel("impulse passes per step (mean)")
         ax2.grid(False)
         lines = ax.get_legend_handles_labels()[0] + ax2.get_legend_handles_labels()[0]
-        ax.legend(lines, [ln.get_label() for ln in lines], loc="lower left")
+        ax.legend(lines, [ln.get_label() for ln in lines], loc="upper center", bbox_to_anchor=(0.5, -0.2),
+                  fontsize=7)
     else:
-        ax.legend(loc="lower left")
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), fontsize=7)
     ax = axes[1]
     ax.plot(x, [r["mean_failsafe_particles"] for r in hyb], marker="o", color="#2ca02c",
             label="disks in zones per failsafe step (mean)")
@@ -300,7 +306,7 @@ def chart_hybrid(data_dir):
     ax.set_ylim(0, hyb[0]["particles"] * 1.05)
     ax.set_ylabel("disks (or zones)")
     ax.set_title(f"Impact zones ({int(hyb[0]['particles'])} disks; in a zone = moved by the failsafe)")
-    ax.legend(loc="lower left", fontsize=7)
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=1, fontsize=7)
     ax = axes[2]
     ax.plot(x, [r["us_per_step"] for r in hyb], marker="o", color="black", label="hybrid: whole step")
     phases = [("integrate_us", "hybrid: integrator + forces"), ("narrow_us", "hybrid: narrow phase"),
@@ -313,9 +319,10 @@ def chart_hybrid(data_dir):
     ax.set_yscale("log")
     ax.set_ylabel("wall time per step [µs]")
     ax.set_title(f"Cost per step (dt = {hyb[0]['dt']:g} s)")
-    ax.legend(loc="center right", fontsize=7)
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2, fontsize=7)
     for ax in axes:
         ax.set_xscale("symlog", linthresh=1)
+        ax.set_xlim(-0.3, max(x) * 1.3)
         ax.set_xticks(x)
         ax.set_xticklabels([f"{int(v)}" for v in x])
         ax.set_xlabel("maxiters (impulse passes before the failsafe)")
@@ -352,7 +359,7 @@ def chart_profile(data_dir):
     ax.set_xlabel("share of the step's wall time [%] (the step's total per step on the right)")
     ax.grid(axis="y", visible=False)
     ax.legend(handles=[Patch(color=c, label=l) for _, l, c in PHASES], loc="upper center",
-              bbox_to_anchor=(0.45, -0.09 - 0.5 / len(rows)), ncol=4, fontsize=8)
+              bbox_to_anchor=(0.4, -0.06), ncol=3, fontsize=8)
     ax.set_title("Where a step's time goes, per scene (forces timed by wrapping them; the rest from StepStats)")
     save(fig, data_dir, "profile")
 

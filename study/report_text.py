@@ -1,0 +1,267 @@
+"""The words of docs/study.md around the generated tables and charts (report.py fills them in).
+
+What is said here was read off the charts of this study on the project's machine; the tables
+report.py puts between the paragraphs carry the numbers of the latest run.
+"""
+
+STABILITY_THEORY = {
+    "explicit-euler": "never stable: |1 + iωdt| > 1; energy x1e6 within the horizon at ω dt = 0.225",
+    "symplectic-euler": "stable for ω dt < 2",
+    "implicit-euler": "stable for every dt: |1/(1 - iωdt)| < 1",
+    "linearized-implicit-euler": "stable for every dt (the same as implicit Euler on a linear spring)",
+}
+
+INTRO = """\
+# The study: what each method costs, how wrong it is, and where it breaks
+
+FOSSSim offers four integrators and five ways of handling collisions. This study runs a matrix of
+methods and time steps on problems whose right answer is known without the simulator, and shows
+for each one the error, the wall time, and where it breaks. Everything here (the CSV files, the
+charts and this page) is made by one command:
+
+    scripts/study
+
+It builds `fosssim-study` (Release, in `build-study/`), runs every experiment into
+`docs/study/*.csv`, draws the charts with `study/charts.py` and writes this page with
+`study/report.py`. {elapsed}The program and its options are described in
+[study/README.md](../study/README.md).
+
+Time is wall time on the project's machine (2 shared cores). Every timed run is repeated and the
+least time kept (the run least disturbed by other work); even so, single numbers move by up to
+about 2x between regenerations. Ratios between methods of 10x and more are what to trust.
+"""
+
+METHODS = """\
+## What is compared
+
+- **Integrators** (accuracy and stability): explicit Euler, symplectic Euler, implicit Euler
+  (Newton's method until the update is below 1e-9, at most 100 iterations) and linearized implicit
+  Euler (one Newton step), as in the scene format.
+- **Collision methods** (with symplectic Euler; free flight is exact for every integrator):
+  `simple` (discrete, at the end of the step), `continuous-time` (every pair along its motion in
+  the step, one pass), `hybrid` with its defaults (maxiters 10 impulse passes, then rigid impact
+  zones, plus a penalty layer k = 10, thickness 0.1), `hybrid k=0` (the same without the penalty
+  layer's strength), and `penalty` at k = 1e2 (the default), 1e4 and 1e6 (thickness 0.01).
+- **Unstable** means: the simulator reported a non-finite state (its error names the step and the
+  particle), an implicit solve failed, or the mechanical energy moved by more than **1e6 times** its
+  starting scale (max of |E0|, kinetic and |potential|). A run is stopped there and reported, never
+  crashed on. 1e6 marks a blow-up, not an accuracy limit: a run can be wildly wrong (energy x1e4)
+  and still "ok"; its error then says so.
+"""
+
+PROBLEMS = """\
+## The problems and their exact answers
+
+Every answer below is derived from the physics, independently of the simulator; the tests in
+`tests/study/closed_forms_test.cpp` check each one against its own equation.
+
+| problem | set-up | exact answer | error measured |
+|---|---|---|---|
+| projectile | unit mass, x0 = 0, v0 = (3, 10) m/s, g = (0, −9.81) m/s², 2 s | x(t) = x0 + v0 t + g t²/2, v(t) = v0 + g t | position error at the end |
+| undamped spring | unit mass on a spring (k = 10 N/m, rest length 1 m) to a fixed anchor, stretched by 0.5 m, 10 s | u(t) = u0 cos ωt, ω = √(k/m) | position error at the end; energy error |
+| damped spring | the same with b = 1 N·s/m, 5 s | m u'' + b u' + k u = 0: γ = b/2m, ω_d = √(ω² − γ²), u = e^(−γt)(u0 cos ω_d t + (v0 + γu0)/ω_d sin ω_d t) (critical and over-damped forms in `closed_forms.cpp`) | position error; error of the energy against m u'²/2 + k u²/2 of the exact solution |
+| two-body orbit | masses 0.5 + 0.5, G = 1 (μ = G(m1 + m2) = 1), relative position (1, 0), relative velocity (0.25, 0.8), 2 periods | vis-viva: ε = v²/2 − μ/r, a = −μ/2ε = 0.770; h = r × v; e = √(1 + 2εh²/μ²) = 0.41; period T = 2π√(a³/μ) = 4.25 s; position from Kepler's equation M = E − e sin E, M = M0 + 2πt/T | separation error at the end; energy, angular momentum and momentum drift; period of the first revolution |
+| two disks | masses 1 and 2, radii 0.1, at (−0.5, 0) and (0.5, 0.1), velocities (1, 0) and (−1, 0), COR 1, 1 s | contact at the first root of \\|d + w t\\| = r1 + r2; along the contact normal n the approach speed u becomes −COR·u: J = (1 + COR) u / (1/m1 + 1/m2), v1 −= J n/m1, v2 += J n/m2; free flight before and after | position error at the end; contact-time error |
+| floor bounce, COR 0, 0.5, 1 | unit mass, radius 0.1, from (0, 1) at (1, 0) m/s under gravity onto the half-plane y ≥ 0, 0.8 s (one bounce) | contact when y = r: t_c = (v_y0 + √(v_y0² + 2g(y0 − r)))/g = 0.428 s; the normal velocity becomes −COR·v_y(t_c); free flight after (COR 0: rests on the floor) | position error at the end; contact-time error |
+| Newton's cradle | five unit disks (r = 0.1) in a row with 0.02 m gaps, the first at 1 m/s from 0.1 m away, 0.5 s | hard elastic disks pass the momentum on one contact at a time: each disk crosses its gap and stops, the last leaves at 1 m/s | position error at the end; energy and momentum error |
+| billiard break | a cue disk at 5 m/s into a 15-disk rack (0.02 m gaps), no cushions, COR 1, 0.5 s | momentum and kinetic energy are conserved | relative kinetic-energy error; momentum error |
+
+A measured contact time is the first step end at which the disk's velocity differs from its free
+flight by more than half the exact change (so it has the resolution of one step; a penalty force,
+which brakes gradually, is caught in the middle of its contact).
+"""
+
+ACCURACY_WORDS = """\
+### What it says
+
+- **Projectile**: all four integrators are exactly first order with the same error, g·dt·T/2
+  (explicit Euler lags, the others lead). The implicit ones cost several times more per step for
+  nothing: with a constant force, backward Euler *is* symplectic Euler.
+- **Springs and orbit**: symplectic Euler makes up the Pareto front (apart from the cheapest,
+  wrongest point of all): at the same cost it is about 100 times more accurate than explicit
+  Euler, and 100-1000 times cheaper than implicit Euler at the same accuracy. On the orbit it keeps the angular momentum exactly (to rounding) and its
+  energy error shrinks as dt², while explicit and implicit Euler drift by O(dt) (spiralling out and
+  in). Explicit Euler gains energy on every oscillation (x{explicit_gain} in 5 periods at
+  dt = {explicit_gain_dt}); implicit Euler damps it away (the undamped spring loses {implicit_loss} %
+  of its energy at that dt).
+- **Implicit Euler on the orbit fails** {orbit_failure}: Newton's method does not converge in
+  100 iterations near the close approach and the simulator reports it. Linearized implicit Euler runs
+  on at those steps and returns nonsense (separation errors of tens to hundreds of metres, energy
+  gains of thousands of times), without any sign of trouble.
+- **Collisions**: first order at best, and `continuous-time` is no more than a few times more
+  accurate than `simple` where `simple` does not miss the contact (on the floor bounces they are
+  equal): the continuous-time response moves a particle as if its new velocity had held for the
+  whole step (the reference's rule: "a velocity change Δv also moves the
+  position by h·Δv"), so finding the exact contact time does not buy accuracy in position. What it
+  buys is never missing a contact (chart 3) and no overlap at step ends.
+- **The hybrid handler's default penalty layer (k = 10, thickness 0.1) is an error of its own**:
+  it pushes disks apart before they touch, so on the two disks, the COR 0.5 bounce and the cradle
+  the hybrid's error stops shrinking with dt (order ≈ 0). With k = 0 the hybrid is as accurate as
+  continuous-time on every problem but one:
+- **On the billiard break the hybrid handler gains energy (about +{hybrid_gain} of the kinetic
+  energy, at every dt and with or without the penalty layer)**: an impulse pass sums impulses that were each
+  computed from the same end-of-step positions, so a disk struck by two others at once (the rack's
+  apex) is pushed twice for one approach. `simple` and `continuous-time` keep the energy to
+  rounding.
+- **Penalty ignores COR** (it is a conservative spring: every floor bounce is elastic) and a soft
+  one lets disks through: at k = 1e2 (the default) the falling disk passes through the floor and the
+  two disks through each other. A stiff one is only stable for ω·dt < 2 with ω = √(k/m): k = 1e6 on
+  unit masses needs dt < 2e-3, and above that it throws disks out at hundreds of m/s.
+{cradle_note}
+- For collision problems the "order" in the table is erratic (including negative values): where
+  the contact falls inside a step changes with dt, so errors do not fall on a straight line.
+"""
+
+STABILITY_WORDS = """\
+### What it says
+
+The measured limits sit on the theoretical lines. Symplectic Euler's largest stable step is
+2/ω_max (ω_max = √(k/m) for one spring, 1.98·√(k/m) for the row of ten, whose fastest mode decides);
+so for a given stiffness halve the step when a scene has chains of springs. Explicit Euler has no
+stable step at all: its energy grows by a factor 1 + (ω dt)² every step, and the blow-up mark (x1e6
+in 10 periods) is reached at ω dt = 0.225, nine times below symplectic Euler's limit. Both implicit
+methods stayed stable at every step tried (ω dt up to 100): on a stiff spring they are the only
+choice when the step cannot be made small, at the price of heavy numerical damping (chart 1).
+"""
+
+ROBUSTNESS_WORDS = """\
+### What it says
+
+- **`simple` tunnels** as soon as one step carries the disk across the contact band (speed·dt
+  above about 0.06 m, the disk's plus the edge's diameter): the red triangle above the dashed line.
+  It never got stuck with COR 1.
+- **`continuous-time` and `hybrid` bounced in every cell**, up to 1000 m/s at dt = 0.1 s (a step of
+  100 m against a 0.03 m edge).
+- **`penalty` tunnels whenever the disk is fast enough to compress the penalty spring by the
+  thickness plus the radii**: by energy balance (second chart) the compression is v·√(m/k), so it
+  goes through above v = (r_disk + r_edge + thickness)·√(k/m) = 0.4, 4 and 40 m/s for k = 1e2,
+  1e4, 1e6, whatever the step; a large step only makes it worse (it skips the spring), and k = 1e6
+  with dt of 0.05 s and more is unstable outright for slow disks. A disk that does bounce sinks in by v·√(m/k) − thickness,
+  up to the whole radii sum just below the tunnelling speed.
+"""
+
+HYBRID_WORDS = """\
+### What it says
+
+On a settling pile the impulse passes almost never resolve everything: with the default
+maxiters = 10 the failsafe runs in {pile_failsafe} of the steps, and a failsafe step puts
+{pile_zone} disks in impact zones on average. More passes buy little until about 50, and each pass is another all-pairs
+continuous-time detection, so the cost grows with maxiters: the narrow phase dominates from
+maxiters 10 on, the failsafe below that. The hybrid handler is the only method that keeps the pile
+free of overlap at every step end; `simple` and `continuous-time` let disks sink into each other by
+more than a radius (the pile's mean height drops below a packed pile's), while the hybrid costs
+{pile_hybrid_over_simple} times as much per step as `simple` and {pile_hybrid_over_ct} times as much as
+`continuous-time`. Every zone in the pile touches the floor or a wall, and such a zone is held still (positions
+kept, velocities set to 0), so the hybrid pile does not settle: it freezes where it stands (its
+kinetic energy at the end is zero or nearly, its mean height stays near the packed value). Penalty
+k = 1e4 is the cheap compromise here (shallow overlaps, some jitter); k = 1e2 lets the pile fall
+through the floor and k = 1e6 explodes at this dt.
+"""
+
+PROFILE_WORDS = """\
+### What it says
+
+"Model no more than a scene needs": the table lists, for each scene, the forces it has, the pair
+kinds its collision handling visits, and the cost of each part per step. Forces are timed by
+wrapping each of the scene's forces (the clock's own cost taken off); the integrator's solve is the
+rest of its phase; detection, response and failsafe come from the simulator's own `StepStats`;
+"rest" is what the step spends outside those (copying the state, the finite check, and collision
+work that the handler does not itemise, such as all of `simple`'s).
+
+- A small explicit scene costs well under a microsecond per step; **the implicit integrators cost
+  {implicit_cost} times more on the same scene**, almost all of it in assembling and solving the
+  linear system (once for linearized implicit Euler, once per Newton iteration for implicit Euler).
+- **Collision detection visits every pair every pass** (no broad phase): 120 particle pairs for 16
+  disks, 780 for 40, and the hybrid repeats that for every impulse pass and failsafe round
+  ({pile_queries} queries per step on the pile). `continuous-time` costs {ct_over_simple} times
+  what `simple` does on the billiard break; on the pile the hybrid costs {pile_hybrid_over_simple}
+  times `simple`.
+- The penalty force also visits every pair at every force evaluation, which is most of a penalty
+  scene's step.
+"""
+
+PICK = """\
+## What to pick, in plain words
+
+- **Forces only (springs, gravity, orbits)**: symplectic Euler, with dt below 2/ω_max of the
+  stiffest spring (halve that for chains). It is the cheapest at every accuracy and keeps energy
+  and angular momentum. Take implicit Euler only when the stiffness forces a step above that
+  limit, and expect it to damp the motion and to cost {implicit_cost} times more per step.
+- **Never explicit Euler** for anything that oscillates or orbits: it is never stable.
+- **Fast objects or thin obstacles**: continuous-time (or hybrid). `simple` misses contacts once
+  speed·dt exceeds the thinnest contact band; penalty lets anything through above
+  (radii + thickness)·√(k/m).
+- **Dense contact (piles, stacks)**: hybrid is the only method without interpenetration, at
+  {pile_hybrid_over_ct} times the cost of continuous-time and {pile_hybrid_over_simple} times
+  simple's; expect frozen piles against fixed walls and floors, and energy gains
+  on simultaneous impacts. Keep maxiters at the default or lower: more passes cost more and rarely
+  avoid the failsafe.
+- **Billiards-like scenes (many separate two-body impacts)**: `simple` with a small step, or
+  `continuous-time` when the step is large or objects fast: both keep momentum and energy.
+- **Penalty**: only with a stiffness chosen for the fastest impact (v < (radii + thickness)·√(k/m))
+  and a step below 2·√(m/k); it ignores COR.
+"""
+
+ODDITIES = """\
+## Things in the simulator that look wrong or cost more than they should
+
+1. The hybrid handler gains kinetic energy on simultaneous impacts (about +{hybrid_gain} on a symmetric
+   billiard break, independent of dt and maxiters): impulses of one pass are computed from the same
+   positions and summed. This is the reference's formulation, so it is reproduced on purpose, but
+   users should know.
+2. The hybrid's default penalty layer (thickness 0.1, as thick as a typical radius) acts on
+   neighbours that are not touching, and keeps the hybrid's error from shrinking with dt.
+3. Zones touching a half-plane or a fixed particle are frozen (velocity 0), so piles on a floor
+   stop moving instead of settling.
+4. Implicit Euler fails on the orbit {orbit_failure}: Newton does not converge in 100
+   iterations. Linearized implicit Euler returns large errors there, silently.
+5. There is no broad phase: every detection pass and every penalty-force evaluation visits all
+   pairs (O(N²)), which dominates the hybrid's cost on a pile.
+6. `StepStats`: the simple handler reports no narrow-phase time or queries (its whole cost lands
+   in "rest"), and the continuous-time handler applies impulses inside its detection loop, so its
+   response time counts as narrow phase.
+"""
+
+
+def document(sections, facts, elapsed):
+    when = ""
+    if elapsed:
+        when = (f"The last regeneration ran the experiments in {elapsed:.0f} s of wall time (the whole "
+                "command, build included, prints its own total). ")
+    parts = [
+        INTRO.format(elapsed=when),
+        METHODS,
+        PROBLEMS,
+        "## 1. Accuracy against cost\n\nOne chart per problem: the error (log) against the wall time per "
+        "simulated second (log) for every method over its sweep of dt. Circled points are the Pareto "
+        "front: no other run of any method is both cheaper and more accurate.",
+        sections["accuracy"],
+        ACCURACY_WORDS.format(**facts),
+        "## 2. Stability against stiffness\n\nFor each integrator, the largest time step at which a "
+        "spring system stays bounded, found by bisection on ω·dt (to 0.1 %) between 0.01 and 100, "
+        "with the theoretical limits drawn. Each probe runs max(10 periods of the fastest mode, 200 "
+        "steps); the springs start with displacements of 1e-4 m so that they stay linear until well "
+        "past the blow-up mark.",
+        sections["stability"],
+        STABILITY_WORDS.format(**facts),
+        "## 3. Collision robustness\n\nA disk (radius 0.02 m, unit mass) thrown straight at a thin "
+        "fixed edge (radius 0.01 m), COR 1, for every collision method over speed x dt. At the end it "
+        "has *bounced* (its own side, moving away), *tunnelled* (the far side), got *stuck* (overlapping "
+        "the edge, or stopped on its own side), or the run was *unstable*. The second chart shows how "
+        "deep the penalty methods let it sink.",
+        sections["robustness"],
+        ROBUSTNESS_WORDS.format(**facts),
+        "## 4. The hybrid handler's cost on a dense pile\n\nForty disks dropped into a box (three "
+        "half-planes) under gravity, COR 0.5, dt = 0.002 s, for maxiters from 0 to 100, and the other "
+        "methods on the same pile for comparison. \"In a zone\" counts the disks the failsafe moved (the "
+        "study compares each step's end with the handler's mid-step state); zone counts and passes are "
+        "the handler's own StepStats.",
+        sections["hybrid"],
+        HYBRID_WORDS.format(**facts),
+        "## 5. Where the time goes, per scene",
+        sections["profile"],
+        PROFILE_WORDS.format(**facts),
+        PICK.format(**facts),
+        ODDITIES.format(**facts),
+    ]
+    return "\n\n".join(p.strip("\n") for p in parts if p.strip()) + "\n"
