@@ -10,7 +10,7 @@ namespace fosssim::study {
 namespace {
 
 std::vector<double> collisionSweep(bool quick) {
-  if (quick) return {0.01, 0.001};
+  if (quick) return {0.02, 0.01};
   return {0.02, 0.01, 0.005, 0.002, 0.001, 5e-4, 2e-4, 1e-4};
 }
 

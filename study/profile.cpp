@@ -9,8 +9,8 @@
 #include "stability.h"
 #include "timed_force.h"
 
+#include <algorithm>
 #include <cmath>
-#include <map>
 
 namespace fosssim::study {
 namespace {
@@ -113,6 +113,7 @@ Status runProfile(const StudyOptions& options) {
       RunOptions ro;
       ro.phaseTimings = true;
       ro.measureOverlap = false;
+      if (options.quick) ro.steps = std::min(200L, file.scene.numSteps());
       RunResult r = runScene(file, ro);
       spent += r.stepSeconds;
       if (repeat == 0 || r.phases.total < best.phases.total) {

@@ -100,8 +100,10 @@ def stability_section(data_dir, rel):
                      if r["capped"] == 0 and sd.finite(r["largest_stable_dt"])]
             if len(capped) == len(pts):
                 measured = f"stable at every dt tried (ω dt up to {pts[0]['dt_tried_max'] * pts[0]['omega_max']:g})"
+            elif found and max(found) / min(found) < 1.002:  # the same at every stiffness
+                measured = f"{min(found):.3f} at every k"
             elif found:
-                measured = f"{fmt(min(found), 4)} to {fmt(max(found), 4)}"
+                measured = f"{min(found):.3f} to {max(found):.3f}"
             else:
                 measured = "no stable dt found"
             reasons = sorted({r["failure"] for r in pts if isinstance(r["failure"], str) and r["failure"]})

@@ -5,9 +5,10 @@ report.py puts between the paragraphs carry the numbers of the latest run.
 """
 
 STABILITY_THEORY = {
-    "explicit-euler": "never stable: |1 + iωdt| > 1; energy x1e6 within the horizon at ω dt = 0.225",
+    # (cells of a Markdown table: a literal | is written \\|)
+    "explicit-euler": "never stable: \\|1 + iω dt\\| > 1; energy x1e6 within the horizon at ω dt = 0.225",
     "symplectic-euler": "stable for ω dt < 2",
-    "implicit-euler": "stable for every dt: |1/(1 - iωdt)| < 1",
+    "implicit-euler": "stable for every dt: \\|1/(1 − iω dt)\\| < 1",
     "linearized-implicit-euler": "stable for every dt (the same as implicit Euler on a linear spring)",
 }
 
