@@ -172,13 +172,9 @@ work that the handler does not itemise, such as all of `simple`'s).
 - A small explicit scene costs well under a microsecond per step; **the implicit integrators cost
   {implicit_cost} times more on the same scene**, almost all of it in assembling and solving the
   linear system (once for linearized implicit Euler, once per Newton iteration for implicit Euler).
-- **Collision detection visits every pair every pass** (no broad phase): 120 particle pairs for 16
-  disks, 780 for 40, and the hybrid repeats that for every impulse pass and failsafe round
-  ({pile_queries} queries per step on the pile). `continuous-time` costs {ct_over_simple} times
-  what `simple` does on the billiard break; on the pile the hybrid costs {pile_hybrid_over_simple}
-  times `simple`.
-- The penalty force also visits every pair at every force evaluation, which is most of a penalty
-  scene's step.
+{detection_words} `continuous-time` costs {ct_over_simple} times what `simple` does on the
+  billiard break; on the pile the hybrid costs {pile_hybrid_over_simple} times `simple`.
+- The penalty force is {penalty_share} of a penalty scene's step (billiard break, pile).
 """
 
 PICK = """\
@@ -206,22 +202,17 @@ PICK = """\
 ODDITIES = """\
 ## Things in the simulator that look wrong or cost more than they should
 
-1. The hybrid handler gains kinetic energy on simultaneous impacts (about +{hybrid_gain} on a symmetric
-   billiard break, independent of dt and maxiters): impulses of one pass are computed from the same
-   positions and summed. This is the reference's formulation, so it is reproduced on purpose, but
-   users should know.
-2. The hybrid's default penalty layer (thickness 0.1, as thick as a typical radius) acts on
-   neighbours that are not touching, and keeps the hybrid's error from shrinking with dt.
-3. Zones touching a half-plane or a fixed particle are frozen (velocity 0), so piles on a floor
-   stop moving instead of settling.
-4. Implicit Euler fails on the orbit {orbit_failure}: Newton does not converge in 100
-   iterations. Linearized implicit Euler returns large errors there, silently.
-5. There is no broad phase: every detection pass and every penalty-force evaluation visits all
-   pairs (O(N²)), which dominates the hybrid's cost on a pile.
-6. `StepStats`: the simple handler reports no narrow-phase time or queries (its whole cost lands
-   in "rest"), and the continuous-time handler applies impulses inside its detection loop, so its
-   response time counts as narrow phase.
-"""
+- The hybrid handler gains kinetic energy on simultaneous impacts (about +{hybrid_gain} on a
+  symmetric billiard break, independent of dt and maxiters): impulses of one pass are computed from
+  the same positions and summed. This is the reference's formulation, so it is reproduced on
+  purpose, but users should know.
+- The hybrid's default penalty layer (thickness 0.1, as thick as a typical radius) acts on
+  neighbours that are not touching, and keeps the hybrid's error from shrinking with dt.
+- Zones touching a half-plane or a fixed particle are frozen (positions kept, velocity 0: the
+  reference's rule), so piles on a floor stop moving instead of settling.
+- Implicit Euler fails on the orbit {orbit_failure}: Newton does not converge in 100
+  iterations. Linearized implicit Euler returns large errors there, silently.
+{oddity_broad}{oddity_stats}"""
 
 
 def document(sections, facts, elapsed):
