@@ -6,6 +6,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <string>
+
+#include <unistd.h>
 
 namespace fosssim::study {
 namespace {
@@ -18,7 +21,9 @@ long lines(const std::string& path) {
 }
 
 TEST(StudyExperiments, QuickMatrixWritesEveryCsvFile) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "fosssim-study-test";
+  // A folder of this process's own: the Release and sanitizer suites may run side by side.
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("fosssim-study-test-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   StudyOptions options;
   options.outDir = dir.string();
