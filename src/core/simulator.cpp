@@ -1,5 +1,7 @@
 #include "fosssim/core/simulator.h"
 
+#include "collision/pair_candidates.h"
+
 #include <cmath>
 #include <sstream>
 
@@ -16,6 +18,7 @@ Status Simulator::create(const Scene& scene, const SimulatorOptions& options,
   sim->integrator_ = integrator->make();
   if (collision->make) sim->handler_ = collision->make(scene.collision, options.handler);
   sim->log_.polynomials.setEnabled(options.logPolynomials && collision->layout.polynomials);
+  sim->allPairs_ = options.handler.allPairs;
   out = std::move(sim);
   return Status::ok();
 }
@@ -30,6 +33,7 @@ Status Simulator::step(const Scene& scene, State& state, StepObserver* observer)
 
   stats_.clear();
   const StepTimer stepTimer(timing_, stats_.total);
+  const AllPairsScope pairSearch(allPairs_);  // for the penalty force (the handlers know already)
 
   // 1. Predict: the integrator moves every particle as if nothing collided.
   start_ = state;

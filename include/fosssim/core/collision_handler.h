@@ -26,6 +26,9 @@ struct HandlerOptions {
   /// Reproduce the reference simulator's own formulas where they differ from exact mathematics
   /// (the particle-edge approach quintic; see README "Course compatibility").
   bool compat = false;
+  /// Check every pair in the reference's order, without the broad phase (the results are the
+  /// same; this exists so that tests and measurements can show it).
+  bool allPairs = false;
 };
 
 /// Everything a handler may use during one step besides the scene and the two states.

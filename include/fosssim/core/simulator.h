@@ -12,7 +12,8 @@ namespace fosssim {
 struct SimulatorOptions {
   HandlerOptions handler;
   /// Record every continuous-time query's polynomials (for trajectory files and grading only:
-  /// the reference's log; it costs time and forces all-pairs detection order).
+  /// the reference's log holds every pair's polynomials, so every pair is then queried in the
+  /// reference's order, without the broad phase; it costs time).
   bool logPolynomials = false;
 };
 
@@ -45,6 +46,7 @@ class Simulator {
   CollisionLog log_;
   StepStats stats_;
   bool timing_ = false;
+  bool allPairs_ = false;  ///< options.handler.allPairs, also for the penalty force
   State start_;  ///< the state at the beginning of the current step (scratch)
 };
 

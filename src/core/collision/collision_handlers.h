@@ -1,6 +1,7 @@
 // Internal header: the collision handlers of the collision table.
 #pragma once
 
+#include "collision_search.h"
 #include "continuous_detection.h"
 #include "impact_zones.h"
 #include "impulse_response.h"
@@ -15,44 +16,57 @@ inline math::QuinticForm quinticForm(const HandlerOptions& options) {
 
 class SimpleHandler final : public CollisionHandler {
  public:
-  explicit SimpleHandler(const CollisionSettings& settings) : cor_(settings.cor) {}
+  SimpleHandler(const CollisionSettings& settings, const HandlerOptions& options)
+      : cor_(settings.cor), allPairs_(options.allPairs) {}
   Status handle(const Scene& scene, const State& start, State& state, StepContext& ctx) override;
 
  private:
   double cor_;
+  bool allPairs_;
+  PairCandidates candidates_;  ///< pairs overlapping at the end of the step
+  std::vector<int> row_;
+  std::vector<uint64_t> keys_;
 };
 
 class ContinuousTimeHandler final : public CollisionHandler {
  public:
   ContinuousTimeHandler(const CollisionSettings& settings, const HandlerOptions& options)
-      : cor_(settings.cor), detector_(quinticForm(options)) {}
+      : cor_(settings.cor), search_(quinticForm(options), options.allPairs) {}
   Status handle(const Scene& scene, const State& start, State& state, StepContext& ctx) override;
 
  private:
   double cor_;
-  ContinuousDetector detector_;
+  CollisionSearch search_;
 };
 
 class HybridHandler final : public CollisionHandler {
  public:
   HybridHandler(const CollisionSettings& settings, const HandlerOptions& options)
-      : cor_(settings.cor), maxIterations_(settings.maxIterations), detector_(quinticForm(options)) {}
+      : cor_(settings.cor), maxIterations_(settings.maxIterations), search_(quinticForm(options), options.allPairs) {}
   Status handle(const Scene& scene, const State& start, State& state, StepContext& ctx) override;
   int zoneOf(int particle) const override { return zones_.zoneOf(particle); }
 
  private:
   /// Iterative impulses; true when a detection pass found nothing.
   bool impulsePasses(const Scene& scene, const State& start, State& state, StepContext& ctx);
-  /// Rigid impact zones, grown until no new collision joins them.
-  void failsafe(const Scene& scene, const State& start, State& state, StepContext& ctx);
+  /// Rigid impact zones, grown until no new collision joins them. `replaced`: the observer
+  /// replaced the state after the impulse passes.
+  void failsafe(const Scene& scene, const State& start, State& state, StepContext& ctx, bool replaced);
+
+  /// Applies the pass's impulses (all computed from the same end positions) and lists the
+  /// particles they moved in touched_.
+  void respond(const Scene& scene, const State& start, State& state, StepContext& ctx);
 
   double cor_;
   int maxIterations_;
-  ContinuousDetector detector_;
-  std::vector<Collision> collisions_;
+  CollisionSearch search_;
+  std::vector<Collision> collisions_, previous_;  ///< this detection's and the last one's
   std::vector<VelocityChange> changes_;
+  std::vector<int> touched_;   ///< particles whose end position the last responses or rigid moves changed
+  std::vector<char> marked_;   ///< N: scratch for touched_
   ImpactZones zones_;
-  VecX predicted_;  ///< 2N: the end positions before the failsafe moves zones rigidly
+  VecX predicted_;  ///< 2N: the end positions before the failsafe moves zones rigidly (zone members only)
+  VecX beforeObserver_;  ///< 2N: the end positions handed to the mid-step observer
 };
 
 }  // namespace fosssim

@@ -4,8 +4,8 @@
 namespace fosssim {
 namespace {
 
-std::unique_ptr<CollisionHandler> makeSimple(const CollisionSettings& s, const HandlerOptions&) {
-  return std::make_unique<SimpleHandler>(s);
+std::unique_ptr<CollisionHandler> makeSimple(const CollisionSettings& s, const HandlerOptions& o) {
+  return std::make_unique<SimpleHandler>(s, o);
 }
 
 std::unique_ptr<CollisionHandler> makeContinuousTime(const CollisionSettings& s, const HandlerOptions& o) {

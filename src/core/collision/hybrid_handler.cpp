@@ -9,52 +9,79 @@
 #include "collision_handlers.h"
 #include "impulse_response.h"
 
+#include <cstring>
+
 namespace fosssim {
 
 Status HybridHandler::handle(const Scene& scene, const State& start, State& state, StepContext& ctx) {
-  detector_.setStats(ctx.stats);
   zones_.reset(scene.numParticles());
+  if (marked_.size() != static_cast<size_t>(scene.numParticles())) marked_.assign(scene.numParticles(), 0);
   const bool resolved = impulsePasses(scene, start, state, ctx);
-  if (ctx.observer) ctx.observer->midStep(*ctx.log, state);
+  // An observer may replace the state (the grader loads the reference's): then the failsafe
+  // cannot build on the last pass's detection.
+  bool replaced = false;
+  if (ctx.observer) {
+    if (!resolved) beforeObserver_ = state.x;
+    ctx.observer->midStep(*ctx.log, state);
+    replaced = !resolved && (state.x.size() != beforeObserver_.size() ||
+                             std::memcmp(state.x.data(), beforeObserver_.data(), sizeof(double) * state.x.size()) != 0);
+  }
   if (!resolved) {
     const StepTimer timer(ctx.timing, ctx.stats->failsafe);
-    failsafe(scene, start, state, ctx);
+    failsafe(scene, start, state, ctx, replaced);
     ctx.stats->failsafeUsed = true;
     zones_.sizes(ctx.stats->zones, ctx.stats->largestZone);
   }
   return Status::ok();
 }
 
+// Each pass after the first queries again only the pairs that involve a particle the last pass's
+// impulses moved; the other pairs' collisions are the last pass's (CollisionSearch::detectChanged).
 bool HybridHandler::impulsePasses(const Scene& scene, const State& start, State& state, StepContext& ctx) {
   for (int pass = 0; pass < maxIterations_; ++pass) {
-    collisions_.clear();
-    {
-      const StepTimer timer(ctx.timing, ctx.stats->narrowPhase);
-      detector_.forEachCollision(scene, start.x, state.x, &ctx.log->polynomials,
-                                 [&](const Collision& c) { collisions_.push_back(c); });
-    }
+    if (pass == 0) search_.detectAll(scene, start.x, state.x, ctx, collisions_);
+    else search_.detectChanged(scene, start.x, state.x, ctx, previous_, touched_, collisions_);
     ++ctx.stats->impulsePasses;
     ctx.stats->collisions += static_cast<long>(collisions_.size());
     if (collisions_.empty()) return true;
     const StepTimer timer(ctx.timing, ctx.stats->response);
-    changes_.clear();
-    for (const Collision& c : collisions_)
-      changes_.push_back(collisionResponse(scene, c, cor_, start.x, state.x, ctx.dt));
-    for (const VelocityChange& change : changes_) applyWithDisplacement(change, ctx.dt, state.x, state.v);
+    respond(scene, start, state, ctx);
+    collisions_.swap(previous_);
   }
   return false;
 }
 
-void HybridHandler::failsafe(const Scene& scene, const State& start, State& state, StepContext& ctx) {
-  predicted_ = state.x;
-  PolynomialLog* log = &ctx.log->polynomials;
-  auto grow = [&](const VecX& end) {
+void HybridHandler::respond(const Scene& scene, const State& start, State& state, StepContext& ctx) {
+  changes_.clear();
+  for (const Collision& c : collisions_) changes_.push_back(collisionResponse(scene, c, cor_, start.x, state.x, ctx.dt));
+  touched_.clear();
+  for (const VelocityChange& change : changes_) {
+    applyWithDisplacement(change, ctx.dt, state.x, state.v);
+    for (int k = 0; k < change.count; ++k) {
+      const int p = change.particle[k];
+      if (!marked_[p]) marked_[p] = 1, touched_.push_back(p);
+    }
+  }
+  for (int p : touched_) marked_[p] = 0;
+}
+
+void HybridHandler::failsafe(const Scene& scene, const State& start, State& state, StepContext& stepCtx,
+                             bool replaced) {
+  // The failsafe's time includes its detections: they are not counted again as broad and
+  // narrow phase.
+  StepContext ctx = stepCtx;
+  ctx.timing = false;
+  if (predicted_.size() != state.x.size()) predicted_ = state.x;
+  auto grow = [&]() {
     bool changed = false;
-    detector_.forEachCollision(scene, start.x, end, log,
-                               [&](const Collision& c) { changed = zones_.add(scene, c) || changed; });
+    for (const Collision& c : collisions_) changed = zones_.add(scene, c) || changed;
     return changed;
   };
-  grow(predicted_);
+  // The first detection is on the end positions the impulse passes left: only the last pass's
+  // moved particles need new queries (no pass at all, or a replaced state: every pair).
+  if (maxIterations_ > 0 && !replaced) search_.detectChanged(scene, start.x, state.x, ctx, previous_, touched_, collisions_);
+  else search_.detectAll(scene, start.x, state.x, ctx, collisions_);
+  grow();
   // Move the zones, look again, until no new collision joins a zone. The reference checks at
   // least once, even when the first detection found nothing (its log shows the second query).
   // Zones only grow, so this ends after at most N + (number of zones marked immovable) rounds.
@@ -62,10 +89,17 @@ void HybridHandler::failsafe(const Scene& scene, const State& start, State& stat
     // Each round fits the rigid motions to the positions the previous round left (zones that did
     // not change are refitted to their own rigid motion): the reference's sequencing, which
     // replaying its trajectories reproduces bit for bit, unlike fitting every round to the
-    // integrator's prediction.
-    predicted_ = state.x;
+    // integrator's prediction. Only zone members are read and moved.
+    for (int p : zones_.members()) at(predicted_, p) = at(state.x, p);
     zones_.moveRigidly(scene, start.x, predicted_, state.x);
-  } while (grow(state.x));
+    // A detection again only for pairs with a particle the move changed (bit for bit: an
+    // immovable zone, put back at its start, stays unchanged from the second round on).
+    touched_.clear();
+    for (int p : zones_.members())
+      if (std::memcmp(&state.x[2 * p], &predicted_[2 * p], 2 * sizeof(double)) != 0) touched_.push_back(p);
+    collisions_.swap(previous_);
+    search_.detectChanged(scene, start.x, state.x, ctx, previous_, touched_, collisions_);
+  } while (grow());
   for (int p : zones_.members()) at(state.v, p) = divide(at(state.x, p) - at(start.x, p), ctx.dt);
 }
 

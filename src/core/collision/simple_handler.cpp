@@ -1,6 +1,7 @@
 // The "simple" handler: discrete detection at the end of the step. In the reference's pair order,
 // a pair collides when it overlaps and approaches; its response changes velocities at once (later
-// pairs see it) and leaves positions alone. Impulses are recorded with time 0.
+// pairs see it) and leaves positions alone. Impulses are recorded with time 0. The broad phase
+// (pair_candidates.h) skips pairs that provably do not overlap.
 #include "collision_handlers.h"
 #include "impulse_response.h"
 
@@ -24,36 +25,66 @@ Status SimpleHandler::handle(const Scene& scene, const State&, State& state, Ste
   auto record = [&](PairKind kind, int i, int j, const Vec2& n) {
     ctx.log->impulses.push_back(Impulse{kind, i, j, n, 0.0});
   };
-  for (int i = 0; i < scene.numParticles(); ++i) {
+  // Positions do not change here (responses change velocities only), so the pairs that overlap
+  // at the end of the step are known before the first response: candidates first, then the
+  // tests in the reference's order.
+  {
+    const StepTimer timer(ctx.timing, ctx.stats->broadPhase);
+    candidates_.build(scene, x, x);
+    if (allPairs_) candidates_.forceAllPairs();
+    keys_.clear();
+    for (int i = 0; i < scene.numParticles(); ++i) {
+      row_.clear();
+      candidates_.particlesOf(i, -1, row_);
+      for (int j : row_) keys_.push_back(pairKey(i, PairKind::ParticleParticle, j));
+      row_.clear();
+      candidates_.edgesOf(i, -1, row_);
+      for (int e : row_) keys_.push_back(pairKey(i, PairKind::ParticleEdge, e));
+      for (int h = 0; h < static_cast<int>(scene.halfplanes.size()); ++h)
+        if (candidates_.nearPlane(i, h)) keys_.push_back(pairKey(i, PairKind::ParticleHalfPlane, h));
+    }
+  }
+  const StepTimer timer(ctx.timing, ctx.stats->narrowPhase);  // responses are interleaved: counted here too
+  ctx.stats->candidatePairs += static_cast<long>(keys_.size());
+  for (uint64_t key : keys_) {
+    const int i = keyParticle(key), other = keyOther(key);
     const Vec2 xi = at(x, i);
-    for (int j = i + 1; j < scene.numParticles(); ++j) {
-      const Vec2 n = at(x, j) - xi;
-      const double reach = scene.radius[i] + scene.radius[j];
-      if (n.squaredNorm() < reach * reach && (at(v, i) - at(v, j)).dot(n) > 0.0) {
-        record(PairKind::ParticleParticle, i, j, n);
-        apply(particleParticleResponse(scene, i, j, n, cor, at(v, i), at(v, j)), v);
+    ++ctx.stats->queries[static_cast<int>(keyKind(key))];
+    switch (keyKind(key)) {
+      case PairKind::ParticleParticle: {
+        const int j = other;
+        const Vec2 n = at(x, j) - xi;
+        const double reach = scene.radius[i] + scene.radius[j];
+        if (n.squaredNorm() < reach * reach && (at(v, i) - at(v, j)).dot(n) > 0.0) {
+          record(PairKind::ParticleParticle, i, j, n);
+          apply(particleParticleResponse(scene, i, j, n, cor, at(v, i), at(v, j)), v);
+        }
+        break;
       }
-    }
-    for (int e = 0; e < static_cast<int>(scene.edges.size()); ++e) {
-      const Edge& edge = scene.edges[e];
-      if (edge.i == i || edge.j == i) continue;
-      const Vec2 x2 = at(x, edge.i), x3 = at(x, edge.j);
-      const double alpha = std::clamp(segmentParameter(xi, x2, x3), 0.0, 1.0);
-      const Vec2 n = x2 + alpha * (x3 - x2) - xi;
-      const double reach = scene.radius[i] + edge.radius;
-      const Vec2 v2 = at(v, edge.i), v3 = at(v, edge.j);
-      if (n.squaredNorm() < reach * reach && (at(v, i) - v2 - alpha * (v3 - v2)).dot(n) > 0.0) {
-        record(PairKind::ParticleEdge, i, e, n);
-        apply(particleEdgeResponse(scene, i, edge, alpha, n, cor, at(v, i), v2, v3), v);
+      case PairKind::ParticleEdge: {
+        const int e = other;
+        const Edge& edge = scene.edges[e];
+        const Vec2 x2 = at(x, edge.i), x3 = at(x, edge.j);
+        const double alpha = std::clamp(segmentParameter(xi, x2, x3), 0.0, 1.0);
+        const Vec2 n = x2 + alpha * (x3 - x2) - xi;
+        const double reach = scene.radius[i] + edge.radius;
+        const Vec2 v2 = at(v, edge.i), v3 = at(v, edge.j);
+        if (n.squaredNorm() < reach * reach && (at(v, i) - v2 - alpha * (v3 - v2)).dot(n) > 0.0) {
+          record(PairKind::ParticleEdge, i, e, n);
+          apply(particleEdgeResponse(scene, i, edge, alpha, n, cor, at(v, i), v2, v3), v);
+        }
+        break;
       }
-    }
-    for (int h = 0; h < static_cast<int>(scene.halfplanes.size()); ++h) {
-      const HalfPlane& plane = scene.halfplanes[h];
-      const Vec2 n = halfPlaneContact(xi, plane.point, plane.normal);
-      const double r = scene.radius[i];
-      if (n.squaredNorm() < r * r && at(v, i).dot(n) > 0.0) {
-        record(PairKind::ParticleHalfPlane, i, h, n);
-        apply(particleHalfPlaneResponse(scene, i, n, cor, at(v, i)), v);
+      case PairKind::ParticleHalfPlane: {
+        const int h = other;
+        const HalfPlane& plane = scene.halfplanes[h];
+        const Vec2 n = halfPlaneContact(xi, plane.point, plane.normal);
+        const double r = scene.radius[i];
+        if (n.squaredNorm() < r * r && at(v, i).dot(n) > 0.0) {
+          record(PairKind::ParticleHalfPlane, i, h, n);
+          apply(particleHalfPlaneResponse(scene, i, n, cor, at(v, i)), v);
+        }
+        break;
       }
     }
   }

@@ -1,13 +1,19 @@
 #include "fosssim/core/verify.h"
 
-#include "continuous_detection.h"
+#include "collision_search.h"
 
 namespace fosssim {
 
 std::vector<Violation> unresolvedCollisions(const Scene& scene, const VecX& start, const VecX& end,
                                             const ZoneOf& zoneOf, size_t limit) {
   std::vector<Violation> found;
-  const ContinuousDetector detector(math::QuinticForm::Exact);
+  // A fresh detection with the broad phase (the same collisions as checking every pair).
+  CollisionSearch search(math::QuinticForm::Exact);
+  StepStats stats;
+  StepContext ctx;
+  ctx.stats = &stats;
+  std::vector<Collision> collisions;
+  search.detectAll(scene, start, end, ctx, collisions);
   auto sameZone = [&](const Collision& c) {
     const int z = zoneOf ? zoneOf(c.i) : -1;
     if (z < 0) return false;
@@ -19,9 +25,8 @@ std::vector<Violation> unresolvedCollisions(const Scene& scene, const VecX& star
     }
     return false;
   };
-  detector.forEachCollision(scene, start, end, nullptr, [&](const Collision& c) {
+  for (const Collision& c : collisions)
     if ((limit == 0 || found.size() < limit) && !sameZone(c)) found.push_back(Violation{c.kind, c.i, c.j, c.tau});
-  });
   return found;
 }
 

@@ -9,7 +9,12 @@
 // compares velocities to 1e-10, and contact-heavy scenes amplify last-bit differences.
 #include "fosssim/core/forces.h"
 
+#include "../collision/pair_candidates.h"
+
 #include "fosssim/math/geometry.h"
+
+#include <algorithm>
+#include <vector>
 
 namespace fosssim {
 namespace {
@@ -25,26 +30,42 @@ struct PenaltyPair {
 };
 
 /// Visits every pair within reach, in the reference's order (for each particle i: particles
-/// j > i, edges not incident to i, half-planes).
+/// j > i, edges not incident to i, half-planes). The broad phase proposes the pairs whose boxes
+/// (grown by the radius, half the thickness and the exactness margin) meet, in that order; the
+/// test |n| < r1 + r2 + h below is the reference's, so exactly the same pairs are visited in the
+/// same order, and the gradient sums come out the same to the last bit.
 template <class Visit>
 void forEachPenaltyPair(const Scene& scene, const VecX& x, double thickness, Visit&& visit) {
+  // The force is const and may be shared: scratch storage per thread, reused from call to call.
+  thread_local PairCandidates candidates;
+  thread_local std::vector<int> row;
   const int n = scene.numParticles();
   auto consider = [&](int i, const Vec2& d, double r1, double r2, int a, int b, double alpha) {
     const double length = d.norm();
     if (length < r1 + r2 + thickness) visit(PenaltyPair{i, d, length, length - r1 - r2 - thickness, a, b, alpha});
   };
+  // A negative thickness shrinks the reach; the boxes are then simply not widened.
+  candidates.build(scene, x, x, std::max(0.0, 0.5 * thickness));
+  if (allPairsForced()) candidates.forceAllPairs();
   for (int i = 0; i < n; ++i) {
     const Vec2 xi = at(x, i);
     const double ri = scene.radius[i];
-    for (int j = i + 1; j < n; ++j) consider(i, at(x, j) - xi, ri, scene.radius[j], j, -1, 0.0);
-    for (const Edge& e : scene.edges) {
-      if (e.i == i || e.j == i) continue;
+    row.clear();
+    candidates.particlesOf(i, -1, row);
+    for (int j : row) consider(i, at(x, j) - xi, ri, scene.radius[j], j, -1, 0.0);
+    row.clear();
+    candidates.edgesOf(i, -1, row);
+    for (int k : row) {
+      const Edge& e = scene.edges[k];
       double alpha = 0;
       const Vec2 d = math::segmentContactVector(xi, at(x, e.i), at(x, e.j), &alpha);
       consider(i, d, ri, e.radius, e.i, e.j, alpha);
     }
-    for (const HalfPlane& h : scene.halfplanes)
-      consider(i, math::halfPlaneContactVector(xi, h.point, h.normal), ri, 0.0, -1, -1, 0.0);
+    for (int h = 0; h < static_cast<int>(scene.halfplanes.size()); ++h) {
+      if (!candidates.nearPlane(i, h)) continue;
+      const HalfPlane& plane = scene.halfplanes[h];
+      consider(i, math::halfPlaneContactVector(xi, plane.point, plane.normal), ri, 0.0, -1, -1, 0.0);
+    }
   }
 }
 

@@ -1,0 +1,204 @@
+#include "collision_search.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace fosssim {
+namespace {
+
+/// detectChanged queries every pair again (detectAll) when more than 1/kFullPassRatio of the
+/// particles changed: collecting and sorting their pairs' keys then costs more than the rows.
+constexpr size_t kFullPassRatio = 4;
+
+double seconds(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b) {
+  return std::chrono::duration<double>(b - a).count();
+}
+
+/// Whether collision c involves a particle marked in `mark` (an edge's endpoints included).
+bool involvesMarked(const Scene& scene, const Collision& c, const std::vector<char>& mark) {
+  if (mark[c.i]) return true;
+  switch (c.kind) {
+    case PairKind::ParticleParticle: return mark[c.j] != 0;
+    case PairKind::ParticleEdge: return mark[scene.edges[c.j].i] || mark[scene.edges[c.j].j];
+    case PairKind::ParticleHalfPlane: return false;
+  }
+  return false;
+}
+
+}  // namespace
+
+bool CollisionSearch::prepare(const Scene& scene, const VecX& qs, const VecX& qe, StepContext& ctx) {
+  builtQs_ = builtQe_ = nullptr;
+  if (forceAll_ || logging(ctx)) return false;
+  const StepTimer timer(ctx.timing, ctx.stats->broadPhase);
+  candidates_.build(scene, qs, qe);
+  if (candidates_.allPairs()) return false;
+  builtQs_ = &qs;
+  builtQe_ = &qe;
+  return true;
+}
+
+void CollisionSearch::collectRows(const Scene& scene) {
+  const int n = scene.numParticles(), planes = static_cast<int>(scene.halfplanes.size());
+  const bool edges = !scene.edges.empty();
+  keys_.clear();
+  for (int i = 0; i < n; ++i) {
+    row_.clear();
+    candidates_.particlesOf(i, -1, row_);
+    for (int j : row_) keys_.push_back(pairKey(i, PairKind::ParticleParticle, j));
+    if (edges) {
+      row_.clear();
+      candidates_.edgesOf(i, -1, row_);
+      for (int e : row_) keys_.push_back(pairKey(i, PairKind::ParticleEdge, e));
+    }
+    for (int h = 0; h < planes; ++h)
+      if (candidates_.nearPlane(i, h)) keys_.push_back(pairKey(i, PairKind::ParticleHalfPlane, h));
+  }
+}
+
+bool CollisionSearch::query(const Scene& scene, const VecX& qs, const VecX& qe, uint64_t key, Collision& hit,
+                            StepStats& stats) const {
+  const int i = keyParticle(key), other = keyOther(key);
+  const PairKind kind = keyKind(key);
+  ++stats.candidatePairs;
+  ++stats.queries[static_cast<int>(kind)];
+  switch (kind) {
+    case PairKind::ParticleParticle: return detector_.particleParticle(scene, qs, qe, i, other, hit, nullptr);
+    case PairKind::ParticleEdge: return detector_.particleEdge(scene, qs, qe, i, other, hit, nullptr);
+    case PairKind::ParticleHalfPlane: return detector_.particleHalfPlane(scene, qs, qe, i, other, hit, nullptr);
+  }
+  return false;
+}
+
+void CollisionSearch::referenceSweep(const Scene& scene, const VecX& qs, const VecX& qe, StepContext& ctx,
+                                     const std::function<void(const Collision&)>& onHit) {
+  const StepTimer timer(ctx.timing, ctx.stats->narrowPhase);
+  detector_.setStats(ctx.stats);
+  detector_.forEachCollision(scene, qs, qe, ctx.log ? &ctx.log->polynomials : nullptr, onHit);
+}
+
+void CollisionSearch::detectAll(const Scene& scene, const VecX& qs, const VecX& qe, StepContext& ctx,
+                                std::vector<Collision>& out) {
+  out.clear();
+  if (!prepare(scene, qs, qe, ctx)) {
+    referenceSweep(scene, qs, qe, ctx, [&](const Collision& c) { out.push_back(c); });
+    return;
+  }
+  {
+    const StepTimer timer(ctx.timing, ctx.stats->broadPhase);
+    collectRows(scene);
+  }
+  const StepTimer timer(ctx.timing, ctx.stats->narrowPhase);
+  Collision hit;
+  for (uint64_t key : keys_)
+    if (query(scene, qs, qe, key, hit, *ctx.stats)) out.push_back(hit);
+}
+
+void CollisionSearch::detectChanged(const Scene& scene, const VecX& qs, const VecX& qe, StepContext& ctx,
+                                    const std::vector<Collision>& previous, const std::vector<int>& changed,
+                                    std::vector<Collision>& out) {
+  const int n = scene.numParticles();
+  if (forceAll_ || logging(ctx) || builtQs_ != &qs || builtQe_ != &qe || candidates_.allPairs() ||
+      kFullPassRatio * changed.size() > static_cast<size_t>(n)) {
+    detectAll(scene, qs, qe, ctx, out);
+    return;
+  }
+  out.clear();
+  {
+    const StepTimer timer(ctx.timing, ctx.stats->broadPhase);
+    if (mark_.size() != static_cast<size_t>(n)) mark_.assign(n, 0);
+    for (int p : changed) candidates_.update(p);
+    keys_.clear();
+    for (int p : changed) {
+      if (mark_[p]) continue;
+      mark_[p] = 1;
+      candidates_.pairsOf(p, keys_);
+    }
+    std::sort(keys_.begin(), keys_.end());
+    keys_.erase(std::unique(keys_.begin(), keys_.end()), keys_.end());
+  }
+  {
+    // Merge, in pair order: the previous collisions of unchanged pairs (a query depends only on
+    // its pair's positions) and the fresh queries of the pairs that involve a changed particle.
+    const StepTimer timer(ctx.timing, ctx.stats->narrowPhase);
+    Collision hit;
+    size_t k = 0;
+    for (const Collision& c : previous) {
+      if (involvesMarked(scene, c, mark_)) continue;
+      const uint64_t carried = pairKey(c);
+      for (; k < keys_.size() && keys_[k] < carried; ++k)
+        if (query(scene, qs, qe, keys_[k], hit, *ctx.stats)) out.push_back(hit);
+      out.push_back(c);
+    }
+    for (; k < keys_.size(); ++k)
+      if (query(scene, qs, qe, keys_[k], hit, *ctx.stats)) out.push_back(hit);
+  }
+  for (int p : changed) mark_[p] = 0;
+}
+
+void CollisionSearch::sweep(const Scene& scene, const VecX& qs, VecX& qe, StepContext& ctx,
+                            const std::function<void(const Collision&)>& onHit) {
+  if (!prepare(scene, qs, qe, ctx)) {
+    referenceSweep(scene, qs, qe, ctx, onHit);
+    return;
+  }
+  {
+    const StepTimer timer(ctx.timing, ctx.stats->broadPhase);
+    collectRows(scene);
+  }
+  // Walk the rows' candidates in order. A response changes its pair's particles: their boxes
+  // are refreshed and every pair they are now part of that comes later joins a min-heap of
+  // extra keys, merged with the list as the walk goes (a key in both is queried once).
+  const auto walkStart = std::chrono::steady_clock::now();
+  double rebroad = 0;
+  extra_.clear();
+  const auto later = std::greater<uint64_t>();
+  Collision hit;
+  size_t pos = 0;
+  while (pos < keys_.size() || !extra_.empty()) {
+    uint64_t key = pos < keys_.size() ? keys_[pos] : ~uint64_t{0};
+    if (!extra_.empty() && extra_.front() < key) key = extra_.front();
+    while (pos < keys_.size() && keys_[pos] == key) ++pos;
+    while (!extra_.empty() && extra_.front() == key) {
+      std::pop_heap(extra_.begin(), extra_.end(), later);
+      extra_.pop_back();
+    }
+    if (!query(scene, qs, qe, key, hit, *ctx.stats)) continue;
+    int particles[3] = {hit.i, hit.j, -1};
+    int count = hit.kind == PairKind::ParticleHalfPlane ? 1 : 2;
+    if (hit.kind == PairKind::ParticleEdge) {
+      particles[1] = scene.edges[hit.j].i;
+      particles[2] = scene.edges[hit.j].j;
+      count = 3;
+    }
+    Vec2 before[3];
+    for (int k = 0; k < count; ++k) before[k] = at(qe, particles[k]);
+    onHit(hit);
+    const auto rebroadStart = ctx.timing ? std::chrono::steady_clock::now() : walkStart;
+    for (int k = 0; k < count; ++k) {
+      const int p = particles[k];
+      if (at(qe, p) == before[k]) continue;
+      candidates_.update(p);
+      const size_t first = extra_.size();
+      candidates_.pairsOf(p, extra_);
+      size_t kept = first;
+      for (size_t m = first; m < extra_.size(); ++m)
+        if (extra_[m] > key) extra_[kept++] = extra_[m];
+      extra_.resize(kept);
+      for (size_t m = first; m < kept; ++m) std::push_heap(extra_.begin(), extra_.begin() + static_cast<long>(m) + 1, later);
+    }
+    if (ctx.timing) rebroad += seconds(rebroadStart, std::chrono::steady_clock::now());
+  }
+  if (ctx.timing) {
+    // Responses are interleaved with the queries: they count as narrow phase, as before.
+    ctx.stats->broadPhase += rebroad;
+    ctx.stats->narrowPhase += seconds(walkStart, std::chrono::steady_clock::now()) - rebroad;
+  }
+}
+
+size_t CollisionSearch::memoryBytes() const {
+  return candidates_.memoryBytes() + (keys_.capacity() + extra_.capacity()) * sizeof(uint64_t) +
+         row_.capacity() * sizeof(int) + mark_.capacity();
+}
+
+}  // namespace fosssim

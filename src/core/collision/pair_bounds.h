@@ -1,0 +1,95 @@
+// Internal header: the boxes the broad phase compares, and why comparing them is exact.
+//
+// The broad phase may skip a pair only when the narrow phase would certainly report nothing for
+// it, rounding and the CCD's leading-coefficient cutoff included. Every box is therefore grown
+// by a margin m = kRelativeMargin (S + r) + kAbsoluteMargin on top of the object's radius, where
+// S bounds the magnitude of every coordinate involved in the step (start and end positions,
+// half-plane points) and r is the object's radius. Two boxes that do not overlap are apart along
+// some axis by more than r1 + r2 + m1 + m2. Why that suffices, per pair kind:
+//
+//  * particle-edge (swept): the narrow phase (math::detectPE without a log) first rejects pairs
+//    whose swept boxes are apart by more than rv + re + kSweptBoxMargin * scale, scale <= 4 S +
+//    rv + re; m1 + m2 >= 2 kRelativeMargin (S + ...) exceeds that by 4 kSweptBoxMargin S, far
+//    more than the rounding of the box bounds (a few ulps of S). So the narrow phase's own first
+//    test rejects every pair the broad phase skips.
+//  * particle-particle (swept): the centres stay farther apart than rs + M (rs = r1 + r2,
+//    M = m1 + m2) all step long, so the position quadratic rs^2 - |x21(t)|^2 <= -M^2 on [0, 1].
+//    Its computed coefficients differ from the exact ones by rounding, at most c eps (S^2 + rs^2)
+//    for a small c, and by the cutoff, which drops at most two leading coefficients below
+//    1e-12 (a change of at most 2e-12 on [0, 1]). M^2 >= (2 kRelativeMargin (S + rs/2))^2 +
+//    4 kAbsoluteMargin^2 exceeds both by orders of magnitude, so the quadratic the solver sees is
+//    negative on [0, 1] by far more than its evaluation error: no positive time, no collision.
+//  * particle-half-plane (swept): the same for r^2|m|^2 - s(t)^2 with the signed distance
+//    s(t) = (x(t) - p).m linear in t; the broad phase skips the pair when |s| stays above
+//    (r + M)|m| with M = m + kCutoffReach / |m| (the cutoff's 2e-12 in units of |m|^2).
+//  * static pairs (penalty force, simple handler): the exact comparisons |n| < reach at the
+//    positions x; the computed |n| is off by a few ulps of S, far below the margins.
+// Non-finite states make no bounds at all: the callers then check every pair (as the reference).
+#pragma once
+
+#include "box_grid.h"
+
+#include "fosssim/core/scene.h"
+#include "fosssim/math/ccd.h"
+
+#include <cmath>
+
+namespace fosssim {
+
+/// Relative part of the margin (see above): four times the narrow phase's swept-box margin.
+constexpr double kRelativeMargin = 4 * math::kSweptBoxMargin;
+/// Absolute part of the margin: covers the CCD's absolute leading-coefficient cutoff (squared
+/// lengths below 1e-12) in the particle-particle position quadratic with a factor 8 to spare.
+constexpr double kAbsoluteMargin = 4e-6;
+static_assert(4 * kAbsoluteMargin * kAbsoluteMargin >= 16 * 2 * math::kNegligibleLeadingCoefficient,
+              "the absolute margin must dominate the CCD cutoff");
+/// Half-plane extra reach times |m|: the same cutoff in the unnormalised normal's units.
+constexpr double kCutoffReach = 1e-5;
+static_assert(kCutoffReach * kCutoffReach >= 16 * 2 * math::kNegligibleLeadingCoefficient,
+              "the half-plane reach must dominate the CCD cutoff");
+
+/// Largest |coordinate| of the positions a and b (2N each, b may equal a) and of the scene's
+/// half-plane points; NaN or infinity when some coordinate is not finite.
+double coordinateScale(const Scene& scene, const VecX& a, const VecX& b);
+
+inline double margin(double scale, double radius) { return kRelativeMargin * (scale + radius) + kAbsoluteMargin; }
+
+/// Particle p moving from qs to qe, as a disk of its radius plus `extra`.
+inline Box particleBox(const Scene& scene, const VecX& qs, const VecX& qe, int p, double scale, double extra) {
+  const double r = scene.radius[p];
+  const double grow = r + extra + margin(scale, r);
+  const double xs = qs[2 * p], ys = qs[2 * p + 1], xe = qe[2 * p], ye = qe[2 * p + 1];
+  return Box{(xs < xe ? xs : xe) - grow, (ys < ye ? ys : ye) - grow, (xs > xe ? xs : xe) + grow,
+             (ys > ye ? ys : ye) + grow};
+}
+
+/// Edge e with both endpoints moving from qs to qe, as a capsule of its radius plus `extra`.
+inline Box edgeBox(const Scene& scene, const VecX& qs, const VecX& qe, int e, double scale, double extra) {
+  const Edge& edge = scene.edges[e];
+  const double grow = edge.radius + extra + margin(scale, edge.radius);
+  const double xs[4] = {qs[2 * edge.i], qs[2 * edge.j], qe[2 * edge.i], qe[2 * edge.j]};
+  const double ys[4] = {qs[2 * edge.i + 1], qs[2 * edge.j + 1], qe[2 * edge.i + 1], qe[2 * edge.j + 1]};
+  Box b{xs[0], ys[0], xs[0], ys[0]};
+  for (int k = 1; k < 4; ++k) {
+    b.x0 = xs[k] < b.x0 ? xs[k] : b.x0;
+    b.x1 = xs[k] > b.x1 ? xs[k] : b.x1;
+    b.y0 = ys[k] < b.y0 ? ys[k] : b.y0;
+    b.y1 = ys[k] > b.y1 ? ys[k] : b.y1;
+  }
+  return Box{b.x0 - grow, b.y0 - grow, b.x1 + grow, b.y1 + grow};
+}
+
+/// False when particle p, moving from qs to qe, certainly stays farther than its radius plus
+/// `extra` from half-plane h's boundary line (on either side) during the whole step.
+inline bool nearHalfPlane(const Scene& scene, const VecX& qs, const VecX& qe, int p, int h, double scale,
+                          double extra) {
+  const HalfPlane& plane = scene.halfplanes[h];
+  const double r = scene.radius[p];
+  const double normal = plane.normal.norm();
+  const double s0 = (at(qs, p) - plane.point).dot(plane.normal);
+  const double s1 = (at(qe, p) - plane.point).dot(plane.normal);
+  const double reach = (r + extra + 2 * margin(scale, r)) * normal + kCutoffReach;
+  return !((s0 > reach && s1 > reach) || (s0 < -reach && s1 < -reach));
+}
+
+}  // namespace fosssim

@@ -1,0 +1,191 @@
+#include "pair_candidates.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fosssim {
+namespace {
+
+/// Fresh boxes kept aside before the grids are rebuilt: every query scans them, a rebuild costs
+/// a pass over all boxes, so about sqrt(N) balances the two (at least this many).
+constexpr size_t kMinStaleBeforeRebuild = 32;
+
+bool finiteRadii(const Scene& scene) {
+  for (double r : scene.radius)
+    if (!std::isfinite(r)) return false;
+  for (const Edge& e : scene.edges)
+    if (!std::isfinite(e.radius)) return false;
+  return true;
+}
+
+thread_local bool forcedAllPairs = false;
+
+}  // namespace
+
+bool allPairsForced() { return forcedAllPairs; }
+AllPairsScope::AllPairsScope(bool on) : previous_(forcedAllPairs) { forcedAllPairs = on; }
+AllPairsScope::~AllPairsScope() { forcedAllPairs = previous_; }
+
+double coordinateScale(const Scene& scene, const VecX& a, const VecX& b) {
+  if (!a.allFinite() || !b.allFinite()) return std::numeric_limits<double>::infinity();
+  double s = a.size() > 0 ? std::max(a.lpNorm<Eigen::Infinity>(), b.lpNorm<Eigen::Infinity>()) : 0.0;
+  for (const HalfPlane& h : scene.halfplanes) {
+    if (!h.point.allFinite() || !h.normal.allFinite()) return std::numeric_limits<double>::infinity();
+    s = std::max(s, h.point.lpNorm<Eigen::Infinity>());
+  }
+  return s;
+}
+
+void PairCandidates::build(const Scene& scene, const VecX& qs, const VecX& qe, double extra) {
+  scene_ = &scene;
+  qs_ = &qs;
+  qe_ = &qe;
+  extra_ = extra;
+  scale_ = coordinateScale(scene, qs, qe);
+  allPairs_ = !std::isfinite(scale_) || !std::isfinite(extra) || !finiteRadii(scene);
+  staleParticles_.clear();
+  staleEdges_.clear();
+  if (allPairs_) return;
+  const int n = scene.numParticles(), edges = static_cast<int>(scene.edges.size());
+  particleBoxes_.resize(n);
+  for (int p = 0; p < n; ++p) particleBoxes_[p] = particleBox(scene, qs, qe, p, scale_, extra);
+  particleStale_.assign(n, 0);
+  if (edges > 0) {  // no edge storage at all for scenes without edges
+    edgeBoxes_.resize(edges);
+    for (int e = 0; e < edges; ++e) edgeBoxes_[e] = edgeBox(scene, qs, qe, e, scale_, extra);
+    edgeStale_.assign(edges, 0);
+    incidentStart_.assign(n + 1, 0);
+    for (const Edge& e : scene.edges) ++incidentStart_[e.i + 1], ++incidentStart_[e.j + 1];
+    for (int p = 0; p < n; ++p) incidentStart_[p + 1] += incidentStart_[p];
+    incident_.resize(2 * static_cast<size_t>(edges));
+    // Counting sort: filling each row from its end, edges in descending order, leaves the rows
+    // ascending and every row start one slot to the right; shift them back.
+    for (int e = edges - 1; e >= 0; --e) {
+      incident_[--incidentStart_[scene.edges[e].i + 1]] = e;
+      incident_[--incidentStart_[scene.edges[e].j + 1]] = e;
+    }
+    for (int p = 0; p < n; ++p) incidentStart_[p] = incidentStart_[p + 1];
+    incidentStart_[n] = 2 * edges;
+  }
+  index();
+}
+
+void PairCandidates::index() {
+  for (int p : staleParticles_) particleStale_[p] = 0;
+  for (int e : staleEdges_) edgeStale_[e] = 0;
+  staleParticles_.clear();
+  staleEdges_.clear();
+  particleGrid_.build(particleBoxes_.data(), scene_->numParticles());
+  if (!scene_->edges.empty()) edgeGrid_.build(edgeBoxes_.data(), static_cast<int>(scene_->edges.size()));
+}
+
+bool PairCandidates::withinScale(int p) const {
+  const double x = (*qe_)[2 * p], y = (*qe_)[2 * p + 1];
+  return std::fabs(x) <= scale_ && std::fabs(y) <= scale_;  // false for NaN
+}
+
+void PairCandidates::update(int p) {
+  if (allPairs_) return;
+  if (!withinScale(p)) {  // the margins' scale no longer holds (or the state is not finite)
+    build(*scene_, *qs_, *qe_, extra_);
+    return;
+  }
+  particleBoxes_[p] = particleBox(*scene_, *qs_, *qe_, p, scale_, extra_);
+  if (!particleStale_[p]) particleStale_[p] = 1, staleParticles_.push_back(p);
+  if (!scene_->edges.empty()) {
+    for (int k = incidentStart_[p]; k < incidentStart_[p + 1]; ++k) {
+      const int e = incident_[k];
+      edgeBoxes_[e] = edgeBox(*scene_, *qs_, *qe_, e, scale_, extra_);
+      if (!edgeStale_[e]) edgeStale_[e] = 1, staleEdges_.push_back(e);
+    }
+  }
+  const size_t limit = std::max(kMinStaleBeforeRebuild,
+                                static_cast<size_t>(std::sqrt(static_cast<double>(scene_->numParticles()))));
+  if (staleParticles_.size() + staleEdges_.size() > limit) index();
+}
+
+template <class Visit>
+void PairCandidates::forEachParticleNear(const Box& b, Visit&& visit) const {
+  particleGrid_.forEachOverlap(b, [&](int j) {
+    if (!particleStale_[j]) visit(j);
+  });
+  for (int j : staleParticles_)
+    if (overlap(b, particleBoxes_[j])) visit(j);
+}
+
+template <class Visit>
+void PairCandidates::forEachEdgeNear(const Box& b, Visit&& visit) const {
+  if (scene_->edges.empty()) return;
+  edgeGrid_.forEachOverlap(b, [&](int e) {
+    if (!edgeStale_[e]) visit(e);
+  });
+  for (int e : staleEdges_)
+    if (overlap(b, edgeBoxes_[e])) visit(e);
+}
+
+void PairCandidates::particlesOf(int i, int after, std::vector<int>& out) const {
+  const int first = std::max(i, after) + 1, n = scene_->numParticles();
+  if (allPairs_) {
+    for (int j = first; j < n; ++j) out.push_back(j);
+    return;
+  }
+  const size_t begin = out.size();
+  forEachParticleNear(particleBoxes_[i], [&](int j) {
+    if (j >= first) out.push_back(j);
+  });
+  std::sort(out.begin() + static_cast<long>(begin), out.end());
+}
+
+void PairCandidates::edgesOf(int i, int after, std::vector<int>& out) const {
+  const std::vector<Edge>& edges = scene_->edges;
+  const int count = static_cast<int>(edges.size());
+  if (allPairs_) {
+    for (int e = after + 1; e < count; ++e)
+      if (edges[e].i != i && edges[e].j != i) out.push_back(e);
+    return;
+  }
+  const size_t begin = out.size();
+  forEachEdgeNear(particleBoxes_[i], [&](int e) {
+    if (e > after && edges[e].i != i && edges[e].j != i) out.push_back(e);
+  });
+  std::sort(out.begin() + static_cast<long>(begin), out.end());
+}
+
+void PairCandidates::pairsOf(int p, std::vector<uint64_t>& keys) const {
+  const std::vector<Edge>& edges = scene_->edges;
+  const int n = scene_->numParticles(), planes = static_cast<int>(scene_->halfplanes.size());
+  auto particlePair = [&](int q) {
+    if (q != p) keys.push_back(q < p ? pairKey(q, PairKind::ParticleParticle, p) : pairKey(p, PairKind::ParticleParticle, q));
+  };
+  auto edgePair = [&](int q, int e) {
+    if (edges[e].i != q && edges[e].j != q) keys.push_back(pairKey(q, PairKind::ParticleEdge, e));
+  };
+  if (allPairs_) {
+    for (int q = 0; q < n; ++q) particlePair(q);
+    for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
+      edgePair(p, e);
+      if (edges[e].i == p || edges[e].j == p)
+        for (int q = 0; q < n; ++q) edgePair(q, e);
+    }
+  } else {
+    forEachParticleNear(particleBoxes_[p], particlePair);
+    forEachEdgeNear(particleBoxes_[p], [&](int e) { edgePair(p, e); });
+    if (!edges.empty()) {
+      for (int k = incidentStart_[p]; k < incidentStart_[p + 1]; ++k) {
+        const int e = incident_[k];
+        forEachParticleNear(edgeBoxes_[e], [&](int q) { edgePair(q, e); });
+      }
+    }
+  }
+  for (int h = 0; h < planes; ++h)
+    if (nearPlane(p, h)) keys.push_back(pairKey(p, PairKind::ParticleHalfPlane, h));
+}
+
+size_t PairCandidates::memoryBytes() const {
+  return particleBoxes_.capacity() * sizeof(Box) + edgeBoxes_.capacity() * sizeof(Box) +
+         particleGrid_.memoryBytes() + edgeGrid_.memoryBytes() + particleStale_.capacity() +
+         edgeStale_.capacity() + (staleParticles_.capacity() + staleEdges_.capacity()) * sizeof(int) +
+         (incidentStart_.capacity() + incident_.capacity()) * sizeof(int);
+}
+
+}  // namespace fosssim

@@ -1,0 +1,107 @@
+// Internal header: the broad phase. Which pairs of a scene may interact during a step, in the
+// reference's pair order.
+//
+// Every particle and edge gets a box (pair_bounds.h): its motion from qs to qe (equal for the
+// static uses: penalty force, discrete handler), grown by its radius, an optional extra reach and
+// the exactness margin. Pairs whose boxes do not overlap provably do not interact; the others are
+// the candidates. Half-planes are few and infinite: each particle is tested against each of them
+// by its signed distance at the two ends of its motion.
+//
+// Candidates come in the reference's order: row by row (particle i), particles j > i ascending,
+// then edges not incident to i ascending, then half-planes ascending. A pair is also named by a
+// 64-bit key that sorts in that order (pairKey), for the incremental searches.
+//
+// Positions may change after the build (continuous-time responses, hybrid impulse passes, rigid
+// zones): update(p) refreshes particle p's box and its edges' boxes. Their old grid entries are
+// skipped from then on and the fresh boxes are kept in short lists that every query scans; when
+// those lists grow long the grids are rebuilt.
+//
+// A state with a non-finite coordinate has no meaningful boxes: the candidates are then every
+// pair (allPairs()), exactly what the reference checks.
+#pragma once
+
+#include "box_grid.h"
+#include "pair_bounds.h"
+
+#include "fosssim/core/collision_log.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace fosssim {
+
+/// Sorts as the reference's pair order: particle, then kind (PP, PE, PH), then the other index.
+inline uint64_t pairKey(int i, PairKind kind, int other) {
+  return (static_cast<uint64_t>(i) << 33) | (static_cast<uint64_t>(kind) << 31) | static_cast<uint64_t>(other);
+}
+inline int keyParticle(uint64_t key) { return static_cast<int>(key >> 33); }
+inline PairKind keyKind(uint64_t key) { return static_cast<PairKind>((key >> 31) & 3u); }
+inline int keyOther(uint64_t key) { return static_cast<int>(key & 0x7FFFFFFFu); }
+
+/// Whether the step being taken on this thread must check every pair (HandlerOptions::allPairs).
+/// Simulator::step sets it for its duration; the penalty force reads it (a force sees only the
+/// scene and the state, so this is its only way to hear of the option). False outside steps.
+bool allPairsForced();
+class AllPairsScope {
+ public:
+  explicit AllPairsScope(bool on);
+  ~AllPairsScope();
+  AllPairsScope(const AllPairsScope&) = delete;
+  AllPairsScope& operator=(const AllPairsScope&) = delete;
+
+ private:
+  bool previous_;
+};
+
+class PairCandidates {
+ public:
+  /// Boxes and grids for the motion qs -> qe (pass the same vector twice for static positions).
+  /// `extra` widens every particle and edge box (the penalty force passes half its thickness, so
+  /// that boxes meet within the pair's thickness) and the half-plane reach by 2 * extra.
+  /// `scene`, `qs` and `qe` must outlive the use (qe may change between update() calls).
+  void build(const Scene& scene, const VecX& qs, const VecX& qe, double extra = 0.0);
+
+  /// Every pair is a candidate (non-finite state or forced).
+  bool allPairs() const { return allPairs_; }
+  /// Makes every pair a candidate until the next build (the reference's all-pairs sweep).
+  void forceAllPairs() { allPairs_ = true; }
+
+  /// Appends the particles j > max(i, after) whose boxes meet particle i's, ascending.
+  void particlesOf(int i, int after, std::vector<int>& out) const;
+  /// Appends the edges e > after not incident to i whose boxes meet particle i's, ascending.
+  void edgesOf(int i, int after, std::vector<int>& out) const;
+  /// Whether particle i may reach half-plane h.
+  bool nearPlane(int i, int h) const {
+    return allPairs_ || nearHalfPlane(*scene_, *qs_, *qe_, i, h, scale_, 2 * extra_);
+  }
+
+  /// Particle p's end position changed (qe as given at the build, changed in place).
+  void update(int p);
+  /// Appends the keys of every candidate pair that involves particle p (as the particle, the
+  /// other particle or an edge endpoint), unsorted; a pair may appear more than once.
+  void pairsOf(int p, std::vector<uint64_t>& keys) const;
+
+  /// Bytes held (capacity), for the benchmark's memory figures.
+  size_t memoryBytes() const;
+
+ private:
+  void index();  ///< (re)builds the grids from the current boxes
+  bool withinScale(int p) const;
+  template <class Visit>
+  void forEachParticleNear(const Box& b, Visit&& visit) const;
+  template <class Visit>
+  void forEachEdgeNear(const Box& b, Visit&& visit) const;
+
+  const Scene* scene_ = nullptr;
+  const VecX* qs_ = nullptr;
+  const VecX* qe_ = nullptr;
+  double extra_ = 0, scale_ = 0;
+  bool allPairs_ = false;
+  std::vector<Box> particleBoxes_, edgeBoxes_;
+  BoxGrid particleGrid_, edgeGrid_;
+  std::vector<char> particleStale_, edgeStale_;  ///< grid entry out of date
+  std::vector<int> staleParticles_, staleEdges_;
+  std::vector<int> incidentStart_, incident_;  ///< edges of each particle (compressed rows)
+};
+
+}  // namespace fosssim
