@@ -6,87 +6,123 @@
 namespace fosssim {
 namespace {
 
-/// The cell size is this percentile of the boxes' extents: most boxes cover at most 2 x 2
-/// cells, and a few large or fast ones neither coarsen the grid nor (up to kMaxCellsPerBox
-/// cells) leave it.
-constexpr double kCellPercentile = 0.9;
+/// Ordinary boxes are at most this fraction of the cell size wide (and tall): their exact
+/// extent then stays below the cell size whatever the rounding of the bounds.
+constexpr double kExtentSlack = 0.999;
 
-/// Buckets per registered cell entry (at least): keeps hash collisions rare.
-constexpr int kBucketsPerEntry = 2;
+/// When outliers make the corners' bounding box too large, the grid covers this central range
+/// of the corners' coordinates (per axis, from both ends) and files the rest at the border.
+constexpr double kTrimmedFraction = 0.01;
+
+double extent(const Box& b) { return std::max(b.x1 - b.x0, b.y1 - b.y0); }
 
 }  // namespace
 
-void BoxGrid::build(const Box* boxes, int count) {
-  boxes_ = boxes;
-  count_ = count;
-  large_.clear();
+void BoxGrid::clear() {
+  count_ = 0;
+  start_.assign(2, 0);
+  columns_ = rows_ = 1;
+  boxes_.clear();
+  ids_.clear();
+  largeBoxes_.clear();
+  largeIds_.clear();
+}
 
-  // Cell size and origin from the finite boxes (boxes with infinite bounds come from infinite
-  // margins and go to the large list).
-  extents_.clear();
-  double minX = 0, minY = 0;
-  bool first = true;
+void BoxGrid::build(const Box* boxes, int count, const int* ids) {
+  clear();
+  count_ = count;
+  auto idOf = [&](int k) { return ids ? ids[k] : k; };
+  // The cell size: the largest extent among the boxes no larger than kLargeFactor medians.
+  scratch_.clear();
   for (int k = 0; k < count; ++k) {
-    const Box& b = boxes[k];
-    const double extent = std::max(b.x1 - b.x0, b.y1 - b.y0);
-    if (!std::isfinite(extent)) continue;
-    extents_.push_back(extent);
-    minX = first ? b.x0 : std::min(minX, b.x0);
-    minY = first ? b.y0 : std::min(minY, b.y0);
-    first = false;
+    const double e = extent(boxes[idOf(k)]);
+    if (std::isfinite(e)) scratch_.push_back(e);
   }
-  double cell = 1.0;
-  if (!extents_.empty()) {
-    const auto nth = extents_.begin() + static_cast<long>(kCellPercentile * (extents_.size() - 1));
-    std::nth_element(extents_.begin(), nth, extents_.end());
-    if (*nth > 0 && std::isfinite(*nth)) cell = *nth;
+  if (scratch_.empty()) {
+    for (int k = 0; k < count; ++k) largeBoxes_.push_back(boxes[idOf(k)]), largeIds_.push_back(idOf(k));
+    return;
   }
+  auto middle = scratch_.begin() + static_cast<long>(scratch_.size() / 2);
+  std::nth_element(scratch_.begin(), middle, scratch_.end());
+  const double limit = kLargeFactor * *middle;
+  double largest = 0;
+  for (double e : scratch_)
+    if (e <= limit && e > largest) largest = e;
+  double cell = largest > 0 ? largest / kExtentSlack : 1.0;
+
+  // Which boxes are ordinary, and the bounding box of their lower corners.
+  home_.resize(count);
+  double minX = 0, minY = 0, maxX = 0, maxY = 0;
+  int ordinary = 0;
+  for (int k = 0; k < count; ++k) {
+    const Box& b = boxes[idOf(k)];
+    const bool large = !(b.x1 - b.x0 <= kExtentSlack * cell && b.y1 - b.y0 <= kExtentSlack * cell);
+    home_[k] = large ? -1 : 0;
+    if (large) {
+      largeBoxes_.push_back(b);
+      largeIds_.push_back(idOf(k));
+      continue;
+    }
+    minX = ordinary ? std::min(minX, b.x0) : b.x0;
+    maxX = ordinary ? std::max(maxX, b.x0) : b.x0;
+    minY = ordinary ? std::min(minY, b.y0) : b.y0;
+    maxY = ordinary ? std::max(maxY, b.y0) : b.y0;
+    ++ordinary;
+  }
+  if (ordinary == 0) return;
+  const double maxCells = kCellsPerBox * ordinary + 64;
+  auto cellsFor = [&](double c) { return (std::floor((maxX - minX) / c) + 1) * (std::floor((maxY - minY) / c) + 1); };
+  if (cellsFor(cell) > maxCells) {
+    // A few far-away corners must not stretch the grid: keep the central range of each axis.
+    auto trim = [&](bool yAxis, double& lo, double& hi) {
+      scratch_.clear();
+      for (int k = 0; k < count; ++k)
+        if (home_[k] >= 0) scratch_.push_back(yAxis ? boxes[idOf(k)].y0 : boxes[idOf(k)].x0);
+      const long skip = static_cast<long>(kTrimmedFraction * static_cast<double>(scratch_.size()));
+      std::nth_element(scratch_.begin(), scratch_.begin() + skip, scratch_.end());
+      lo = scratch_[skip];
+      std::nth_element(scratch_.begin(), scratch_.end() - 1 - skip, scratch_.end());
+      hi = scratch_[scratch_.size() - 1 - skip];
+    };
+    trim(false, minX, maxX);
+    trim(true, minY, maxY);
+    // Boxes spread thin: larger cells (still exact, just fuller).
+    const double cells = cellsFor(cell);
+    if (cells > maxCells) cell *= std::sqrt(cells / maxCells) * 1.0001;
+  }
+  cell_ = cell;
+  inverseCell_ = 1.0 / cell;
   originX_ = minX;
   originY_ = minY;
-  inverseCell_ = 1.0 / cell;
+  columns_ = static_cast<int>(std::min(std::floor((maxX - minX) * inverseCell_) + 1, maxCells));
+  rows_ = static_cast<int>(std::min(std::floor((maxY - minY) * inverseCell_) + 1, maxCells / columns_ + 1));
 
-  // Count the entries, size the table, count per bucket, fill (ascending box index per bucket).
-  long entries = 0;
+  // Counting sort by home cell; entries of a cell keep ascending box order.
+  const size_t cells = static_cast<size_t>(columns_) * rows_;
+  start_.assign(cells + 1, 0);
   for (int k = 0; k < count; ++k) {
-    const long cells = cellsCovered(boxes[k]);
-    if (cells > kMaxCellsPerBox) large_.push_back(k);
-    else entries += cells;
+    if (home_[k] < 0) continue;
+    const Box& b = boxes[idOf(k)];
+    home_[k] = row(b.y0) * columns_ + column(b.x0);
+    ++start_[home_[k] + 1];
   }
-  uint32_t buckets = 16;
-  while (buckets < kBucketsPerEntry * entries && buckets < (1u << 30)) buckets <<= 1;
-  mask_ = buckets - 1;
-  start_.assign(buckets + 1, 0);
-  entries_.resize(static_cast<size_t>(entries));
-  auto forEachCell = [&](const Box& b, auto&& f) {
-    const int x0 = cellX(b.x0), x1 = cellX(b.x1), y0 = cellY(b.y0), y1 = cellY(b.y1);
-    for (int cy = y0; cy <= y1; ++cy)
-      for (int cx = x0; cx <= x1; ++cx) f(bucket(cx, cy));
-  };
-  size_t nextLarge = 0;
-  for (int k = 0; k < count; ++k) {
-    if (nextLarge < large_.size() && large_[nextLarge] == k) {
-      ++nextLarge;
-      continue;
-    }
-    forEachCell(boxes[k], [&](uint32_t h) { ++start_[h + 1]; });
+  for (size_t c = 0; c < cells; ++c) start_[c + 1] += start_[c];
+  boxes_.resize(ordinary);
+  ids_.resize(ordinary);
+  for (int k = 0; k < count; ++k) {  // start_[c] runs ahead as the cursor of cell c ...
+    if (home_[k] < 0) continue;
+    const int e = start_[home_[k]]++;
+    boxes_[e] = boxes[idOf(k)];
+    ids_[e] = idOf(k);
   }
-  for (uint32_t h = 0; h < buckets; ++h) start_[h + 1] += start_[h];
-  // Fill using start_[h] as the cursor, then shift back: start_[h] ends at the old start_[h+1].
-  nextLarge = 0;
-  for (int k = 0; k < count; ++k) {
-    if (nextLarge < large_.size() && large_[nextLarge] == k) {
-      ++nextLarge;
-      continue;
-    }
-    forEachCell(boxes[k], [&](uint32_t h) { entries_[start_[h]++] = k; });
-  }
-  for (uint32_t h = buckets; h > 0; --h) start_[h] = start_[h - 1];
+  for (size_t c = cells; c > 0; --c) start_[c] = start_[c - 1];  // ... and is moved back
   start_[0] = 0;
 }
 
 size_t BoxGrid::memoryBytes() const {
-  return start_.capacity() * sizeof(int) + entries_.capacity() * sizeof(int) + large_.capacity() * sizeof(int) +
-         extents_.capacity() * sizeof(double);
+  return start_.capacity() * sizeof(int) + boxes_.capacity() * sizeof(Box) + ids_.capacity() * sizeof(int) +
+         largeBoxes_.capacity() * sizeof(Box) + largeIds_.capacity() * sizeof(int) + home_.capacity() * sizeof(int) +
+         scratch_.capacity() * sizeof(double);
 }
 
 }  // namespace fosssim

@@ -108,6 +108,7 @@ void CollisionSearch::detectChanged(const Scene& scene, const VecX& qs, const Ve
     const StepTimer timer(ctx.timing, ctx.stats->broadPhase);
     if (mark_.size() != static_cast<size_t>(n)) mark_.assign(n, 0);
     for (int p : changed) candidates_.update(p);
+    candidates_.settle(true);
     keys_.clear();
     for (int p : changed) {
       if (mark_[p]) continue;
@@ -175,10 +176,16 @@ void CollisionSearch::sweep(const Scene& scene, const VecX& qs, VecX& qe, StepCo
     for (int k = 0; k < count; ++k) before[k] = at(qe, particles[k]);
     onHit(hit);
     const auto rebroadStart = ctx.timing ? std::chrono::steady_clock::now() : walkStart;
+    bool moved = false;
+    for (int k = 0; k < count; ++k) {
+      if (at(qe, particles[k]) == before[k]) continue;
+      candidates_.update(particles[k]);
+      moved = true;
+    }
+    if (moved) candidates_.settle(false);
     for (int k = 0; k < count; ++k) {
       const int p = particles[k];
       if (at(qe, p) == before[k]) continue;
-      candidates_.update(p);
       const size_t first = extra_.size();
       candidates_.pairsOf(p, extra_);
       size_t kept = first;

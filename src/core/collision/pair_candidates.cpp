@@ -6,9 +6,12 @@
 namespace fosssim {
 namespace {
 
-/// Fresh boxes kept aside before the grids are rebuilt: every query scans them, a rebuild costs
-/// a pass over all boxes, so about sqrt(N) balances the two (at least this many).
-constexpr size_t kMinStaleBeforeRebuild = 32;
+/// Fresh boxes scanned by every query before they are filed (in stale grids for a batch of
+/// queries, else by rebuilding the main grids: a rebuild costs a pass over all boxes, a query
+/// scans the fresh ones, so about sqrt(N) balances one query per refreshed box).
+constexpr size_t kMinStaleBeforeFiling = 32;
+/// A batch files its fresh boxes in stale grids until they are this fraction of all boxes.
+constexpr size_t kStaleFractionInverse = 4;
 
 bool finiteRadii(const Scene& scene) {
   for (double r : scene.radius)
@@ -75,6 +78,7 @@ void PairCandidates::index() {
   for (int e : staleEdges_) edgeStale_[e] = 0;
   staleParticles_.clear();
   staleEdges_.clear();
+  staleParticlesFiled_ = staleEdgesFiled_ = 0;
   particleGrid_.build(particleBoxes_.data(), scene_->numParticles());
   if (!scene_->edges.empty()) edgeGrid_.build(edgeBoxes_.data(), static_cast<int>(scene_->edges.size()));
 }
@@ -91,36 +95,65 @@ void PairCandidates::update(int p) {
     return;
   }
   particleBoxes_[p] = particleBox(*scene_, *qs_, *qe_, p, scale_, extra_);
+  // A box filed in a stale grid changed again: that grid no longer holds, scan them all.
   if (!particleStale_[p]) particleStale_[p] = 1, staleParticles_.push_back(p);
+  else staleParticlesFiled_ = 0;
   if (!scene_->edges.empty()) {
     for (int k = incidentStart_[p]; k < incidentStart_[p + 1]; ++k) {
       const int e = incident_[k];
       edgeBoxes_[e] = edgeBox(*scene_, *qs_, *qe_, e, scale_, extra_);
       if (!edgeStale_[e]) edgeStale_[e] = 1, staleEdges_.push_back(e);
+      else staleEdgesFiled_ = 0;
     }
   }
-  const size_t limit = std::max(kMinStaleBeforeRebuild,
-                                static_cast<size_t>(std::sqrt(static_cast<double>(scene_->numParticles()))));
-  if (staleParticles_.size() + staleEdges_.size() > limit) index();
+}
+
+void PairCandidates::settle(bool batch) {
+  if (allPairs_) return;
+  const size_t stale = staleParticles_.size() + staleEdges_.size();
+  const size_t n = static_cast<size_t>(scene_->numParticles()) + scene_->edges.size();
+  if (stale <= kMinStaleBeforeFiling) return;
+  if (batch && stale * kStaleFractionInverse < n) {
+    if (staleParticlesFiled_ < staleParticles_.size()) {
+      staleParticleGrid_.build(particleBoxes_.data(), static_cast<int>(staleParticles_.size()), staleParticles_.data());
+      staleParticlesFiled_ = staleParticles_.size();
+    }
+    if (staleEdgesFiled_ < staleEdges_.size()) {
+      staleEdgeGrid_.build(edgeBoxes_.data(), static_cast<int>(staleEdges_.size()), staleEdges_.data());
+      staleEdgesFiled_ = staleEdges_.size();
+    }
+    return;
+  }
+  if (batch || stale > std::max(kMinStaleBeforeFiling, static_cast<size_t>(std::sqrt(static_cast<double>(n))))) index();
 }
 
 template <class Visit>
 void PairCandidates::forEachParticleNear(const Box& b, Visit&& visit) const {
+  if (staleParticles_.empty()) {
+    particleGrid_.forEachOverlap(b, visit);
+    return;
+  }
   particleGrid_.forEachOverlap(b, [&](int j) {
     if (!particleStale_[j]) visit(j);
   });
-  for (int j : staleParticles_)
-    if (overlap(b, particleBoxes_[j])) visit(j);
+  if (staleParticlesFiled_ > 0) staleParticleGrid_.forEachOverlap(b, visit);
+  for (size_t k = staleParticlesFiled_; k < staleParticles_.size(); ++k)
+    if (overlap(b, particleBoxes_[staleParticles_[k]])) visit(staleParticles_[k]);
 }
 
 template <class Visit>
 void PairCandidates::forEachEdgeNear(const Box& b, Visit&& visit) const {
   if (scene_->edges.empty()) return;
+  if (staleEdges_.empty()) {
+    edgeGrid_.forEachOverlap(b, visit);
+    return;
+  }
   edgeGrid_.forEachOverlap(b, [&](int e) {
     if (!edgeStale_[e]) visit(e);
   });
-  for (int e : staleEdges_)
-    if (overlap(b, edgeBoxes_[e])) visit(e);
+  if (staleEdgesFiled_ > 0) staleEdgeGrid_.forEachOverlap(b, visit);
+  for (size_t k = staleEdgesFiled_; k < staleEdges_.size(); ++k)
+    if (overlap(b, edgeBoxes_[staleEdges_[k]])) visit(staleEdges_[k]);
 }
 
 void PairCandidates::particlesOf(int i, int after, std::vector<int>& out) const {
@@ -183,7 +216,8 @@ void PairCandidates::pairsOf(int p, std::vector<uint64_t>& keys) const {
 
 size_t PairCandidates::memoryBytes() const {
   return particleBoxes_.capacity() * sizeof(Box) + edgeBoxes_.capacity() * sizeof(Box) +
-         particleGrid_.memoryBytes() + edgeGrid_.memoryBytes() + particleStale_.capacity() +
+         particleGrid_.memoryBytes() + edgeGrid_.memoryBytes() + staleParticleGrid_.memoryBytes() +
+         staleEdgeGrid_.memoryBytes() + particleStale_.capacity() +
          edgeStale_.capacity() + (staleParticles_.capacity() + staleEdges_.capacity()) * sizeof(int) +
          (incidentStart_.capacity() + incident_.capacity()) * sizeof(int);
 }
