@@ -29,6 +29,9 @@ struct HandlerOptions {
   /// Check every pair in the reference's order, without the broad phase (the results are the
   /// same; this exists so that tests and measurements can show it).
   bool allPairs = false;
+  /// Threads for the broad and narrow phase (1: none besides the caller's). The results are the
+  /// same for every count: work is split into ranges whose results are joined in pair order.
+  int threads = 1;
 };
 
 /// Everything a handler may use during one step besides the scene and the two states.

@@ -19,6 +19,7 @@ struct StepStats {
   long collisions = 0;       ///< collisions found by the impulse phase (all passes)
   int impulsePasses = 0;     ///< hybrid: detection passes of the impulse phase
   bool failsafeUsed = false; ///< hybrid: the rigid impact-zone failsafe ran
+  int failsafeRounds = 0;    ///< hybrid: rigid moves of the failsafe (each followed by a detection)
   int zones = 0;             ///< hybrid: impact zones at the end of the failsafe
   int largestZone = 0;       ///< hybrid: particles in the largest zone
 

@@ -14,6 +14,9 @@ constexpr double kExtentSlack = 0.999;
 /// of the corners' coordinates (per axis, from both ends) and files the rest at the border.
 constexpr double kTrimmedFraction = 0.01;
 
+/// Extents sampled for the median that sets the cell size.
+constexpr size_t kMedianSample = 1024;
+
 double extent(const Box& b) { return std::max(b.x1 - b.x0, b.y1 - b.y0); }
 
 }  // namespace
@@ -28,28 +31,32 @@ void BoxGrid::clear() {
   largeIds_.clear();
 }
 
-void BoxGrid::build(const Box* boxes, int count, const int* ids) {
-  clear();
-  count_ = count;
-  auto idOf = [&](int k) { return ids ? ids[k] : k; };
-  // The cell size: the largest extent among the boxes no larger than kLargeFactor medians.
+double BoxGrid::chooseCell(const Box* boxes, int count, const int* ids) {
+  // The largest extent among the boxes no larger than kLargeFactor medians.
   scratch_.clear();
   for (int k = 0; k < count; ++k) {
-    const double e = extent(boxes[idOf(k)]);
+    const double e = extent(boxes[ids ? ids[k] : k]);
     if (std::isfinite(e)) scratch_.push_back(e);
   }
-  if (scratch_.empty()) {
-    for (int k = 0; k < count; ++k) largeBoxes_.push_back(boxes[idOf(k)]), largeIds_.push_back(idOf(k));
-    return;
-  }
-  auto middle = scratch_.begin() + static_cast<long>(scratch_.size() / 2);
-  std::nth_element(scratch_.begin(), middle, scratch_.end());
+  if (scratch_.empty()) return 1.0;  // every box is infinite: all go to the large list
+  // The median of an evenly spaced sample (the grid affects speed only, never results).
+  const size_t stride = std::max<size_t>(1, scratch_.size() / kMedianSample);
+  size_t sampled = 0;
+  for (size_t k = 0; k < scratch_.size(); k += stride) std::swap(scratch_[sampled++], scratch_[k]);
+  auto middle = scratch_.begin() + static_cast<long>(sampled / 2);
+  std::nth_element(scratch_.begin(), middle, scratch_.begin() + static_cast<long>(sampled));
   const double limit = kLargeFactor * *middle;
   double largest = 0;
   for (double e : scratch_)
     if (e <= limit && e > largest) largest = e;
-  double cell = largest > 0 ? largest / kExtentSlack : 1.0;
+  return largest > 0 ? largest / kExtentSlack : 1.0;
+}
 
+void BoxGrid::build(const Box* boxes, int count, const int* ids, double imposedCell) {
+  clear();
+  count_ = count;
+  auto idOf = [&](int k) { return ids ? ids[k] : k; };
+  double cell = imposedCell > 0 ? imposedCell : chooseCell(boxes, count, ids);
   // Which boxes are ordinary, and the bounding box of their lower corners.
   home_.resize(count);
   double minX = 0, minY = 0, maxX = 0, maxY = 0;
@@ -74,10 +81,13 @@ void BoxGrid::build(const Box* boxes, int count, const int* ids) {
   auto cellsFor = [&](double c) { return (std::floor((maxX - minX) / c) + 1) * (std::floor((maxY - minY) / c) + 1); };
   if (cellsFor(cell) > maxCells) {
     // A few far-away corners must not stretch the grid: keep the central range of each axis.
+    // Percentiles of an evenly spaced sample of the corners (again: speed only, never results).
+    const int stride = std::max(1, count / static_cast<int>(kMedianSample));
     auto trim = [&](bool yAxis, double& lo, double& hi) {
       scratch_.clear();
-      for (int k = 0; k < count; ++k)
+      for (int k = 0; k < count; k += stride)
         if (home_[k] >= 0) scratch_.push_back(yAxis ? boxes[idOf(k)].y0 : boxes[idOf(k)].x0);
+      if (scratch_.empty()) return;
       const long skip = static_cast<long>(kTrimmedFraction * static_cast<double>(scratch_.size()));
       std::nth_element(scratch_.begin(), scratch_.begin() + skip, scratch_.end());
       lo = scratch_[skip];

@@ -42,8 +42,11 @@ class BoxGrid {
 
   /// Indexes the boxes boxes[id] for id in ids[0, count) (ids == nullptr: id = 0 .. count-1).
   /// Boxes are copied; they must not contain NaN (callers check every pair for non-finite
-  /// states).
-  void build(const Box* boxes, int count, const int* ids = nullptr);
+  /// states). `cell` > 0 imposes the cell size (a small grid of boxes like another grid's saves
+  /// choosing it); 0 chooses it from the boxes.
+  void build(const Box* boxes, int count, const int* ids = nullptr, double cell = 0);
+  /// The cell size of the last build.
+  double cellSize() const { return cell_; }
   /// Empty index.
   void clear();
 
@@ -56,6 +59,7 @@ class BoxGrid {
   size_t memoryBytes() const;
 
  private:
+  double chooseCell(const Box* boxes, int count, const int* ids);
   int column(double x) const { return clamp((x - originX_) * inverseCell_, columns_); }
   int row(double y) const { return clamp((y - originY_) * inverseCell_, rows_); }
   /// floor(v) clamped to [0, n - 1]; monotone in v, so ranges of coordinates map to ranges.

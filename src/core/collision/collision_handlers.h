@@ -65,7 +65,6 @@ class HybridHandler final : public CollisionHandler {
   std::vector<int> touched_;   ///< particles whose end position the last responses or rigid moves changed
   std::vector<char> marked_;   ///< N: scratch for touched_
   ImpactZones zones_;
-  VecX predicted_;  ///< 2N: the end positions before the failsafe moves zones rigidly (zone members only)
   VecX beforeObserver_;  ///< 2N: the end positions handed to the mid-step observer
 };
 

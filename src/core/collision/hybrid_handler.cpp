@@ -71,7 +71,6 @@ void HybridHandler::failsafe(const Scene& scene, const State& start, State& stat
   // narrow phase.
   StepContext ctx = stepCtx;
   ctx.timing = false;
-  if (predicted_.size() != state.x.size()) predicted_ = state.x;
   auto grow = [&]() {
     bool changed = false;
     for (const Collision& c : collisions_) changed = zones_.add(scene, c) || changed;
@@ -89,14 +88,12 @@ void HybridHandler::failsafe(const Scene& scene, const State& start, State& stat
     // Each round fits the rigid motions to the positions the previous round left (zones that did
     // not change are refitted to their own rigid motion): the reference's sequencing, which
     // replaying its trajectories reproduces bit for bit, unlike fitting every round to the
-    // integrator's prediction. Only zone members are read and moved.
-    for (int p : zones_.members()) at(predicted_, p) = at(state.x, p);
-    zones_.moveRigidly(scene, start.x, predicted_, state.x);
-    // A detection again only for pairs with a particle the move changed (bit for bit: an
-    // immovable zone, put back at its start, stays unchanged from the second round on).
+    // integrator's prediction. Only zone members are read and moved. A detection follows only
+    // for pairs with a particle the move changed (bit for bit: an immovable zone, put back at its
+    // start, stays unchanged from the second round on).
     touched_.clear();
-    for (int p : zones_.members())
-      if (std::memcmp(&state.x[2 * p], &predicted_[2 * p], 2 * sizeof(double)) != 0) touched_.push_back(p);
+    zones_.moveRigidly(scene, start.x, state.x, touched_);
+    ++ctx.stats->failsafeRounds;
     collisions_.swap(previous_);
     search_.detectChanged(scene, start.x, state.x, ctx, previous_, touched_, collisions_);
   } while (grow());

@@ -19,11 +19,12 @@ class ImpactZones {
   void reset(int n);
   /// Adds a collision's particles as a zone (merging); returns true if the zone set changed.
   bool add(const Scene& scene, const Collision& c);
-  /// Moves every zone rigidly: from `start` positions along the mean of `predicted`'s motion
-  /// (translation of the centre of mass, rotation by the angular displacement L/I), writing the
-  /// zone particles' positions into x. Immovable zones stay at `start`. Other particles untouched.
-  void moveRigidly(const Scene& scene, const VecX& start, const VecX& predicted, VecX& x);
-  /// The particles in some zone (in the order they joined).
+  /// Moves every zone rigidly: from `start` positions along the mean of the motion to the
+  /// positions in x (translation of the centre of mass, rotation by the angular displacement
+  /// L/I), writing the zone particles' new positions into x and appending those that changed (bit
+  /// for bit) to `changed`. Immovable zones stay at `start`. Other particles untouched.
+  void moveRigidly(const Scene& scene, const VecX& start, VecX& x, std::vector<int>& changed);
+  /// The particles in some zone (ascending up to the last moveRigidly, then in joining order).
   const std::vector<int>& members() const { return members_; }
   /// Number of zones and the size of the largest.
   void sizes(int& zones, int& largest);
@@ -38,13 +39,18 @@ class ImpactZones {
   std::vector<int> parent_;      ///< N: union-find parent, -1 for particles in no zone
   std::vector<char> immovable_;  ///< N: per root, the zone holds a fixed particle or met a half-plane
   std::vector<int> members_;     ///< particles in some zone
+  size_t sorted_ = 0;            ///< members_[0, sorted_) is ascending (moveRigidly sorts)
   std::vector<int> slot_;        ///< N: per root, index of its accumulator (scratch)
   struct Accumulator {           ///< per zone, sums for its rigid motion
     double mass = 0, inertia = 0, angular = 0;
     Vec2 centre = Vec2::Zero(), shift = Vec2::Zero();
     bool immovable = false;
+    int root = -1;
+    double cos = 1, sin = 0;     ///< of the rotation angle
+    Vec2 base = Vec2::Zero();    ///< centre + shift
   };
   std::vector<Accumulator> accumulators_;
+  std::vector<int> memberZone_;  ///< scratch: per member (in members_ order), its accumulator
 };
 
 }  // namespace fosssim

@@ -12,6 +12,14 @@ namespace {
 constexpr size_t kMinStaleBeforeFiling = 32;
 /// A batch files its fresh boxes in stale grids until they are this fraction of all boxes.
 constexpr size_t kStaleFractionInverse = 4;
+/// Boxes that may change (continuous-time detection) are filed this fraction of their extent
+/// larger: most later changes (a particle frozen at its start by an impact zone, a rigid refit,
+/// a small impulse) then stay inside, and the filed box remains a valid, conservative bound.
+constexpr double kFiledSlack = 0.02;
+
+bool contains(const Box& outer, const Box& inner) {
+  return outer.x0 <= inner.x0 && outer.y0 <= inner.y0 && inner.x1 <= outer.x1 && inner.y1 <= outer.y1;
+}
 
 bool finiteRadii(const Scene& scene) {
   for (double r : scene.radius)
@@ -24,6 +32,12 @@ bool finiteRadii(const Scene& scene) {
 thread_local bool forcedAllPairs = false;
 
 }  // namespace
+
+Box PairCandidates::filed(const Box& b) const {
+  if (slack_ == 0) return b;
+  const double grow = slack_ * std::max(b.x1 - b.x0, b.y1 - b.y0);
+  return Box{b.x0 - grow, b.y0 - grow, b.x1 + grow, b.y1 + grow};
+}
 
 bool allPairsForced() { return forcedAllPairs; }
 AllPairsScope::AllPairsScope(bool on) : previous_(forcedAllPairs) { forcedAllPairs = on; }
@@ -39,8 +53,9 @@ double coordinateScale(const Scene& scene, const VecX& a, const VecX& b) {
   return s;
 }
 
-void PairCandidates::build(const Scene& scene, const VecX& qs, const VecX& qe, double extra) {
+void PairCandidates::build(const Scene& scene, const VecX& qs, const VecX& qe, double extra, bool updates) {
   scene_ = &scene;
+  slack_ = updates ? kFiledSlack : 0.0;
   qs_ = &qs;
   qe_ = &qe;
   extra_ = extra;
@@ -51,11 +66,11 @@ void PairCandidates::build(const Scene& scene, const VecX& qs, const VecX& qe, d
   if (allPairs_) return;
   const int n = scene.numParticles(), edges = static_cast<int>(scene.edges.size());
   particleBoxes_.resize(n);
-  for (int p = 0; p < n; ++p) particleBoxes_[p] = particleBox(scene, qs, qe, p, scale_, extra);
+  for (int p = 0; p < n; ++p) particleBoxes_[p] = filed(particleBox(scene, qs, qe, p, scale_, extra));
   particleStale_.assign(n, 0);
   if (edges > 0) {  // no edge storage at all for scenes without edges
     edgeBoxes_.resize(edges);
-    for (int e = 0; e < edges; ++e) edgeBoxes_[e] = edgeBox(scene, qs, qe, e, scale_, extra);
+    for (int e = 0; e < edges; ++e) edgeBoxes_[e] = filed(edgeBox(scene, qs, qe, e, scale_, extra));
     edgeStale_.assign(edges, 0);
     incidentStart_.assign(n + 1, 0);
     for (const Edge& e : scene.edges) ++incidentStart_[e.i + 1], ++incidentStart_[e.j + 1];
@@ -91,17 +106,24 @@ bool PairCandidates::withinScale(int p) const {
 void PairCandidates::update(int p) {
   if (allPairs_) return;
   if (!withinScale(p)) {  // the margins' scale no longer holds (or the state is not finite)
-    build(*scene_, *qs_, *qe_, extra_);
+    build(*scene_, *qs_, *qe_, extra_, slack_ > 0);
     return;
   }
-  particleBoxes_[p] = particleBox(*scene_, *qs_, *qe_, p, scale_, extra_);
-  // A box filed in a stale grid changed again: that grid no longer holds, scan them all.
-  if (!particleStale_[p]) particleStale_[p] = 1, staleParticles_.push_back(p);
-  else staleParticlesFiled_ = 0;
+  // A filed box that still holds the new one stays (a particle put back at its start, a rigid
+  // refit's rounding, a small impulse); else the fresh box is kept aside, and if the old one was
+  // filed in a stale grid, that grid no longer holds: all fresh boxes are scanned until settle().
+  const Box fresh = particleBox(*scene_, *qs_, *qe_, p, scale_, extra_);
+  if (!contains(particleBoxes_[p], fresh)) {
+    particleBoxes_[p] = filed(fresh);
+    if (!particleStale_[p]) particleStale_[p] = 1, staleParticles_.push_back(p);
+    else staleParticlesFiled_ = 0;
+  }
   if (!scene_->edges.empty()) {
     for (int k = incidentStart_[p]; k < incidentStart_[p + 1]; ++k) {
       const int e = incident_[k];
-      edgeBoxes_[e] = edgeBox(*scene_, *qs_, *qe_, e, scale_, extra_);
+      const Box freshEdge = edgeBox(*scene_, *qs_, *qe_, e, scale_, extra_);
+      if (contains(edgeBoxes_[e], freshEdge)) continue;
+      edgeBoxes_[e] = filed(freshEdge);
       if (!edgeStale_[e]) edgeStale_[e] = 1, staleEdges_.push_back(e);
       else staleEdgesFiled_ = 0;
     }
@@ -115,11 +137,13 @@ void PairCandidates::settle(bool batch) {
   if (stale <= kMinStaleBeforeFiling) return;
   if (batch && stale * kStaleFractionInverse < n) {
     if (staleParticlesFiled_ < staleParticles_.size()) {
-      staleParticleGrid_.build(particleBoxes_.data(), static_cast<int>(staleParticles_.size()), staleParticles_.data());
+      staleParticleGrid_.build(particleBoxes_.data(), static_cast<int>(staleParticles_.size()), staleParticles_.data(),
+                               particleGrid_.cellSize());
       staleParticlesFiled_ = staleParticles_.size();
     }
     if (staleEdgesFiled_ < staleEdges_.size()) {
-      staleEdgeGrid_.build(edgeBoxes_.data(), static_cast<int>(staleEdges_.size()), staleEdges_.data());
+      staleEdgeGrid_.build(edgeBoxes_.data(), static_cast<int>(staleEdges_.size()), staleEdges_.data(),
+                           edgeGrid_.cellSize());
       staleEdgesFiled_ = staleEdges_.size();
     }
     return;

@@ -60,7 +60,8 @@ class PairCandidates {
   /// `extra` widens every particle and edge box (the penalty force passes half its thickness, so
   /// that boxes meet within the pair's thickness) and the half-plane reach by 2 * extra.
   /// `scene`, `qs` and `qe` must outlive the use (qe may change between update() calls).
-  void build(const Scene& scene, const VecX& qs, const VecX& qe, double extra = 0.0);
+  /// `updates`: qe will change (update()); boxes are then filed with some slack.
+  void build(const Scene& scene, const VecX& qs, const VecX& qe, double extra = 0.0, bool updates = false);
 
   /// Every pair is a candidate (non-finite state or forced).
   bool allPairs() const { return allPairs_; }
@@ -92,6 +93,7 @@ class PairCandidates {
  private:
   void index();  ///< (re)builds the main grids from the current boxes
   bool withinScale(int p) const;
+  Box filed(const Box& b) const;  ///< b grown by the slack
   template <class Visit>
   void forEachParticleNear(const Box& b, Visit&& visit) const;
   template <class Visit>
@@ -100,7 +102,7 @@ class PairCandidates {
   const Scene* scene_ = nullptr;
   const VecX* qs_ = nullptr;
   const VecX* qe_ = nullptr;
-  double extra_ = 0, scale_ = 0;
+  double extra_ = 0, scale_ = 0, slack_ = 0;
   bool allPairs_ = false;
   std::vector<Box> particleBoxes_, edgeBoxes_;
   BoxGrid particleGrid_, edgeGrid_;
