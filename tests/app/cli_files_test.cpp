@@ -53,7 +53,7 @@ TEST_F(CliFiles, SceneWithoutReadPermission) {
   RunOptions options;
   options.asNobody = geteuid() == 0;
   const Outcome o = runFosssim({"-s", p, "-d", "0"}, options);
-  if (options.asNobody && o.exited && o.code == 125) GTEST_SKIP() << "cannot drop root privileges here";
+  if (options.asNobody && o.exited && o.code == 125) GTEST_SKIP() << "cannot run FOSSSim as the unprivileged user nobody here (no setuid, or the build is out of its reach)";
   expectFailure(o, {p + ": cannot open", "Permission denied"});
 }
 

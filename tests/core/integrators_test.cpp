@@ -124,3 +124,22 @@ TEST(Simulator, NonFiniteStateIsReportedWithStepAndParticle) {
 
 }  // namespace
 }  // namespace fosssim
+
+namespace fosssim {
+namespace {
+
+// A scene without particles is nothing to integrate, not a division by zero.
+TEST(Integrators, EmptySceneStepsWithoutError) {
+  for (const char* keyword : kAll) {
+    testing::TestScene s;
+    s.scene.integrator = keyword;
+    s.state.x.resize(0);
+    s.state.v.resize(0);
+    std::unique_ptr<Simulator> sim;
+    ASSERT_TRUE(Simulator::create(s.scene, {}, sim).isOk());
+    EXPECT_TRUE(sim->step(s.scene, s.state).isOk()) << keyword;
+  }
+}
+
+}  // namespace
+}  // namespace fosssim

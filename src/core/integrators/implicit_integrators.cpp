@@ -88,6 +88,7 @@ const VecX& ImplicitSystem::solve() {
 }
 
 Status ImplicitEuler::step(const Scene& scene, State& state, double dt) {
+  if (state.x.size() == 0) return Status::ok();  // nothing to solve (and no empty factorisation)
   dv_.setZero(state.v.size());
   dx_ = dt * state.v;
   for (int iteration = 1;; ++iteration) {
@@ -112,6 +113,7 @@ Status ImplicitEuler::step(const Scene& scene, State& state, double dt) {
 }
 
 Status LinearizedImplicitEuler::step(const Scene& scene, State& state, double dt) {
+  if (state.x.size() == 0) return Status::ok();
   xTrial_ = state.x + dt * state.v;
   zero_.setZero(state.v.size());
   if (Status s = system_.assemble(scene, xTrial_, state.v, dt, zero_); !s) return s;
