@@ -38,11 +38,12 @@ bool CollisionSearch::prepare(const Scene& scene, const VecX& qs, const VecX& qe
   return true;
 }
 
-void CollisionSearch::collectRows(const Scene& scene) {
+int CollisionSearch::collectRows(const Scene& scene, int first) {
   const int n = scene.numParticles(), planes = static_cast<int>(scene.halfplanes.size());
   const bool edges = !scene.edges.empty();
   keys_.clear();
-  for (int i = 0; i < n; ++i) {
+  int i = first;
+  for (; i < n && keys_.size() < blockSize_; ++i) {
     row_.clear();
     candidates_.particlesOf(i, -1, row_);
     for (int j : row_) keys_.push_back(pairKey(i, PairKind::ParticleParticle, j));
@@ -54,6 +55,7 @@ void CollisionSearch::collectRows(const Scene& scene) {
     for (int h = 0; h < planes; ++h)
       if (candidates_.nearPlane(i, h)) keys_.push_back(pairKey(i, PairKind::ParticleHalfPlane, h));
   }
+  return i;
 }
 
 bool CollisionSearch::query(const Scene& scene, const VecX& qs, const VecX& qe, uint64_t key, Collision& hit,
@@ -84,14 +86,18 @@ void CollisionSearch::detectAll(const Scene& scene, const VecX& qs, const VecX& 
     referenceSweep(scene, qs, qe, ctx, [&](const Collision& c) { out.push_back(c); });
     return;
   }
-  {
-    const StepTimer timer(ctx.timing, ctx.stats->broadPhase);
-    collectRows(scene);
-  }
-  const StepTimer timer(ctx.timing, ctx.stats->narrowPhase);
+  // Rows in blocks of about kKeysPerBlock candidates (collision_search.h): the list stays small (in cache, and
+  // bounded even when a diverging step makes every box overlap every other).
   Collision hit;
-  for (uint64_t key : keys_)
-    if (query(scene, qs, qe, key, hit, *ctx.stats)) out.push_back(hit);
+  for (int row = 0; row < scene.numParticles();) {
+    {
+      const StepTimer timer(ctx.timing, ctx.stats->broadPhase);
+      row = collectRows(scene, row);
+    }
+    const StepTimer timer(ctx.timing, ctx.stats->narrowPhase);
+    for (uint64_t key : keys_)
+      if (query(scene, qs, qe, key, hit, *ctx.stats)) out.push_back(hit);
+  }
 }
 
 void CollisionSearch::detectChanged(const Scene& scene, const VecX& qs, const VecX& qe, StepContext& ctx,
@@ -143,20 +149,27 @@ void CollisionSearch::sweep(const Scene& scene, const VecX& qs, VecX& qe, StepCo
     referenceSweep(scene, qs, qe, ctx, onHit);
     return;
   }
-  {
-    const StepTimer timer(ctx.timing, ctx.stats->broadPhase);
-    collectRows(scene);
-  }
-  // Walk the rows' candidates in order. A response changes its pair's particles: their boxes
-  // are refreshed and every pair they are now part of that comes later joins a min-heap of
-  // extra keys, merged with the list as the walk goes (a key in both is queried once).
+  // Walk the rows' candidates in order, collected block by block as the walk reaches them. A
+  // response changes its pair's particles: their boxes are refreshed and every pair they are now
+  // part of that comes later joins a min-heap of extra keys, merged with the list as the walk
+  // goes (a key in both is queried once).
   const auto walkStart = std::chrono::steady_clock::now();
   double rebroad = 0;
   extra_.clear();
+  keys_.clear();
   const auto later = std::greater<uint64_t>();
   Collision hit;
   size_t pos = 0;
-  while (pos < keys_.size() || !extra_.empty()) {
+  int row = 0;
+  for (;;) {
+    if (pos == keys_.size() && row < scene.numParticles()) {
+      const auto collectStart = ctx.timing ? std::chrono::steady_clock::now() : walkStart;
+      row = collectRows(scene, row);
+      pos = 0;
+      if (ctx.timing) rebroad += seconds(collectStart, std::chrono::steady_clock::now());
+      continue;
+    }
+    if (pos == keys_.size() && extra_.empty()) break;
     uint64_t key = pos < keys_.size() ? keys_[pos] : ~uint64_t{0};
     if (!extra_.empty() && extra_.front() < key) key = extra_.front();
     while (pos < keys_.size() && keys_[pos] == key) ++pos;
@@ -197,7 +210,8 @@ void CollisionSearch::sweep(const Scene& scene, const VecX& qs, VecX& qe, StepCo
     if (ctx.timing) rebroad += seconds(rebroadStart, std::chrono::steady_clock::now());
   }
   if (ctx.timing) {
-    // Responses are interleaved with the queries: they count as narrow phase, as before.
+    // Responses are interleaved with the queries: they count as narrow phase, as before;
+    // collecting candidates and refreshing boxes count as broad phase.
     ctx.stats->broadPhase += rebroad;
     ctx.stats->narrowPhase += seconds(walkStart, std::chrono::steady_clock::now()) - rebroad;
   }

@@ -26,6 +26,9 @@ namespace fosssim {
 
 class CollisionSearch {
  public:
+  /// Candidates collected at a time before the narrow phase runs on them.
+  static constexpr size_t kKeysPerBlock = 1 << 14;
+
   explicit CollisionSearch(math::QuinticForm form, bool allPairs = false) : detector_(form), forceAll_(allPairs) {}
 
   /// Every collision of qs -> qe in pair order into `out`.
@@ -45,13 +48,16 @@ class CollisionSearch {
 
   /// Bytes held by the broad phase and scratch lists (capacity), for the benchmark.
   size_t memoryBytes() const;
+  /// Candidates per block (tests use small blocks to cross block boundaries often).
+  void setBlockSize(size_t keys) { blockSize_ = keys > 0 ? keys : 1; }
 
  private:
   bool logging(const StepContext& ctx) const { return ctx.log && ctx.log->polynomials.enabled(); }
   /// Builds the broad phase; false when every pair must be checked (forced, logging, not finite).
   bool prepare(const Scene& scene, const VecX& qs, const VecX& qe, StepContext& ctx);
-  /// Appends the candidate keys of every row, in order.
-  void collectRows(const Scene& scene);
+  /// Replaces keys_ with the candidate keys of the rows from `first` on, in order, stopping
+  /// after the row that brings them past a block's worth; returns the next row.
+  int collectRows(const Scene& scene, int first);
   /// The narrow-phase query of one candidate.
   bool query(const Scene& scene, const VecX& qs, const VecX& qe, uint64_t key, Collision& hit, StepStats& stats) const;
   void referenceSweep(const Scene& scene, const VecX& qs, const VecX& qe, StepContext& ctx,
@@ -59,6 +65,7 @@ class CollisionSearch {
 
   ContinuousDetector detector_;
   bool forceAll_;
+  size_t blockSize_ = kKeysPerBlock;
   PairCandidates candidates_;
   const VecX* builtQs_ = nullptr;  ///< the vectors the broad phase was built on
   const VecX* builtQe_ = nullptr;

@@ -1,0 +1,48 @@
+// Scalable benchmark scenes, built in memory (for the benchmark) or written as scene files (for
+// the command line, via fosssim-scenegen). Every scene uses hybrid handling unless asked
+// otherwise; sizes are particle counts.
+//   rain     disks r = 0.05 on a 2.5r grid, at rest, falling into a V of two half-planes and
+//            forming a dense pile (the geometry of the Box2D comparison in the README)
+//   gas      disks with random velocities in a closed box, no gravity, elastic (a sparse gas:
+//            10% of the area covered)
+//   chains   chains of 10 particles joined by capsule edges and damped springs, falling in rows
+//            onto a floor between two walls (3 impulse passes: see bench_scenes.cpp)
+//   bullets  fast small disks (40-60 m/s, a sparse field) shot at a fixed chain of thin edges,
+//            a ceiling above and walls at the sides: every bullet crosses 20-30 radii per step
+#pragma once
+
+#include "fosssim/core/scene.h"
+#include "fosssim/core/state.h"
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace fosssim::bench {
+
+struct BenchScene {
+  std::string name;
+  Scene scene;
+  State state;
+  std::string description;
+  /// What the forces in scene.forces are, for writing the scene file (forces keep their
+  /// parameters to themselves).
+  struct Spring {
+    int edge;
+    double k, l0, b;
+  };
+  std::vector<Spring> springs;
+  double gravity = 0;
+};
+
+/// The scene kinds, in the order the benchmark shows them.
+const std::vector<std::string>& sceneKinds();
+
+/// Builds `kind` with about n particles (exactly n for rain and gas). `collision` is the
+/// <collision type>; the seed fixes the random velocities and jitter. Unknown kind: false.
+bool makeScene(const std::string& kind, int n, const std::string& collision, unsigned seed, BenchScene& out);
+
+/// Writes the scene as a FOSSSim scene file (the same scene the benchmark steps).
+void writeSceneFile(const BenchScene& s, std::ostream& out);
+
+}  // namespace fosssim::bench

@@ -1,0 +1,253 @@
+// fosssim-bench: milliseconds per step by phase on the scalable scenes (bench_scenes.h), and
+// narrow-phase queries per second, on one core. Prints a table; --csv also writes the figures.
+//
+//   fosssim-bench [--sizes 1000,10000,100000] [--scenes rain,gas,chains,bullets] [--collision hybrid]
+//                 [--steps K] [--repeats R] [--all-pairs] [--threads T] [--csv FILE] [--no-queries]
+//                 [--no-steps]
+//
+// Every scene and size runs in a child process of its own, so that its memory figure (peak
+// resident memory grown since the child started, per particle) is its own. A run is a short
+// warm-up (discarded), then R runs of the scene's full length from its initial state; the
+// figures are those of the fastest run (the machine may be shared). Query rates are CPU time of
+// this thread, best of R.
+#include "bench_scenes.h"
+#include "query_rates.h"
+
+#include "fosssim/core/simulator.h"
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fosssim::bench {
+namespace {
+
+struct Options {
+  std::vector<int> sizes = {1000, 10000, 100000};
+  std::vector<std::string> scenes = sceneKinds();
+  std::string collision = "hybrid";
+  long steps = 0;  ///< 0: each scene's own length
+  int repeats = 0;  ///< 0: 3 below 10^5 particles, 1 from there on
+  bool allPairs = false;
+  int threads = 1;
+  std::string csv;
+  bool queries = true;
+  bool stepTable = true;
+};
+
+/// What a child reports about one scene and size (plain data: it crosses a pipe).
+struct Figures {
+  int particles = 0, edges = 0;
+  long steps = 0;
+  double integrate = 0, broad = 0, narrow = 0, response = 0, failsafe = 0, total = 0;  ///< seconds, whole run
+  double candidates = 0, queries = 0, collisions = 0, passes = 0, rounds = 0;  ///< summed over the run
+  long failsafeSteps = 0;
+  int largestZone = 0;
+  double bytesPerParticle = 0;  ///< peak resident memory grown while building and running
+  double growthBytes = 0;       ///< resident memory grown from the end of the first run to the end
+  bool ok = false;
+  char error[200] = {};
+};
+
+long residentBytes() {
+  std::ifstream statm("/proc/self/statm");
+  long pages = 0, resident = 0;
+  statm >> pages >> resident;
+  return resident * sysconf(_SC_PAGESIZE);
+}
+
+long peakResidentBytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss * 1024L;
+}
+
+Figures runScene(const Options& o, const std::string& kind, int n) {
+  Figures f;
+  const long before = residentBytes();
+  BenchScene s;
+  if (!makeScene(kind, n, o.collision, 1, s)) {
+    std::snprintf(f.error, sizeof f.error, "unknown scene %s", kind.c_str());
+    return f;
+  }
+  f.particles = s.scene.numParticles();
+  f.edges = static_cast<int>(s.scene.edges.size());
+  f.steps = o.steps > 0 ? o.steps : s.scene.numSteps();
+  SimulatorOptions options;
+  options.handler.allPairs = o.allPairs;
+  options.handler.threads = o.threads;
+  std::unique_ptr<Simulator> sim;
+  if (Status st = Simulator::create(s.scene, options, sim); !st) {
+    std::snprintf(f.error, sizeof f.error, "%s", st.message().c_str());
+    return f;
+  }
+  sim->setTiming(true);
+  auto run = [&](long steps, Figures& into) -> bool {
+    State state = s.state;
+    into = Figures{};
+    const auto start = std::chrono::steady_clock::now();
+    for (long k = 0; k < steps; ++k) {
+      if (Status st = sim->step(s.scene, state); !st) {
+        std::snprintf(f.error, sizeof f.error, "%s", st.message().c_str());
+        return false;
+      }
+      const StepStats& st = sim->stats();
+      into.integrate += st.integrate;
+      into.broad += st.broadPhase;
+      into.narrow += st.narrowPhase;
+      into.response += st.response;
+      into.failsafe += st.failsafe;
+      into.candidates += static_cast<double>(st.candidatePairs);
+      into.queries += static_cast<double>(st.queries[0] + st.queries[1] + st.queries[2]);
+      into.collisions += static_cast<double>(st.collisions);
+      into.passes += st.impulsePasses;
+      into.rounds += st.failsafeRounds;
+      into.failsafeSteps += st.failsafeUsed;
+      into.largestZone = std::max(into.largestZone, st.largestZone);
+    }
+    into.total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return true;
+  };
+  Figures trial;
+  if (!run(std::min<long>(5, f.steps), trial)) return f;  // warm-up
+  const int repeats = o.repeats > 0 ? o.repeats : (n >= 100000 ? 1 : 3);
+  Figures best;
+  long afterFirst = 0;
+  for (int r = 0; r < repeats; ++r) {
+    if (!run(f.steps, trial)) return f;
+    if (r == 0) afterFirst = residentBytes();
+    if (r == 0 || trial.total < best.total) best = trial;
+  }
+  best.particles = f.particles;
+  best.edges = f.edges;
+  best.steps = f.steps;
+  best.bytesPerParticle = static_cast<double>(peakResidentBytes() - before) / f.particles;
+  best.growthBytes = static_cast<double>(residentBytes() - afterFirst);
+  best.ok = true;
+  return best;
+}
+
+/// Runs one scene and size in a child process; its figures come back through a pipe.
+Figures inChild(const Options& o, const std::string& kind, int n) {
+  int fds[2];
+  Figures f;
+  if (pipe(fds) != 0) return runScene(o, kind, n);
+  std::fflush(stdout);
+  const pid_t child = fork();
+  if (child == 0) {
+    close(fds[0]);
+    const Figures mine = runScene(o, kind, n);
+    const ssize_t written = write(fds[1], &mine, sizeof mine);
+    _exit(written == static_cast<ssize_t>(sizeof mine) ? 0 : 1);
+  }
+  close(fds[1]);
+  const ssize_t got = read(fds[0], &f, sizeof f);
+  close(fds[0]);
+  int status = 0;
+  waitpid(child, &status, 0);
+  if (got != static_cast<ssize_t>(sizeof f)) {
+    f = Figures{};
+    std::snprintf(f.error, sizeof f.error, "the benchmark child failed");
+  }
+  return f;
+}
+
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+bool parse(int argc, char** argv, Options& o) {
+  for (int k = 1; k < argc; ++k) {
+    const std::string a = argv[k];
+    auto value = [&]() -> std::string { return k + 1 < argc ? argv[++k] : ""; };
+    if (a == "--sizes") {
+      o.sizes.clear();
+      for (const std::string& s : split(value())) o.sizes.push_back(static_cast<int>(std::stod(s)));
+    } else if (a == "--scenes") o.scenes = split(value());
+    else if (a == "--collision") o.collision = value();
+    else if (a == "--steps") o.steps = std::stol(value());
+    else if (a == "--repeats") o.repeats = std::stoi(value());
+    else if (a == "--threads") o.threads = std::stoi(value());
+    else if (a == "--all-pairs") o.allPairs = true;
+    else if (a == "--csv") o.csv = value();
+    else if (a == "--no-queries") o.queries = false;
+    else if (a == "--no-steps") o.stepTable = false;
+    else {
+      std::fprintf(stderr, "fosssim-bench: unknown argument %s (see the comment at the top of bench/fosssim_bench.cpp)\n",
+                   a.c_str());
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+}  // namespace fosssim::bench
+
+int main(int argc, char** argv) {
+  using namespace fosssim::bench;
+  Options o;
+  if (!parse(argc, argv, o)) return 2;
+  std::ofstream csv;
+  if (!o.csv.empty()) {
+    csv.open(o.csv);
+    csv << "section,scene,n,particles,edges,steps,integrate_ms,broad_ms,narrow_ms,response_ms,failsafe_ms,other_ms,"
+           "total_ms,candidates_per_step,queries_per_step,collisions_per_step,passes_per_step,failsafe_steps,rounds_per_failsafe,"
+           "largest_zone,bytes_per_particle,rss_growth_bytes,threads,queries_per_second,hit_rate\n";
+  }
+  if (o.stepTable) {
+    std::printf("ms per step by phase (%s handling, %d thread%s%s; fastest of the repeated runs)\n", o.collision.c_str(),
+                o.threads, o.threads == 1 ? "" : "s", o.allPairs ? ", all pairs" : "");
+    std::printf("%-8s %7s %6s %9s %7s %7s %7s %7s %8s %8s | %9s %9s %6s %5s %6s %6s %7s\n", "scene", "N", "steps",
+                "integrate", "broad", "narrow", "respond", "failsafe", "other", "total", "cand/step", "coll/step",
+                "passes", "fs%", "rounds", "zone", "B/part");
+    for (const std::string& kind : o.scenes) {
+      for (int n : o.sizes) {
+        const Figures f = inChild(o, kind, n);
+        if (!f.ok) {
+          std::printf("%-8s %7d  failed: %s\n", kind.c_str(), n, f.error);
+          continue;
+        }
+        const double per = 1000.0 / static_cast<double>(f.steps);
+        const double other = f.total - f.integrate - f.broad - f.narrow - f.response - f.failsafe;
+        const double steps = static_cast<double>(f.steps);
+        std::printf("%-8s %7d %6ld %9.3f %7.3f %7.3f %7.3f %8.3f %8.3f %8.3f | %9.0f %9.1f %6.2f %5.1f %6.1f %6d %7.0f\n",
+                    kind.c_str(), f.particles, f.steps, f.integrate * per, f.broad * per, f.narrow * per,
+                    f.response * per, f.failsafe * per, other * per, f.total * per, f.candidates / steps,
+                    f.collisions / steps, f.passes / steps, 100.0 * static_cast<double>(f.failsafeSteps) / steps,
+                    f.failsafeSteps ? f.rounds / static_cast<double>(f.failsafeSteps) : 0.0, f.largestZone,
+                    f.bytesPerParticle);
+        std::fflush(stdout);
+        if (csv) {
+          csv << "steps," << kind << "," << n << "," << f.particles << "," << f.edges << "," << f.steps << ","
+              << f.integrate * per << "," << f.broad * per << "," << f.narrow * per << "," << f.response * per << ","
+              << f.failsafe * per << "," << other * per << "," << f.total * per << "," << f.candidates / steps << ","
+              << f.queries / steps << "," << f.collisions / steps << "," << f.passes / steps << "," << f.failsafeSteps
+              << "," << (f.failsafeSteps ? f.rounds / static_cast<double>(f.failsafeSteps) : 0.0) << "," << f.largestZone << ","
+              << f.bytesPerParticle << "," << f.growthBytes << "," << o.threads << ",,\n";
+        }
+      }
+    }
+  }
+  if (o.queries) {
+    std::printf("\nnarrow-phase queries per second, one core (CPU time, best of 5)\n");
+    for (const QueryRate& q : measureQueryRates()) {
+      std::printf("  %-46s %7.2f M/s  %6.1f ns  (hits %4.1f%%)\n", q.name.c_str(), q.perSecond / 1e6, 1e9 / q.perSecond,
+                  100.0 * q.hitRate);
+      if (csv) csv << "queries," << q.name << ",,,,,,,,,,,,,,,,,,,,,," << o.threads << "," << q.perSecond << "," << q.hitRate << "\n";
+    }
+  }
+  return 0;
+}
