@@ -3,7 +3,9 @@
 //
 //   fosssim-bench [--sizes 1000,10000,100000] [--scenes rain,gas,chains,bullets] [--collision hybrid]
 //                 [--steps K] [--repeats R] [--all-pairs] [--threads T] [--csv FILE] [--no-queries]
-//                 [--no-steps]
+//                 [--no-steps] [--alternatives]
+// --alternatives also times the broad-phase designs that were measured before choosing one
+// (broad_phase_alternatives.h) on the rain, gas and bullets scenes.
 //
 // Every scene and size runs in a child process of its own, so that its memory figure (peak
 // resident memory grown since the child started, per particle) is its own. A run is a short
@@ -11,6 +13,7 @@
 // figures are those of the fastest run (the machine may be shared). Query rates are CPU time of
 // this thread, best of R.
 #include "bench_scenes.h"
+#include "broad_phase_alternatives.h"
 #include "query_rates.h"
 
 #include "fosssim/core/simulator.h"
@@ -41,6 +44,7 @@ struct Options {
   std::string csv;
   bool queries = true;
   bool stepTable = true;
+  bool alternatives = false;
 };
 
 /// What a child reports about one scene and size (plain data: it crosses a pipe).
@@ -184,6 +188,7 @@ bool parse(int argc, char** argv, Options& o) {
     else if (a == "--csv") o.csv = value();
     else if (a == "--no-queries") o.queries = false;
     else if (a == "--no-steps") o.stepTable = false;
+    else if (a == "--alternatives") o.alternatives = true;
     else {
       std::fprintf(stderr, "fosssim-bench: unknown argument %s (see the comment at the top of bench/fosssim_bench.cpp)\n",
                    a.c_str());
@@ -244,9 +249,24 @@ int main(int argc, char** argv) {
   if (o.queries) {
     std::printf("\nnarrow-phase queries per second, one core (CPU time, best of 5)\n");
     for (const QueryRate& q : measureQueryRates()) {
-      std::printf("  %-46s %7.2f M/s  %6.1f ns  (hits %4.1f%%)\n", q.name.c_str(), q.perSecond / 1e6, 1e9 / q.perSecond,
+      std::printf("  %-62s %7.2f M/s  %6.1f ns  (hits %4.1f%%)\n", q.name.c_str(), q.perSecond / 1e6, 1e9 / q.perSecond,
                   100.0 * q.hitRate);
       if (csv) csv << "queries," << q.name << ",,,,,,,,,,,,,,,,,,,,,," << o.threads << "," << q.perSecond << "," << q.hitRate << "\n";
+    }
+  }
+  if (o.alternatives) {
+    std::printf("\nbroad-phase designs: ordered candidates of every row from one step's swept boxes (best of 3)\n");
+    std::printf("%-8s %7s %-5s %9s %9s %9s %10s\n", "scene", "N", "method", "build ms", "query ms", "total ms", "pairs");
+    std::vector<std::string> scenes;
+    for (const std::string& s : o.scenes)
+      if (s != "chains") scenes.push_back(s);  // particle boxes only: chains are mostly edges
+    for (const BroadPhaseTiming& t : compareBroadPhases(scenes, o.sizes, 3)) {
+      std::printf("%-8s %7d %-5s %9.3f %9.3f %9.3f %10ld\n", t.scene.c_str(), t.n, t.method.c_str(), t.buildMs, t.queryMs,
+                  t.buildMs + t.queryMs, t.pairs);
+      std::fflush(stdout);
+      if (csv)
+        csv << "broadphase," << t.scene << "," << t.n << ",,,,,,,,,,," << t.pairs << ",,,,,,,,,," << t.method << ","
+            << t.buildMs << "," << t.queryMs << "\n";
     }
   }
   return 0;
