@@ -60,6 +60,7 @@ int run(int argc, char** argv) {
 
   SimulatorOptions simOptions;
   simOptions.handler.compat = options.compat;
+  simOptions.handler.threads = options.threads;
   simOptions.logPolynomials = !options.output.empty() || !options.input.empty();
   std::unique_ptr<Simulator> simulator;
   if (Status s = Simulator::create(file.scene, simOptions, simulator); !s) return fail(s.message());

@@ -51,6 +51,9 @@ FOSSSim options:
   --png-dir DIR      folder for -g frames (default pngs; created if needed)
   --movie FILE.mp4   pipe frames straight into ffmpeg (no PNG files); needs ffmpeg
   --fps N            frame rate of --movie (default 30)
+  --threads N        threads for collision detection and the penalty force (default 1); the
+                     results are the same for every N (scenes of a few thousand particles and up
+                     use them)
   -q             no progress output
   -h, --help     this text
 
@@ -105,6 +108,7 @@ bool parseOptions(int argc, char** argv, Options& o, std::string& error) {
     else if (a == "--compat") o.compat = true;
     else if (a == "--verify") o.verify = true;
     else if (a == "--frame-every") ok = positive(o.frameEvery);
+    else if (a == "--threads") ok = positive(o.threads);
     else if (a == "--png-dir") ok = value(o.pngDir);
     else if (a == "--movie") ok = value(o.movie);
     else if (a == "--fps") {

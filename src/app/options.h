@@ -16,6 +16,7 @@ struct Options {
   bool compat = false;      ///< --compat: reproduce the reference's formulas bit for bit
   bool verify = false;      ///< --verify: check every step for missed collisions and non-finite states
   bool quiet = false;       ///< -q: no progress output
+  int threads = 1;          ///< --threads N: threads for the broad and narrow phase (same results for any N)
   int frameWidth = 512;     ///< --frame-size WxH
   int frameHeight = 512;
   int frameEvery = 1;       ///< --frame-every K: write only every K-th frame

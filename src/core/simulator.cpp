@@ -18,7 +18,7 @@ Status Simulator::create(const Scene& scene, const SimulatorOptions& options,
   sim->integrator_ = integrator->make();
   if (collision->make) sim->handler_ = collision->make(scene.collision, options.handler);
   sim->log_.polynomials.setEnabled(options.logPolynomials && collision->layout.polynomials);
-  sim->allPairs_ = options.handler.allPairs;
+  sim->handlerOptions_ = options.handler;
   out = std::move(sim);
   return Status::ok();
 }
@@ -33,7 +33,8 @@ Status Simulator::step(const Scene& scene, State& state, StepObserver* observer)
 
   stats_.clear();
   const StepTimer stepTimer(timing_, stats_.total);
-  const AllPairsScope pairSearch(allPairs_);  // for the penalty force (the handlers know already)
+  // For the penalty force (the handlers know already).
+  const PairSearchScope pairSearch(PairSearchSettings{handlerOptions_.allPairs, handlerOptions_.threads});
 
   // 1. Predict: the integrator moves every particle as if nothing collided.
   start_ = state;

@@ -54,25 +54,27 @@ bool sameBits(const VecX& a, const VecX& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), sizeof(double) * a.size()) == 0;
 }
 
-struct Run {
+struct SimRun {
   TestScene s;
   std::unique_ptr<Simulator> sim;
 };
 
-Run start(const std::string& type, int maxIterations, unsigned seed, bool compat, bool allPairs, bool log) {
-  Run r{mixedScene(type, maxIterations, seed), nullptr};
+SimRun start(const std::string& type, int maxIterations, unsigned seed, bool compat, bool allPairs, bool log,
+          int threads = 1) {
+  SimRun r{mixedScene(type, maxIterations, seed), nullptr};
   SimulatorOptions options;
   options.handler.compat = compat;
   options.handler.allPairs = allPairs;
+  options.handler.threads = threads;
   options.logPolynomials = log;
   EXPECT_TRUE(Simulator::create(r.s.scene, options, r.sim).isOk());
   return r;
 }
 
 void expectIdenticalRuns(const std::string& type, int maxIterations, unsigned seed, bool compat, int steps) {
-  Run fast = start(type, maxIterations, seed, compat, false, false);
-  Run reference = start(type, maxIterations, seed, compat, true, false);
-  Run logged = start(type, maxIterations, seed, compat, false, true);
+  SimRun fast = start(type, maxIterations, seed, compat, false, false);
+  SimRun reference = start(type, maxIterations, seed, compat, true, false);
+  SimRun logged = start(type, maxIterations, seed, compat, false, true);
   long collisions = 0, failsafeSteps = 0;
   for (int k = 0; k < steps; ++k) {
     SCOPED_TRACE(type + " maxiters " + std::to_string(maxIterations) + " seed " + std::to_string(seed) +
@@ -133,6 +135,69 @@ TEST(BroadPhaseRuns, HybridHandlerIsIdentical) {
 
 TEST(BroadPhaseRuns, PenaltyForceIsIdentical) {
   for (unsigned seed : {1u, 2u}) expectIdenticalRuns("penalty", 10, seed, false, 120);
+}
+
+}  // namespace
+}  // namespace fosssim
+
+namespace fosssim {
+namespace {
+
+/// 6000 disks with random velocities falling into a V, on a fixed chain of edges.
+TestScene pile(const std::string& type) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  TestScene s;
+  s.scene.integrator = "symplectic-euler";
+  s.scene.dt = 0.01;
+  s.scene.collision.type = type;
+  s.scene.collision.cor = 0.3;
+  s.scene.collision.maxIterations = 4;
+  for (int row = 0; row < 60; ++row)
+    for (int col = 0; col < 100; ++col)
+      addBody(s, 0.5 + unit(rng), Vec2(-10.0 + 0.2 * col + 0.03 * unit(rng), 11.0 + 0.2 * row),
+              Vec2(2 * unit(rng) - 1, 2 * unit(rng) - 3), 0.04 + 0.05 * unit(rng));
+  const int chain = s.state.numParticles();
+  for (int k = 0; k < 41; ++k) addBody(s, 1.0, Vec2(-10.0 + 0.5 * k, 10.5), Vec2::Zero(), 0.01, /*fixed=*/true);
+  for (int k = 0; k + 1 < 41; ++k) s.scene.edges.push_back(Edge{chain + k, chain + k + 1, 0.02});
+  s.scene.halfplanes.push_back(HalfPlane{Vec2(0, 0), Vec2(1, 1)});
+  s.scene.halfplanes.push_back(HalfPlane{Vec2(0, 0), Vec2(-1, 1)});
+  s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, -9.81)));
+  if (type == "hybrid") s.scene.forces.push_back(std::make_unique<PenaltyForce>(10.0, 0.02));
+  if (type == "penalty") s.scene.forces.push_back(std::make_unique<PenaltyForce>(1000.0, 0.01));
+  return s;
+}
+
+// Threads split the rows of the broad and narrow phase and of the penalty force; the results are
+// joined in row order, so any thread count gives the same run. (Scenes of several thousand
+// particles: smaller ones are not split.)
+TEST(BroadPhaseRuns, ThreadCountDoesNotChangeResults) {
+  for (const char* type : {"hybrid", "continuous-time", "penalty"}) {
+    std::vector<SimRun> runs;
+    for (int threads : {1, 2, 3}) {
+      SimRun r{pile(type), nullptr};
+      SimulatorOptions options;
+      options.handler.threads = threads;
+      ASSERT_TRUE(Simulator::create(r.s.scene, options, r.sim).isOk());
+      runs.push_back(std::move(r));
+    }
+    long collisions = 0;
+    for (int k = 0; k < 25; ++k) {
+      for (SimRun& r : runs) {
+        const Status st = r.sim->step(r.s.scene, r.s.state);
+        ASSERT_TRUE(st.isOk()) << type << ": " << st.message();
+      }
+      for (size_t m = 1; m < runs.size(); ++m) {
+        ASSERT_TRUE(sameBits(runs[0].s.state.x, runs[m].s.state.x)) << type << " step " << k + 1;
+        ASSERT_TRUE(sameBits(runs[0].s.state.v, runs[m].s.state.v)) << type << " step " << k + 1;
+        EXPECT_EQ(runs[0].sim->stats().candidatePairs, runs[m].sim->stats().candidatePairs);
+      }
+      collisions += runs[0].sim->stats().collisions;
+    }
+    if (std::string(type) != "penalty") {
+      EXPECT_GT(collisions, 0) << type;
+    }
+  }
 }
 
 }  // namespace

@@ -46,7 +46,7 @@ class Simulator {
   CollisionLog log_;
   StepStats stats_;
   bool timing_ = false;
-  bool allPairs_ = false;  ///< options.handler.allPairs, also for the penalty force
+  HandlerOptions handlerOptions_;  ///< allPairs and threads also reach the penalty force
   State start_;  ///< the state at the beginning of the current step (scratch)
 };
 

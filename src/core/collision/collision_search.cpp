@@ -1,5 +1,7 @@
 #include "collision_search.h"
 
+#include "parallel_rows.h"
+
 #include <algorithm>
 #include <chrono>
 
@@ -38,22 +40,23 @@ bool CollisionSearch::prepare(const Scene& scene, const VecX& qs, const VecX& qe
   return true;
 }
 
-int CollisionSearch::collectRows(const Scene& scene, int first) {
-  const int n = scene.numParticles(), planes = static_cast<int>(scene.halfplanes.size());
+int CollisionSearch::collectRows(const Scene& scene, int first, int end, std::vector<uint64_t>& keys,
+                                 std::vector<int>& row) const {
+  const int planes = static_cast<int>(scene.halfplanes.size());
   const bool edges = !scene.edges.empty();
-  keys_.clear();
+  keys.clear();
   int i = first;
-  for (; i < n && keys_.size() < blockSize_; ++i) {
-    row_.clear();
-    candidates_.particlesOf(i, -1, row_);
-    for (int j : row_) keys_.push_back(pairKey(i, PairKind::ParticleParticle, j));
+  for (; i < end && keys.size() < blockSize_; ++i) {
+    row.clear();
+    candidates_.particlesOf(i, -1, row);
+    for (int j : row) keys.push_back(pairKey(i, PairKind::ParticleParticle, j));
     if (edges) {
-      row_.clear();
-      candidates_.edgesOf(i, -1, row_);
-      for (int e : row_) keys_.push_back(pairKey(i, PairKind::ParticleEdge, e));
+      row.clear();
+      candidates_.edgesOf(i, -1, row);
+      for (int e : row) keys.push_back(pairKey(i, PairKind::ParticleEdge, e));
     }
     for (int h = 0; h < planes; ++h)
-      if (candidates_.nearPlane(i, h)) keys_.push_back(pairKey(i, PairKind::ParticleHalfPlane, h));
+      if (candidates_.nearPlane(i, h)) keys.push_back(pairKey(i, PairKind::ParticleHalfPlane, h));
   }
   return i;
 }
@@ -86,17 +89,42 @@ void CollisionSearch::detectAll(const Scene& scene, const VecX& qs, const VecX& 
     referenceSweep(scene, qs, qe, ctx, [&](const Collision& c) { out.push_back(c); });
     return;
   }
-  // Rows in blocks of about kKeysPerBlock candidates (collision_search.h): the list stays small (in cache, and
-  // bounded even when a diverging step makes every box overlap every other).
-  Collision hit;
-  for (int row = 0; row < scene.numParticles();) {
-    {
-      const StepTimer timer(ctx.timing, ctx.stats->broadPhase);
-      row = collectRows(scene, row);
+  // Rows in blocks of about kKeysPerBlock candidates (collision_search.h): the list stays small
+  // (in cache, and bounded even when a diverging step makes every box overlap every other). With
+  // threads, each takes a contiguous range of rows; the ranges' collisions are joined in order.
+  const int n = scene.numParticles();
+  const int ranges = rowRangesFor(n, threads_);
+  if (workers_.size() < static_cast<size_t>(ranges)) workers_.resize(ranges);
+  const auto start = std::chrono::steady_clock::now();
+  forRowRanges(n, threads_, [&](int range, int first, int end) {
+    Worker& w = workers_[range];
+    w.out.clear();
+    w.stats.clear();
+    Collision hit;
+    for (int row = first; row < end;) {
+      {
+        const StepTimer timer(ctx.timing, w.stats.broadPhase);
+        row = collectRows(scene, row, end, w.keys, w.row);
+      }
+      const StepTimer timer(ctx.timing, w.stats.narrowPhase);
+      for (uint64_t key : w.keys)
+        if (query(scene, qs, qe, key, hit, w.stats)) w.out.push_back(hit);
     }
-    const StepTimer timer(ctx.timing, ctx.stats->narrowPhase);
-    for (uint64_t key : keys_)
-      if (query(scene, qs, qe, key, hit, *ctx.stats)) out.push_back(hit);
+  });
+  double broad = 0, narrow = 0;
+  for (int k = 0; k < ranges; ++k) {
+    const Worker& w = workers_[k];
+    out.insert(out.end(), w.out.begin(), w.out.end());
+    ctx.stats->candidatePairs += w.stats.candidatePairs;
+    for (int kind = 0; kind < 3; ++kind) ctx.stats->queries[kind] += w.stats.queries[kind];
+    broad += w.stats.broadPhase;
+    narrow += w.stats.narrowPhase;
+  }
+  if (ctx.timing && broad + narrow > 0) {
+    // Wall time, shared out in the proportion of the threads' own broad and narrow times.
+    const double wall = seconds(start, std::chrono::steady_clock::now());
+    ctx.stats->broadPhase += wall * broad / (broad + narrow);
+    ctx.stats->narrowPhase += wall * narrow / (broad + narrow);
   }
 }
 
@@ -164,7 +192,7 @@ void CollisionSearch::sweep(const Scene& scene, const VecX& qs, VecX& qe, StepCo
   for (;;) {
     if (pos == keys_.size() && row < scene.numParticles()) {
       const auto collectStart = ctx.timing ? std::chrono::steady_clock::now() : walkStart;
-      row = collectRows(scene, row);
+      row = collectRows(scene, row, scene.numParticles(), keys_, row_);
       pos = 0;
       if (ctx.timing) rebroad += seconds(collectStart, std::chrono::steady_clock::now());
       continue;
@@ -218,8 +246,11 @@ void CollisionSearch::sweep(const Scene& scene, const VecX& qs, VecX& qe, StepCo
 }
 
 size_t CollisionSearch::memoryBytes() const {
-  return candidates_.memoryBytes() + (keys_.capacity() + extra_.capacity()) * sizeof(uint64_t) +
-         row_.capacity() * sizeof(int) + mark_.capacity();
+  size_t bytes = candidates_.memoryBytes() + (keys_.capacity() + extra_.capacity()) * sizeof(uint64_t) +
+                 row_.capacity() * sizeof(int) + mark_.capacity();
+  for (const Worker& w : workers_)
+    bytes += w.keys.capacity() * sizeof(uint64_t) + w.row.capacity() * sizeof(int) + w.out.capacity() * sizeof(Collision);
+  return bytes;
 }
 
 }  // namespace fosssim

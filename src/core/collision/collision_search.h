@@ -11,7 +11,8 @@
 // With a polynomial log (trajectory files, grading) every pair is queried in the reference's
 // order whatever the broad phase says, since the reference's log holds every pair's
 // polynomials. The same happens when all pairs are forced (HandlerOptions::allPairs) and when the
-// state is not finite.
+// state is not finite. detectAll spreads its rows over threads (HandlerOptions::threads) and
+// joins their collisions in row order (parallel_rows.h): the same result for any thread count.
 #pragma once
 
 #include "continuous_detection.h"
@@ -29,7 +30,8 @@ class CollisionSearch {
   /// Candidates collected at a time before the narrow phase runs on them.
   static constexpr size_t kKeysPerBlock = 1 << 14;
 
-  explicit CollisionSearch(math::QuinticForm form, bool allPairs = false) : detector_(form), forceAll_(allPairs) {}
+  explicit CollisionSearch(math::QuinticForm form, bool allPairs = false, int threads = 1)
+      : detector_(form), forceAll_(allPairs), threads_(threads) {}
 
   /// Every collision of qs -> qe in pair order into `out`.
   void detectAll(const Scene& scene, const VecX& qs, const VecX& qe, StepContext& ctx, std::vector<Collision>& out);
@@ -55,9 +57,9 @@ class CollisionSearch {
   bool logging(const StepContext& ctx) const { return ctx.log && ctx.log->polynomials.enabled(); }
   /// Builds the broad phase; false when every pair must be checked (forced, logging, not finite).
   bool prepare(const Scene& scene, const VecX& qs, const VecX& qe, StepContext& ctx);
-  /// Replaces keys_ with the candidate keys of the rows from `first` on, in order, stopping
-  /// after the row that brings them past a block's worth; returns the next row.
-  int collectRows(const Scene& scene, int first);
+  /// Replaces `keys` with the candidate keys of the rows from `first` on (before `end`), in
+  /// order, stopping after the row that brings them past a block's worth; returns the next row.
+  int collectRows(const Scene& scene, int first, int end, std::vector<uint64_t>& keys, std::vector<int>& row) const;
   /// The narrow-phase query of one candidate.
   bool query(const Scene& scene, const VecX& qs, const VecX& qe, uint64_t key, Collision& hit, StepStats& stats) const;
   void referenceSweep(const Scene& scene, const VecX& qs, const VecX& qe, StepContext& ctx,
@@ -65,6 +67,7 @@ class CollisionSearch {
 
   ContinuousDetector detector_;
   bool forceAll_;
+  int threads_;
   size_t blockSize_ = kKeysPerBlock;
   PairCandidates candidates_;
   const VecX* builtQs_ = nullptr;  ///< the vectors the broad phase was built on
@@ -72,6 +75,13 @@ class CollisionSearch {
   std::vector<uint64_t> keys_, extra_;
   std::vector<int> row_;
   std::vector<char> mark_;
+  struct Worker {  ///< one range of rows of a parallel detectAll
+    std::vector<uint64_t> keys;
+    std::vector<int> row;
+    std::vector<Collision> out;
+    StepStats stats;
+  };
+  std::vector<Worker> workers_;
 };
 
 inline uint64_t pairKey(const Collision& c) { return pairKey(c.i, c.kind, c.j); }

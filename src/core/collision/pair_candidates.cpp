@@ -29,7 +29,7 @@ bool finiteRadii(const Scene& scene) {
   return true;
 }
 
-thread_local bool forcedAllPairs = false;
+thread_local PairSearchSettings currentSettings;
 
 }  // namespace
 
@@ -39,9 +39,11 @@ Box PairCandidates::filed(const Box& b) const {
   return Box{b.x0 - grow, b.y0 - grow, b.x1 + grow, b.y1 + grow};
 }
 
-bool allPairsForced() { return forcedAllPairs; }
-AllPairsScope::AllPairsScope(bool on) : previous_(forcedAllPairs) { forcedAllPairs = on; }
-AllPairsScope::~AllPairsScope() { forcedAllPairs = previous_; }
+const PairSearchSettings& currentPairSearch() { return currentSettings; }
+PairSearchScope::PairSearchScope(const PairSearchSettings& settings) : previous_(currentSettings) {
+  currentSettings = settings;
+}
+PairSearchScope::~PairSearchScope() { currentSettings = previous_; }
 
 double coordinateScale(const Scene& scene, const VecX& a, const VecX& b) {
   if (!a.allFinite() || !b.allFinite()) return std::numeric_limits<double>::infinity();

@@ -39,19 +39,23 @@ inline int keyParticle(uint64_t key) { return static_cast<int>(key >> 33); }
 inline PairKind keyKind(uint64_t key) { return static_cast<PairKind>((key >> 31) & 3u); }
 inline int keyOther(uint64_t key) { return static_cast<int>(key & 0x7FFFFFFFu); }
 
-/// Whether the step being taken on this thread must check every pair (HandlerOptions::allPairs).
+/// How the step being taken on this thread searches pairs (HandlerOptions::allPairs, threads).
 /// Simulator::step sets it for its duration; the penalty force reads it (a force sees only the
-/// scene and the state, so this is its only way to hear of the option). False outside steps.
-bool allPairsForced();
-class AllPairsScope {
+/// scene and the state, so this is its only way to hear of the options). Defaults outside steps.
+struct PairSearchSettings {
+  bool allPairs = false;
+  int threads = 1;
+};
+const PairSearchSettings& currentPairSearch();
+class PairSearchScope {
  public:
-  explicit AllPairsScope(bool on);
-  ~AllPairsScope();
-  AllPairsScope(const AllPairsScope&) = delete;
-  AllPairsScope& operator=(const AllPairsScope&) = delete;
+  explicit PairSearchScope(const PairSearchSettings& settings);
+  ~PairSearchScope();
+  PairSearchScope(const PairSearchScope&) = delete;
+  PairSearchScope& operator=(const PairSearchScope&) = delete;
 
  private:
-  bool previous_;
+  PairSearchSettings previous_;
 };
 
 class PairCandidates {

@@ -10,6 +10,7 @@
 #include "fosssim/core/forces.h"
 
 #include "../collision/pair_candidates.h"
+#include "../collision/parallel_rows.h"
 
 #include "fosssim/math/geometry.h"
 
@@ -36,37 +37,64 @@ struct PenaltyPair {
 /// same order, and the gradient sums come out the same to the last bit.
 template <class Visit>
 void forEachPenaltyPair(const Scene& scene, const VecX& x, double thickness, Visit&& visit) {
-  // The force is const and may be shared: scratch storage per thread, reused from call to call.
-  thread_local PairCandidates candidates;
-  thread_local std::vector<int> row;
-  const int n = scene.numParticles();
-  auto consider = [&](int i, const Vec2& d, double r1, double r2, int a, int b, double alpha) {
-    const double length = d.norm();
-    if (length < r1 + r2 + thickness) visit(PenaltyPair{i, d, length, length - r1 - r2 - thickness, a, b, alpha});
+  // The force is const and may be shared: scratch storage per calling thread, reused from call
+  // to call. (Named through plain references: a lambda running on a worker thread would see the
+  // worker's own thread_local objects.)
+  struct Scratch {
+    PairCandidates candidates;
+    std::vector<std::vector<int>> rows;
+    std::vector<std::vector<PenaltyPair>> found;
   };
+  thread_local Scratch scratch;
+  PairCandidates& candidates = scratch.candidates;
+  std::vector<std::vector<int>>& rows = scratch.rows;
+  std::vector<std::vector<PenaltyPair>>& found = scratch.found;
+  const int n = scene.numParticles();
+  const PairSearchSettings& settings = currentPairSearch();
   // A negative thickness shrinks the reach; the boxes are then simply not widened.
   candidates.build(scene, x, x, std::max(0.0, 0.5 * thickness));
-  if (allPairsForced()) candidates.forceAllPairs();
-  for (int i = 0; i < n; ++i) {
-    const Vec2 xi = at(x, i);
-    const double ri = scene.radius[i];
-    row.clear();
-    candidates.particlesOf(i, -1, row);
-    for (int j : row) consider(i, at(x, j) - xi, ri, scene.radius[j], j, -1, 0.0);
-    row.clear();
-    candidates.edgesOf(i, -1, row);
-    for (int k : row) {
-      const Edge& e = scene.edges[k];
-      double alpha = 0;
-      const Vec2 d = math::segmentContactVector(xi, at(x, e.i), at(x, e.j), &alpha);
-      consider(i, d, ri, e.radius, e.i, e.j, alpha);
+  if (settings.allPairs) candidates.forceAllPairs();
+  // Rows [first, end), each pair within reach handed to `take`.
+  auto scan = [&](int first, int end, std::vector<int>& row, auto&& take) {
+    auto consider = [&](int i, const Vec2& d, double r1, double r2, int a, int b, double alpha) {
+      const double length = d.norm();
+      if (length < r1 + r2 + thickness) take(PenaltyPair{i, d, length, length - r1 - r2 - thickness, a, b, alpha});
+    };
+    for (int i = first; i < end; ++i) {
+      const Vec2 xi = at(x, i);
+      const double ri = scene.radius[i];
+      row.clear();
+      candidates.particlesOf(i, -1, row);
+      for (int j : row) consider(i, at(x, j) - xi, ri, scene.radius[j], j, -1, 0.0);
+      row.clear();
+      candidates.edgesOf(i, -1, row);
+      for (int k : row) {
+        const Edge& e = scene.edges[k];
+        double alpha = 0;
+        const Vec2 d = math::segmentContactVector(xi, at(x, e.i), at(x, e.j), &alpha);
+        consider(i, d, ri, e.radius, e.i, e.j, alpha);
+      }
+      for (int h = 0; h < static_cast<int>(scene.halfplanes.size()); ++h) {
+        if (!candidates.nearPlane(i, h)) continue;
+        const HalfPlane& plane = scene.halfplanes[h];
+        consider(i, math::halfPlaneContactVector(xi, plane.point, plane.normal), ri, 0.0, -1, -1, 0.0);
+      }
     }
-    for (int h = 0; h < static_cast<int>(scene.halfplanes.size()); ++h) {
-      if (!candidates.nearPlane(i, h)) continue;
-      const HalfPlane& plane = scene.halfplanes[h];
-      consider(i, math::halfPlaneContactVector(xi, plane.point, plane.normal), ri, 0.0, -1, -1, 0.0);
-    }
+  };
+  const int ranges = rowRangesFor(n, settings.threads);
+  if (rows.size() < static_cast<size_t>(ranges)) rows.resize(ranges), found.resize(ranges);
+  if (ranges <= 1) {
+    scan(0, n, rows[0], visit);
+    return;
   }
+  // With threads: each range of rows lists its pairs, then they are visited in row order, so
+  // the sums come out exactly as with one thread.
+  forRowRanges(n, settings.threads, [&](int range, int first, int end) {
+    found[range].clear();
+    scan(first, end, rows[range], [&](const PenaltyPair& p) { found[range].push_back(p); });
+  });
+  for (int range = 0; range < ranges; ++range)
+    for (const PenaltyPair& p : found[range]) visit(p);
 }
 
 }  // namespace
