@@ -56,7 +56,7 @@ struct Figures {
   long failsafeSteps = 0;
   int largestZone = 0;
   double bytesPerParticle = 0;  ///< peak resident memory grown while building and running
-  double growthBytes = 0;       ///< resident memory grown from the end of the first run to the end
+  double growthBytes = 0;       ///< resident memory grown from a tenth into the first run to its end
   bool ok = false;
   char error[200] = {};
 };
@@ -94,11 +94,13 @@ Figures runScene(const Options& o, const std::string& kind, int n) {
     return f;
   }
   sim->setTiming(true);
+  long early = 0;  // resident memory a tenth into a run: the run's growth is measured from here
   auto run = [&](long steps, Figures& into) -> bool {
     State state = s.state;
     into = Figures{};
     const auto start = std::chrono::steady_clock::now();
     for (long k = 0; k < steps; ++k) {
+      if (k == steps / 10) early = residentBytes();
       if (Status st = sim->step(s.scene, state); !st) {
         std::snprintf(f.error, sizeof f.error, "%s", st.message().c_str());
         return false;
@@ -124,17 +126,17 @@ Figures runScene(const Options& o, const std::string& kind, int n) {
   if (!run(std::min<long>(5, f.steps), trial)) return f;  // warm-up
   const int repeats = o.repeats > 0 ? o.repeats : (n >= 100000 ? 1 : 3);
   Figures best;
-  long afterFirst = 0;
+  long growth = 0;
   for (int r = 0; r < repeats; ++r) {
     if (!run(f.steps, trial)) return f;
-    if (r == 0) afterFirst = residentBytes();
+    if (r == 0) growth = residentBytes() - early;
     if (r == 0 || trial.total < best.total) best = trial;
   }
   best.particles = f.particles;
   best.edges = f.edges;
   best.steps = f.steps;
   best.bytesPerParticle = static_cast<double>(peakResidentBytes() - before) / f.particles;
-  best.growthBytes = static_cast<double>(residentBytes() - afterFirst);
+  best.growthBytes = static_cast<double>(growth);
   best.ok = true;
   return best;
 }
@@ -212,12 +214,27 @@ int main(int argc, char** argv) {
            "total_ms,candidates_per_step,queries_per_step,collisions_per_step,passes_per_step,failsafe_steps,rounds_per_failsafe,"
            "largest_zone,bytes_per_particle,rss_growth_bytes,threads,queries_per_second,hit_rate\n";
   }
+  {
+    // Where the figures come from: the machine and how busy it was.
+    std::ifstream cpuinfo("/proc/cpuinfo");
+    std::string line, model = "unknown CPU";
+    while (std::getline(cpuinfo, line))
+      if (line.rfind("model name", 0) == 0) {
+        model = line.substr(line.find(':') + 2);
+        break;
+      }
+    std::ifstream loadavg("/proc/loadavg");
+    double load1 = 0, load5 = 0;
+    loadavg >> load1 >> load5;
+    std::printf("machine: %s, %ld hardware threads, load average %.2f (1 min) %.2f (5 min) at the start\n", model.c_str(),
+                sysconf(_SC_NPROCESSORS_ONLN), load1, load5);
+  }
   if (o.stepTable) {
     std::printf("ms per step by phase (%s handling, %d thread%s%s; fastest of the repeated runs)\n", o.collision.c_str(),
                 o.threads, o.threads == 1 ? "" : "s", o.allPairs ? ", all pairs" : "");
-    std::printf("%-8s %7s %6s %9s %7s %7s %7s %7s %8s %8s | %9s %9s %6s %5s %6s %6s %7s\n", "scene", "N", "steps",
+    std::printf("%-8s %7s %6s %9s %7s %7s %7s %7s %8s %8s | %9s %9s %6s %5s %6s %6s %7s %6s\n", "scene", "N", "steps",
                 "integrate", "broad", "narrow", "respond", "failsafe", "other", "total", "cand/step", "coll/step",
-                "passes", "fs%", "rounds", "zone", "B/part");
+                "passes", "fs%", "rounds", "zone", "B/part", "grow/p");
     for (const std::string& kind : o.scenes) {
       for (int n : o.sizes) {
         const Figures f = inChild(o, kind, n);
@@ -228,12 +245,12 @@ int main(int argc, char** argv) {
         const double per = 1000.0 / static_cast<double>(f.steps);
         const double other = f.total - f.integrate - f.broad - f.narrow - f.response - f.failsafe;
         const double steps = static_cast<double>(f.steps);
-        std::printf("%-8s %7d %6ld %9.3f %7.3f %7.3f %7.3f %8.3f %8.3f %8.3f | %9.0f %9.1f %6.2f %5.1f %6.1f %6d %7.0f\n",
+        std::printf("%-8s %7d %6ld %9.3f %7.3f %7.3f %7.3f %8.3f %8.3f %8.3f | %9.0f %9.1f %6.2f %5.1f %6.1f %6d %7.0f %6.1f\n",
                     kind.c_str(), f.particles, f.steps, f.integrate * per, f.broad * per, f.narrow * per,
                     f.response * per, f.failsafe * per, other * per, f.total * per, f.candidates / steps,
                     f.collisions / steps, f.passes / steps, 100.0 * static_cast<double>(f.failsafeSteps) / steps,
                     f.failsafeSteps ? f.rounds / static_cast<double>(f.failsafeSteps) : 0.0, f.largestZone,
-                    f.bytesPerParticle);
+                    f.bytesPerParticle, f.growthBytes / f.particles);
         std::fflush(stdout);
         if (csv) {
           csv << "steps," << kind << "," << n << "," << f.particles << "," << f.edges << "," << f.steps << ","

@@ -25,6 +25,9 @@
 //  * static pairs (penalty force, simple handler): the exact comparisons |n| < reach at the
 //    positions x; the computed |n| is off by a few ulps of S, far below the margins.
 // Non-finite states make no bounds at all: the callers then check every pair (as the reference).
+// Boxes may be grown further (PairCandidates files them with some slack): larger boxes only add
+// candidates. tests/core/broad_phase_test.cpp builds the grazing pairs that the cutoff admits
+// beyond reach (GrazingPairsNeedTheMargins) and shows that boxes without these margins miss some.
 #pragma once
 
 #include "box_grid.h"
