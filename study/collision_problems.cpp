@@ -32,6 +32,14 @@ class ContactWatch {
   double time_ = kNotApplicable;
 };
 
+/// The conservation errors of a run without external forces doing work: the relative change of
+/// kinetic energy and of momentum (relative to sum m|v0|) from velocities v0 to v.
+void conservationErrors(const Scene& scene, const VecX& v0, const VecX& v, Metrics& m) {
+  const double k0 = kineticEnergy(scene, v0);
+  m.energy = std::abs(kineticEnergy(scene, v) - k0) / k0;
+  m.momentum = (momentum(scene, v) - momentum(scene, v0)).norm() / momentumScale(scene, v0);
+}
+
 // ---- Two disks ---------------------------------------------------------------------------------
 // Unequal masses meeting off-centre (the normal is 30 degrees off the line of motion).
 
@@ -58,9 +66,7 @@ class DisksMeasure final : public Measurement {
     Metrics m;
     m.position = std::max((at(s.x, 0) - x1).norm(), (at(s.x, 1) - x2).norm());
     m.velocity = std::max((at(s.v, 0) - exact_.v1After).norm(), (at(s.v, 1) - exact_.v2After).norm());
-    const double k0 = kineticEnergy(scene, initial.v);
-    m.energy = std::abs(kineticEnergy(scene, s.v) - k0) / k0;
-    m.momentum = (momentum(scene, s.v) - momentum(scene, initial.v)).norm() / momentumScale(scene, initial.v);
+    conservationErrors(scene, initial.v, s.v, m);
     m.contactTime = watch_.time() - tc;
     m.error = m.position;
     return m;
@@ -175,9 +181,7 @@ class CradleMeasure final : public Measurement {
       m.position = std::max(m.position, (at(s.x, i) - Vec2(x, 0)).norm());
       m.velocity = std::max(m.velocity, (at(s.v, i) - v).norm());
     }
-    const double k0 = kineticEnergy(scene, initial.v);
-    m.energy = std::abs(kineticEnergy(scene, s.v) - k0) / k0;
-    m.momentum = (momentum(scene, s.v) - momentum(scene, initial.v)).norm() / momentumScale(scene, initial.v);
+    conservationErrors(scene, initial.v, s.v, m);
     m.error = m.position;
     return m;
   }
@@ -211,9 +215,7 @@ class BreakMeasure final : public Measurement {
   Metrics finish(const Scene& scene, const State& initial, const RunResult& run) override {
     const State& s = run.final;
     Metrics m;
-    const double k0 = kineticEnergy(scene, initial.v);
-    m.energy = std::abs(kineticEnergy(scene, s.v) - k0) / k0;
-    m.momentum = (momentum(scene, s.v) - momentum(scene, initial.v)).norm() / momentumScale(scene, initial.v);
+    conservationErrors(scene, initial.v, s.v, m);
     m.error = m.energy;
     return m;
   }

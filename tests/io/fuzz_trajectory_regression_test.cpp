@@ -1,27 +1,11 @@
-// Runs fuzz_trajectory's own checks (fuzz/trajectory_fuzz.cpp) on every input in
-// tests/data/fuzz-regressions/trajectory: inputs that once crashed or broke an invariant.
-// A violated invariant aborts, which fails this test.
+// Runs the trajectory fuzz target's own checks (fuzz/trajectory_fuzz.cpp) on every input in
+// tests/data/fuzz-regressions/trajectory.
 #include "../../fuzz/trajectory_fuzz.cpp"
 
-#include <gtest/gtest.h>
-
-#include <filesystem>
-#include <fstream>
-#include <iterator>
+#include "fuzz_regressions.h"
 
 namespace {
 
-TEST(FuzzRegression, Trajectory) {
-  const std::filesystem::path dir = std::string(FOSSSIM_TEST_DATA) + "/fuzz-regressions/trajectory";
-  int inputs = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-    SCOPED_TRACE(entry.path().string());
-    std::ifstream in(entry.path(), std::ios::binary);
-    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    EXPECT_EQ(LLVMFuzzerTestOneInput(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()), 0);
-    ++inputs;
-  }
-  EXPECT_GT(inputs, 0);
-}
+TEST(FuzzRegression, Trajectory) { replayFuzzRegressions("trajectory"); }
 
 }  // namespace
