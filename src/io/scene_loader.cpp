@@ -6,13 +6,13 @@
 #include "fosssim/core/collision_handler.h"
 #include "fosssim/core/forces.h"
 #include "fosssim/core/integrator.h"
+#include "input_path.h"
 #include "xml_reader.h"
 
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <sstream>
@@ -374,9 +374,7 @@ Status parseScene(const std::string& text, const std::string& name, SceneFile& o
 Status loadScene(const std::string& path, SceneFile& out) {
   out = SceneFile{};
   out.path = path;
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    return Status::error(path + ": cannot read the scene file (it is a directory)");
+  if (Status st = io_detail::checkInputPath(path, "scene file"); !st) return st;
   std::ifstream in(path, std::ios::binary);
   if (!in) return Status::error(path + ": cannot open the scene file (" + std::strerror(errno) + ")");
   // Read in chunks up to a limit, so that a device such as /dev/zero cannot exhaust the memory.

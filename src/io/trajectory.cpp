@@ -1,8 +1,9 @@
 #include "fosssim/io/trajectory.h"
 
+#include "input_path.h"
+
 #include <cerrno>
 #include <cstring>
-#include <filesystem>
 
 namespace fosssim {
 namespace {
@@ -71,9 +72,7 @@ Status TrajectoryReader::open(const std::string& path, int numParticles, RecordL
   r->path_ = path;
   r->n_ = numParticles;
   r->layout_ = layout;
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    return Status::error(path + ": cannot read the trajectory file (it is a directory)");
+  if (Status st = io_detail::checkInputPath(path, "trajectory file"); !st) return st;
   r->in_.open(path, std::ios::binary);
   if (!r->in_) return Status::error(path + ": cannot open the trajectory file (" + std::strerror(errno) + ")");
   r->in_.seekg(0, std::ios::end);

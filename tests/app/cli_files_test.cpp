@@ -1,5 +1,5 @@
-// Files the command line cannot use: unreadable scene paths (missing, a directory, no read
-// permission, an endless device), -o where nothing can be written, -i with a file that does not
+// Files the command line cannot use: unreadable scene paths (missing, a directory, a named pipe,
+// no read permission, an endless device), -o where nothing can be written, -i with a file that does not
 // fit the scene. Each gives exit 1 and a message naming the path, never a crash or a hang.
 #include "run_fosssim.h"
 
@@ -44,6 +44,17 @@ TEST_F(CliFiles, UnreadableScenePaths) {
   expectFailure(runFosssim({"-s", dir_.string(), "-d", "0"}), {dir_.string() + ": cannot read", "directory"});
   // An endless device is not read forever.
   expectFailure(runFosssim({"-s", "/dev/zero", "-d", "0"}), {"/dev/zero: ", "larger than"});
+}
+
+// Opening a named pipe blocks until someone writes to it: refused before the open, not a hang.
+TEST_F(CliFiles, NamedPipesAreRefusedNotWaitedOn) {
+  const std::string fifo = path("pipe");
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  RunOptions options;
+  options.timeoutSeconds = 20;
+  expectFailure(runFosssim({"-s", fifo, "-d", "0"}, options), {fifo + ": cannot read the scene file", "named pipe"});
+  expectFailure(runFosssim({"-s", scene("a.xml", 1), "-d", "0", "-q", "-i", fifo}, options),
+                {fifo + ": cannot read the trajectory file", "named pipe"});
 }
 
 TEST_F(CliFiles, SceneWithoutReadPermission) {
