@@ -223,6 +223,13 @@ def hybrid_failsafe_only(sc, tr, notes):
     return acted
 
 
+def conserved_kinetic(sc, tr, tol=1e-12):
+    """Kinetic energy at every step end equals the first record's, relative to it."""
+    ke0 = kinetic(sc, tr.ends[0])
+    for n, rec in enumerate(tr.ends):
+        close(kinetic(sc, rec) / ke0, 1.0, tol, 'kinetic energy at step %d' % n)
+
+
 def conserved_momentum(sc, tr, notes, tol=1e-12, which=None, upto=None):
     p0 = momentum(sc, tr.ends[0], which)
     scale = max(1.0, norm(p0))
