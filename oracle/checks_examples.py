@@ -2,8 +2,8 @@
 import math
 
 from fosssim_traj import (PH, PP, add, cross, mul, norm, sub)
-from checks_common import (check, close, close2, conserved_kinetic, conserved_momentum, expect, explicit_prediction,
-                           forces, halfplane_distance, kinetic)
+from checks_common import (check, close, close2, conserved_kinetic, conserved_momentum, expect,
+                           explicit_prediction, forces, halfplane_distance, kinetic)
 
 # ---- examples ---------------------------------------------------------------------------------------
 

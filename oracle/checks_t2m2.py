@@ -3,9 +3,9 @@ scene: predicted collision times, exact velocity exchanges, no overlap at step e
 import math
 
 from fosssim_traj import (PE, PH, PP, add, cross, dot, mul, norm, segment_distance, sub, unit)
-from checks_common import (CheckFailed, check, close, close2, conserved_kinetic, conserved_momentum, expect,
-                           halfplane_distance, hybrid_failsafe_only, hybrid_impulses_only, kinetic,
-                           pair_polys_per_pass, straight_line_gaps)
+from checks_common import (CheckFailed, check, close, close2, conserved_kinetic, conserved_momentum,
+                           expect, halfplane_distance, hybrid_failsafe_only, hybrid_impulses_only,
+                           kinetic, pair_polys_per_pass, straight_line_gaps)
 
 # ---- t2m2/ContinuousTimeTests ------------------------------------------------------------------
 
