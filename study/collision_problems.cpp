@@ -5,6 +5,7 @@
 #include "problems.h"
 
 #include <cmath>
+#include <utility>
 
 namespace fosssim::study {
 namespace {
@@ -12,6 +13,18 @@ namespace {
 std::vector<double> collisionSweep(bool quick) {
   if (quick) return {0.02, 0.01};
   return {0.02, 0.01, 0.005, 0.002, 0.001, 5e-4, 2e-4, 1e-4};
+}
+
+/// A collision problem's heading: every collision method over the collision time steps.
+Problem collisionProblem(std::string name, std::string title, std::string errorLabel, bool quick) {
+  Problem p;
+  p.name = std::move(name);
+  p.title = std::move(title);
+  p.errorLabel = std::move(errorLabel);
+  p.kind = "collisions";
+  p.methods = collisionMethods();
+  p.dts = collisionSweep(quick);
+  return p;
 }
 
 /// The first step end at which particle p's velocity departs from its free flight by more than
@@ -78,13 +91,8 @@ class DisksMeasure final : public Measurement {
 };
 
 Problem disks(bool quick) {
-  Problem p;
-  p.name = "disks";
-  p.title = "Elastic collision of two disks (masses 1 and 2, oblique)";
-  p.errorLabel = "position error at the end [m]";
-  p.kind = "collisions";
-  p.methods = collisionMethods();
-  p.dts = collisionSweep(quick);
+  Problem p = collisionProblem("disks", "Elastic collision of two disks (masses 1 and 2, oblique)",
+                               "position error at the end [m]", quick);
   p.scene = [](const Method& m, double dt) {
     SceneXml x;
     x.duration(1.0).method(m, dt);
@@ -128,16 +136,10 @@ class BounceMeasure final : public Measurement {
 };
 
 Problem floorBounce(bool quick, double cor, const char* name) {
-  Problem p;
-  p.name = std::string("bounce-cor") + name;
-  p.title = std::string("Disk bouncing on a half-plane, COR ") + name;
-  p.errorLabel = "position error at the end [m]";
-  p.kind = "collisions";
-  p.dts = collisionSweep(quick);
-  for (Method m : collisionMethods()) {
-    m.collision.cor = cor;
-    p.methods.push_back(m);
-  }
+  Problem p = collisionProblem(std::string("bounce-cor") + name,
+                               std::string("Disk bouncing on a half-plane, COR ") + name,
+                               "position error at the end [m]", quick);
+  for (Method& m : p.methods) m.collision.cor = cor;
   p.scene = [](const Method& m, double dt) {
     const FloorBounce b = bounce(m.collision.cor);
     SceneXml x;
@@ -188,13 +190,8 @@ class CradleMeasure final : public Measurement {
 };
 
 Problem cradle(bool quick) {
-  Problem p;
-  p.name = "cradle";
-  p.title = "Newton's cradle (5 disks, 0.02 gaps)";
-  p.errorLabel = "position error at the end [m]";
-  p.kind = "collisions";
-  p.methods = collisionMethods();
-  p.dts = collisionSweep(quick);
+  Problem p =
+      collisionProblem("cradle", "Newton's cradle (5 disks, 0.02 gaps)", "position error at the end [m]", quick);
   p.scene = [](const Method& m, double dt) {
     SceneXml x;
     x.duration(kCradleTime).method(m, dt);
@@ -222,13 +219,8 @@ class BreakMeasure final : public Measurement {
 };
 
 Problem billiards(bool quick) {
-  Problem p;
-  p.name = "billiards";
-  p.title = "Billiard break (cue + 15 disks, COR 1)";
-  p.errorLabel = "relative kinetic energy error at the end";
-  p.kind = "collisions";
-  p.methods = collisionMethods();
-  p.dts = collisionSweep(quick);
+  Problem p = collisionProblem("billiards", "Billiard break (cue + 15 disks, COR 1)",
+                               "relative kinetic energy error at the end", quick);
   p.scene = [](const Method& m, double dt) {
     constexpr double r = 0.1, spacing = 2 * r + 0.02;
     SceneXml x;

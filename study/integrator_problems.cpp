@@ -5,6 +5,7 @@
 #include "problems.h"
 
 #include <cmath>
+#include <utility>
 
 namespace fosssim::study {
 namespace {
@@ -12,6 +13,18 @@ namespace {
 std::vector<double> sweep(bool quick, std::vector<double> full) {
   if (!quick) return full;
   return {full[0], full[1]};  // the two coarsest: cheap enough for sanitizer builds
+}
+
+/// An integrator problem's heading: every integrator over the time steps `dts`.
+Problem integratorProblem(std::string name, std::string title, std::string errorLabel, std::vector<double> dts) {
+  Problem p;
+  p.name = std::move(name);
+  p.title = std::move(title);
+  p.errorLabel = std::move(errorLabel);
+  p.kind = "integrators";
+  p.methods = integratorMethods();
+  p.dts = std::move(dts);
+  return p;
 }
 
 // ---- Projectile --------------------------------------------------------------------------------
@@ -34,13 +47,8 @@ class ProjectileMeasure final : public Measurement {
 };
 
 Problem projectile(bool quick) {
-  Problem p;
-  p.name = "projectile";
-  p.title = "Projectile under gravity (2 s flight)";
-  p.errorLabel = "position error at the end [m]";
-  p.kind = "integrators";
-  p.methods = integratorMethods();
-  p.dts = sweep(quick, {0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 5e-4, 2e-4, 1e-4});
+  Problem p = integratorProblem("projectile", "Projectile under gravity (2 s flight)", "position error at the end [m]",
+                                sweep(quick, {0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 5e-4, 2e-4, 1e-4}));
   p.scene = [](const Method& m, double dt) {
     SceneXml x;
     x.duration(2.0).method(m, dt).gravity(kThrow.g);
@@ -80,14 +88,12 @@ class SpringMeasure final : public Measurement {
 };
 
 Problem spring(bool quick, double b) {
-  Problem p;
   const bool damped = b > 0;
-  p.name = damped ? "spring-damped" : "spring";
-  p.title = damped ? "Damped spring (k = 10, b = 1, 5 s)" : "Undamped spring (k = 10, 10 s, 5 periods)";
-  p.errorLabel = "position error at the end [m]";
-  p.kind = "integrators";
-  p.methods = integratorMethods();
-  p.dts = sweep(quick, {0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 5e-4, 2e-4, 1e-4});
+  Problem p = integratorProblem(damped ? "spring-damped" : "spring",
+                                damped ? "Damped spring (k = 10, b = 1, 5 s)"
+                                       : "Undamped spring (k = 10, 10 s, 5 periods)",
+                                "position error at the end [m]",
+                                sweep(quick, {0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 5e-4, 2e-4, 1e-4}));
   p.scene = [b, damped](const Method& m, double dt) {
     SceneXml x;
     x.duration(damped ? 5.0 : 10.0).method(m, dt);
@@ -150,13 +156,8 @@ class OrbitMeasure final : public Measurement {
 };
 
 Problem orbit(bool quick) {
-  Problem p;
-  p.name = "orbit";
-  p.title = "Two-body orbit (e = 0.41, 2 periods)";
-  p.errorLabel = "separation error at the end [m]";
-  p.kind = "integrators";
-  p.methods = integratorMethods();
-  p.dts = sweep(quick, {0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 5e-4, 2e-4, 1e-4});
+  Problem p = integratorProblem("orbit", "Two-body orbit (e = 0.41, 2 periods)", "separation error at the end [m]",
+                                sweep(quick, {0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 5e-4, 2e-4, 1e-4}));
   p.scene = [](const Method& m, double dt) {
     const KeplerOrbit orbit(mu(), kRelX, kRelV);
     SceneXml x;
