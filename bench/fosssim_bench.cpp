@@ -74,6 +74,22 @@ long peakResidentBytes() {
   return usage.ru_maxrss * 1024L;
 }
 
+/// Where the figures come from: the machine and how busy it was at the start.
+void printMachine() {
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  std::string line, model = "unknown CPU";
+  while (std::getline(cpuinfo, line))
+    if (line.rfind("model name", 0) == 0) {
+      model = line.substr(line.find(':') + 2);
+      break;
+    }
+  std::ifstream loadavg("/proc/loadavg");
+  double load1 = 0, load5 = 0;
+  loadavg >> load1 >> load5;
+  std::printf("machine: %s, %ld hardware threads, load average %.2f (1 min) %.2f (5 min) at the start\n", model.c_str(),
+              sysconf(_SC_NPROCESSORS_ONLN), load1, load5);
+}
+
 Figures runScene(const Options& o, const std::string& kind, int n) {
   Figures f;
   const long before = residentBytes();
@@ -214,21 +230,7 @@ int main(int argc, char** argv) {
            "total_ms,candidates_per_step,queries_per_step,collisions_per_step,passes_per_step,failsafe_steps,rounds_per_failsafe,"
            "largest_zone,bytes_per_particle,rss_growth_bytes,threads,queries_per_second,hit_rate\n";
   }
-  {
-    // Where the figures come from: the machine and how busy it was.
-    std::ifstream cpuinfo("/proc/cpuinfo");
-    std::string line, model = "unknown CPU";
-    while (std::getline(cpuinfo, line))
-      if (line.rfind("model name", 0) == 0) {
-        model = line.substr(line.find(':') + 2);
-        break;
-      }
-    std::ifstream loadavg("/proc/loadavg");
-    double load1 = 0, load5 = 0;
-    loadavg >> load1 >> load5;
-    std::printf("machine: %s, %ld hardware threads, load average %.2f (1 min) %.2f (5 min) at the start\n", model.c_str(),
-                sysconf(_SC_NPROCESSORS_ONLN), load1, load5);
-  }
+  printMachine();
   if (o.stepTable) {
     std::printf("ms per step by phase (%s handling, %d thread%s%s; fastest of the repeated runs)\n", o.collision.c_str(),
                 o.threads, o.threads == 1 ? "" : "s", o.allPairs ? ", all pairs" : "");

@@ -1,10 +1,7 @@
 """What every oracle check shares: the registry of per-scene checks, assertions, physics helpers
 computed from the scene and trajectory alone, and the checks every scene gets (see check.py)."""
 import math
-import os
-import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from fosssim_traj import add, dot, mul, norm, segment_distance, sub, unit
 
 CHECKS = {}

@@ -17,14 +17,8 @@ std::vector<double> collisionSweep(bool quick) {
 
 /// A collision problem's heading: every collision method over the collision time steps.
 Problem collisionProblem(std::string name, std::string title, std::string errorLabel, bool quick) {
-  Problem p;
-  p.name = std::move(name);
-  p.title = std::move(title);
-  p.errorLabel = std::move(errorLabel);
-  p.kind = "collisions";
-  p.methods = collisionMethods();
-  p.dts = collisionSweep(quick);
-  return p;
+  return problemHeading(std::move(name), std::move(title), std::move(errorLabel), "collisions", collisionMethods(),
+                        collisionSweep(quick));
 }
 
 /// The first step end at which particle p's velocity departs from its free flight by more than

@@ -17,14 +17,8 @@ std::vector<double> sweep(bool quick, std::vector<double> full) {
 
 /// An integrator problem's heading: every integrator over the time steps `dts`.
 Problem integratorProblem(std::string name, std::string title, std::string errorLabel, std::vector<double> dts) {
-  Problem p;
-  p.name = std::move(name);
-  p.title = std::move(title);
-  p.errorLabel = std::move(errorLabel);
-  p.kind = "integrators";
-  p.methods = integratorMethods();
-  p.dts = std::move(dts);
-  return p;
+  return problemHeading(std::move(name), std::move(title), std::move(errorLabel), "integrators", integratorMethods(),
+                        std::move(dts));
 }
 
 // ---- Projectile --------------------------------------------------------------------------------
@@ -179,6 +173,18 @@ std::vector<Method> integratorMethods() {
   for (const char* name : {"explicit-euler", "symplectic-euler", "implicit-euler", "linearized-implicit-euler"})
     out.push_back(Method{name, name, CollisionChoice{}});
   return out;
+}
+
+Problem problemHeading(std::string name, std::string title, std::string errorLabel, std::string kind,
+                       std::vector<Method> methods, std::vector<double> dts) {
+  Problem p;
+  p.name = std::move(name);
+  p.title = std::move(title);
+  p.errorLabel = std::move(errorLabel);
+  p.kind = std::move(kind);
+  p.methods = std::move(methods);
+  p.dts = std::move(dts);
+  return p;
 }
 
 Vec2 momentum(const Scene& scene, const VecX& v) {

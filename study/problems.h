@@ -50,6 +50,10 @@ struct Problem {
   std::function<std::unique_ptr<Measurement>()> measure;
 };
 
+/// A problem with its heading filled in; its maker adds the scene and the measurement.
+Problem problemHeading(std::string name, std::string title, std::string errorLabel, std::string kind,
+                       std::vector<Method> methods, std::vector<double> dts);
+
 /// Projectile, undamped and damped spring, two-body orbit: every integrator, no collisions.
 std::vector<Problem> integratorProblems(bool quick);
 /// Elastic disk collision, floor bounce at COR 0, 0.5, 1, Newton's cradle, billiard break: every
