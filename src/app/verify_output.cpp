@@ -19,8 +19,7 @@ Status VerifyOutput::afterStep(const SceneFile& file, const State& state, const 
     std::fprintf(stderr, "verify: step %ld: %s\n", state.step, s.message().c_str());
     return Status::ok();
   }
-  const std::vector<Violation> found = unresolvedCollisions(
-      file.scene, simulator_.lastStart().x, state.x, [this](int p) { return simulator_.zoneOf(p); });
+  const std::vector<Violation> found = simulator_.unresolved(file.scene, state);
   if (found.empty()) return Status::ok();
   violations_ += static_cast<long>(found.size());
   ++stepsWithViolations_;

@@ -57,6 +57,11 @@ Status Simulator::step(const Scene& scene, State& state, StepObserver* observer)
   return Status::ok();
 }
 
+std::vector<Violation> Simulator::unresolved(const Scene& scene, const State& state, size_t limit) const {
+  if (handler_) return handler_->unresolved(scene, start_.x, state.x, limit);
+  return unresolvedCollisions(scene, start_.x, state.x, nullptr, limit);
+}
+
 Status checkFinite(const State& state) {
   if (state.x.allFinite() && state.v.allFinite()) return Status::ok();
   for (int i = 0; i < state.numParticles(); ++i) {

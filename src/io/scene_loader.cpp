@@ -184,6 +184,10 @@ void readCollision(ElementReader& r, Builder& b) {
   const double maxiters = r.number("maxiters", 10.0);
   if (std::fabs(maxiters) > 1e9) r.fail("maxiters", "is out of range");
   c.maxIterations = static_cast<int>(maxiters);
+  const std::string failsafe = r.text("failsafe", "projection");
+  if (failsafe == "projection") c.failsafe = Failsafe::Projection;
+  else if (failsafe == "rigid") c.failsafe = Failsafe::Rigid;
+  else r.fail("failsafe", "unknown failsafe \"" + failsafe + "\" (valid: projection, rigid)");
   c.penaltyK = r.positive("k", entry->defaultK, /*allowZero=*/true);
   c.penaltyThickness = r.positive("thickness", entry->defaultThickness, /*allowZero=*/true);
   b.collisionWhere = r.where();

@@ -6,6 +6,7 @@
 #include "fosssim/core/state.h"
 #include "fosssim/core/step_stats.h"
 #include "fosssim/core/status.h"
+#include "fosssim/core/verify.h"
 
 #include <memory>
 #include <string>
@@ -52,6 +53,11 @@ class CollisionHandler {
   /// The rigid impact zone that moved `particle` in the last step, or -1 (only the hybrid
   /// handler has zones). Pairs inside one zone are exempt from verification.
   virtual int zoneOf(int /*particle*/) const { return -1; }
+  /// Pairs that still collide somewhere along the last step's motion from start to end (at
+  /// most `limit`, 0 = all): what --verify reports. By default the motion is the straight line
+  /// from start to end; handlers whose particles bend within a step check their own paths.
+  virtual std::vector<Violation> unresolved(const Scene& scene, const VecX& start, const VecX& end,
+                                            size_t limit) const;
 };
 
 /// One row of the collision table: the keyword of <collision type="..."> and what it builds.

@@ -26,11 +26,19 @@ struct HalfPlane {
                                ///< (it enters the logged polynomials), never zero
 };
 
-/// How collisions are handled. The keyword selects an entry of collisionHandlerTable().
+/// What the default mode does with contacts that impulses cannot settle within a step.
+enum class Failsafe {
+  Projection,  ///< inelastic projection per impact zone (Harmon et al. 2008); rigid zones last
+  Rigid,       ///< rigid impact zones at once (the course's failsafe)
+};
+
+/// How collisions are handled. The keyword selects an entry of collisionTable().
 struct CollisionSettings {
   std::string type = "none";  ///< "none", "simple", "continuous-time", "penalty" or "hybrid"
   double cor = 1.0;           ///< coefficient of restitution, 1 elastic .. 0 inelastic
   int maxIterations = 10;     ///< hybrid: impulse passes before the failsafe; <= 0 means none
+                              ///< (default mode: impulse events per particle and step)
+  Failsafe failsafe = Failsafe::Projection;  ///< default mode only; --compat is always rigid
   double penaltyK = 0.0;      ///< penalty / hybrid: stiffness of the penalty force (informative;
   double penaltyThickness = 0.0;  ///< the force itself is in Scene::forces)
 };

@@ -30,6 +30,9 @@ class Simulator {
   const CollisionLog& log() const { return log_; }
   /// The rigid impact zone that moved `particle` in the last step, or -1.
   int zoneOf(int particle) const { return handler_ ? handler_->zoneOf(particle) : -1; }
+  /// Pairs of the last step that still collide somewhere along its motion (--verify): `state`
+  /// is the state the last step produced. At most `limit` (0 = all).
+  std::vector<Violation> unresolved(const Scene& scene, const State& state, size_t limit = 0) const;
   /// The state at the beginning of the last step.
   const State& lastStart() const { return start_; }
   /// What the last step cost and did (timings are measured only when enabled).

@@ -1,5 +1,6 @@
 // The collision table: every keyword of <collision type="..."> and what it builds.
 #include "collision_handlers.h"
+#include "event_handler.h"
 
 namespace fosssim {
 namespace {
@@ -8,11 +9,15 @@ std::unique_ptr<CollisionHandler> makeSimple(const CollisionSettings& s, const H
   return std::make_unique<SimpleHandler>(s, o);
 }
 
+// Outside --compat, "continuous-time" and "hybrid" resolve contacts in time order (event_handler.h);
+// they differ in how many impulses a particle may take in a step before the failsafe.
 std::unique_ptr<CollisionHandler> makeContinuousTime(const CollisionSettings& s, const HandlerOptions& o) {
+  if (!o.compat) return std::make_unique<EventHandler>(s, kContinuousEventsPerParticle, o.allPairs);
   return std::make_unique<ContinuousTimeHandler>(s, o);
 }
 
 std::unique_ptr<CollisionHandler> makeHybrid(const CollisionSettings& s, const HandlerOptions& o) {
+  if (!o.compat) return std::make_unique<EventHandler>(s, s.maxIterations, o.allPairs);
   return std::make_unique<HybridHandler>(s, o);
 }
 

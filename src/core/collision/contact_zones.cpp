@@ -1,0 +1,261 @@
+#include "contact_zones.h"
+
+#include "pair_query.h"
+
+#include "fosssim/math/geometry.h"
+
+#include <algorithm>
+
+namespace fosssim {
+namespace {
+
+Vec2 unit(const Vec2& a) {
+  const double n = a.norm();
+  return n > 0.0 ? Vec2(a / n) : Vec2(Vec2::Zero());
+}
+
+Vec2 perp(const Vec2& a) { return Vec2(-a.y(), a.x()); }
+
+}  // namespace
+
+void ContactZones::reset(int n) {
+  if (static_cast<int>(parent_.size()) != n) {
+    parent_.assign(n, -1);
+    slot_.assign(n, -1);
+    members_.assign(n, {});
+    contacts_.assign(n, {});
+    projections_.assign(n, 0);
+    rigid_.assign(n, 0);
+    roots_.clear();
+    return;
+  }
+  for (int r : roots_) {
+    for (int p : members_[r]) parent_[p] = -1;
+    members_[r].clear();
+    contacts_[r].clear();
+    projections_[r] = 0;
+    rigid_[r] = 0;
+  }
+  roots_.clear();
+}
+
+int ContactZones::join(int p) {
+  if (parent_[p] >= 0) return root(p);
+  parent_[p] = p;
+  members_[p].assign(1, p);
+  contacts_[p].clear();
+  projections_[p] = 0;
+  rigid_[p] = 0;
+  roots_.push_back(p);
+  return p;
+}
+
+// Union by size keeps the trees shallow (root() does not compress: it is const).
+int ContactZones::unite(int a, int b) {
+  a = root(a), b = root(b);
+  if (a == b) return a;
+  if (members_[a].size() < members_[b].size()) std::swap(a, b);
+  parent_[b] = a;
+  members_[a].insert(members_[a].end(), members_[b].begin(), members_[b].end());
+  contacts_[a].insert(contacts_[a].end(), contacts_[b].begin(), contacts_[b].end());
+  projections_[a] = std::max(projections_[a], projections_[b]);
+  rigid_[a] = rigid_[a] || rigid_[b];
+  members_[b].clear();
+  contacts_[b].clear();
+  return a;
+}
+
+void ContactZones::addContact(int zone, uint64_t key) { contacts_[zone].push_back(key); }
+
+// Could the pair touch before the step ends? Its distance at T against the radius sum plus what
+// the pair can close in the rest of the step (the sum of its particles' remaining displacements).
+bool ContactZones::near(const Scene& scene, const StepMotion& motion, uint64_t key, double T) const {
+  const int i = keyParticle(key), other = keyOther(key);
+  const Vec2 x = motion.at(i, T);
+  const double left = 1.0 - T;
+  switch (keyKind(key)) {
+    case PairKind::ParticleParticle: {
+      const double reach = (scene.radius[i] + scene.radius[other]) * (1.0 + kTouchingSlack) +
+                           left * (motion.rate(other) - motion.rate(i)).norm();
+      return (motion.at(other, T) - x).squaredNorm() <= reach * reach;
+    }
+    case PairKind::ParticleEdge: {
+      const Edge& e = scene.edges[other];
+      const double reach = (scene.radius[i] + e.radius) * (1.0 + kTouchingSlack) +
+                           left * (motion.rate(i).norm() + motion.rate(e.i).norm() + motion.rate(e.j).norm());
+      return math::segmentContactVector(x, motion.at(e.i, T), motion.at(e.j, T)).squaredNorm() <= reach * reach;
+    }
+    case PairKind::ParticleHalfPlane: {
+      const HalfPlane& h = scene.halfplanes[other];
+      const Vec2 n = unit(h.normal);
+      const double reach = scene.radius[i] * (1.0 + kTouchingSlack) + left * std::abs(motion.rate(i).dot(n));
+      return (x - h.point).dot(n) <= reach;
+    }
+  }
+  return false;
+}
+
+int ContactZones::absorb(const Scene& scene, const StepMotion& motion, const PairCandidates& candidates, uint64_t key,
+                         double T) {
+  int zone = -1;
+  queue_.clear();
+  auto take = [&](int p) {
+    if (scene.isFixed(p)) return;
+    if (parent_[p] < 0) queue_.push_back(p);  // new to the zones: its neighbours are looked at
+    const int r = join(p);
+    zone = zone < 0 ? r : unite(zone, r);
+  };
+  const PairParticles pair = pairParticles(scene, key);
+  for (int k = 0; k < pair.count; ++k) take(pair.p[k]);
+  if (zone < 0) return -1;  // every particle of the pair is fixed
+  addContact(zone, key);
+  while (!queue_.empty()) {
+    const int q = queue_.back();
+    queue_.pop_back();
+    keys_.clear();
+    candidates.pairsOf(q, keys_);
+    for (uint64_t k : keys_) {
+      if (!near(scene, motion, k, T)) continue;
+      const PairParticles other = pairParticles(scene, k);
+      for (int m = 0; m < other.count; ++m) take(other.p[m]);
+      addContact(zone, k);
+    }
+  }
+  return zone;
+}
+
+void ContactZones::resolve(const Scene& scene, StepMotion& motion, int zone, double T, double h, VecX& v,
+                           std::vector<int>& changed, StepStats& stats) {
+  zone = root(zone);
+  std::vector<uint64_t>& contacts = contacts_[zone];
+  std::sort(contacts.begin(), contacts.end());
+  contacts.erase(std::unique(contacts.begin(), contacts.end()), contacts.end());
+  // Bodies: the zone's particles (in ascending order, so that results do not depend on the order
+  // in which the zone was discovered), then the fixed particles its contacts touch.
+  std::vector<int>& members = members_[zone];
+  std::sort(members.begin(), members.end());
+  bodies_.assign(members.begin(), members.end());
+  for (uint64_t key : contacts) {
+    const PairParticles pair = pairParticles(scene, key);
+    for (int k = 0; k < pair.count; ++k)
+      if (scene.isFixed(pair.p[k]) && std::find(bodies_.begin() + static_cast<long>(members.size()), bodies_.end(),
+                                                pair.p[k]) == bodies_.end())
+        bodies_.push_back(pair.p[k]);
+  }
+  inverseMass_.resize(bodies_.size());
+  velocity_.resize(bodies_.size());
+  for (size_t b = 0; b < bodies_.size(); ++b) {
+    const int p = bodies_[b];
+    slot_[p] = static_cast<int>(b);
+    inverseMass_[b] = scene.isFixed(p) ? 0.0 : 1.0 / scene.massOf(p);
+    velocity_[b] = motion.rate(p) / h;
+  }
+
+  bool converged = false;
+  if (!rigid_[zone] && !rigidOnly_ && projections_[zone] < kMaxZoneProjections) {
+    ++projections_[zone];
+    ++stats.failsafeRounds;
+    project(scene, motion, zone, T, h, converged);
+  }
+  if (!converged) {
+    rigid_[zone] = 1;
+    moveRigidly(scene, motion, zone, T, h);
+  }
+  for (int p : members) {
+    const Vec2 rate = h * velocity_[slot_[p]];
+    if (rate == motion.rate(p)) continue;
+    at(v, p) += velocity_[slot_[p]] - motion.rate(p) / h;
+    motion.setRate(p, T, rate);
+    changed.push_back(p);
+  }
+  for (int p : bodies_) slot_[p] = -1;
+}
+
+// One row per contact, n·(relative velocity) >= 0 with n the unit contact normal at T (from the
+// particle toward the other object), written as sum_k coef_k · v_k >= 0:
+//   particle-particle (i, j):       n·(v_j - v_i)                       >= 0
+//   particle-edge (p; a, b; alpha): n·((1 - alpha) v_a + alpha v_b - v_p) >= 0
+//   particle-half-plane (p):        -n·v_p = m^·v_p                     >= 0
+void ContactZones::project(const Scene& scene, const StepMotion& motion, int zone, double T, double h,
+                           bool& converged) {
+  (void)h;
+  rows_.clear();
+  for (uint64_t key : contacts_[zone]) {
+    const int i = keyParticle(key), other = keyOther(key);
+    const Vec2 x = motion.at(i, T);
+    math::ConstraintRow row;
+    Vec2 n;
+    switch (keyKind(key)) {
+      case PairKind::ParticleParticle:
+        n = unit(motion.at(other, T) - x);
+        row.count = 2;
+        row.body[0] = slot_[i], row.coef[0] = -n;
+        row.body[1] = slot_[other], row.coef[1] = n;
+        break;
+      case PairKind::ParticleEdge: {
+        const Edge& e = scene.edges[other];
+        double alpha = 0;
+        n = unit(math::segmentContactVector(x, motion.at(e.i, T), motion.at(e.j, T), &alpha));
+        row.count = 3;
+        row.body[0] = slot_[i], row.coef[0] = -n;
+        row.body[1] = slot_[e.i], row.coef[1] = (1.0 - alpha) * n;
+        row.body[2] = slot_[e.j], row.coef[2] = alpha * n;
+        break;
+      }
+      case PairKind::ParticleHalfPlane:
+        n = -unit(scene.halfplanes[other].normal);
+        row.count = 1;
+        row.body[0] = slot_[i], row.coef[0] = -n;
+        break;
+    }
+    if (n == Vec2::Zero()) continue;  // coincident centres: no direction to keep apart along
+    rows_.push_back(row);
+  }
+  const math::ProjectionResult result = projector_.project(inverseMass_, rows_, velocity_);
+  converged = result.converged;
+}
+
+// Rigid velocities closest to the zone's in the kinetic-energy norm: the centre of mass's
+// velocity vc = sum m u / M and the angular velocity w = L / I of the momentum about it,
+// L = sum m (x - c) x (u - vc), I = sum m |x - c|^2; u' = vc + w perp(x - c). An immovable zone
+// (a fixed particle or a half-plane among its contacts) stops.
+void ContactZones::moveRigidly(const Scene& scene, const StepMotion& motion, int zone, double T, double h) {
+  (void)h;
+  const std::vector<int>& members = members_[zone];
+  bool immovable = bodies_.size() > members.size();
+  for (uint64_t key : contacts_[zone]) immovable = immovable || keyKind(key) == PairKind::ParticleHalfPlane;
+  if (immovable) {
+    for (int p : members) velocity_[slot_[p]] = Vec2::Zero();
+    return;
+  }
+  double mass = 0;
+  Vec2 c = Vec2::Zero(), vc = Vec2::Zero();
+  for (int p : members) {
+    const double m = scene.massOf(p);
+    mass += m;
+    c += m * motion.at(p, T);
+    vc += m * velocity_[slot_[p]];
+  }
+  c /= mass;
+  vc /= mass;
+  double angular = 0, inertia = 0;
+  for (int p : members) {
+    const double m = scene.massOf(p);
+    const Vec2 r = motion.at(p, T) - c, u = velocity_[slot_[p]] - vc;
+    angular += m * (r.x() * u.y() - r.y() * u.x());
+    inertia += m * r.squaredNorm();
+  }
+  const double w = inertia > 0.0 ? angular / inertia : 0.0;
+  for (int p : members) velocity_[slot_[p]] = vc + w * perp(motion.at(p, T) - c);
+}
+
+void ContactZones::sizes(int& zones, int& largest) const {
+  zones = largest = 0;
+  for (int r : roots_) {
+    if (parent_[r] != r) continue;
+    ++zones;
+    largest = std::max(largest, static_cast<int>(members_[r].size()));
+  }
+}
+
+}  // namespace fosssim

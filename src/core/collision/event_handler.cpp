@@ -1,0 +1,217 @@
+#include "event_handler.h"
+
+#include "impulse_response.h"
+#include "pair_query.h"
+
+#include <algorithm>
+#include <sstream>
+
+namespace fosssim {
+namespace {
+
+std::string pairName(uint64_t key) {
+  std::ostringstream s;
+  const char* other = keyKind(key) == PairKind::ParticleParticle ? "particle"
+                      : keyKind(key) == PairKind::ParticleEdge   ? "edge"
+                                                                 : "half-plane";
+  s << pairKindName(keyKind(key)) << " pair (particle " << keyParticle(key) << ", " << other << " " << keyOther(key)
+    << ")";
+  return s.str();
+}
+
+}  // namespace
+
+EventHandler::EventHandler(const CollisionSettings& settings, int eventsPerParticle, bool allPairs)
+    : cor_(settings.cor), eventsPerParticle_(std::max(eventsPerParticle, 0)), allPairs_(allPairs) {
+  zones_.setRigidOnly(settings.failsafe == Failsafe::Rigid);
+}
+
+Status EventHandler::handle(const Scene& scene, const State& start, State& state, StepContext& ctx) {
+  const int n = scene.numParticles();
+  if (ctx.log->polynomials.enabled()) logReferencePolynomials(scene, start, state, ctx);
+  motion_.begin(start.x, state.x);
+  events_.assign(n, 0);
+  zones_.reset(n);
+  heap_.clear();
+  {
+    const StepTimer timer(ctx.timing, ctx.stats->broadPhase);
+    candidates_.build(scene, motion_.from(), motion_.end(), 0.0, /*updates=*/true);
+    if (allPairs_) candidates_.forceAllPairs();
+  }
+  // Detect.
+  if (Status s = detectAll(scene, ctx); !s) return s;
+  // Respond, in time order. Every event either is dropped (stale, resolved), or bends at least
+  // one movable particle's path: an impulse costs that particle one of its quota, and a zone
+  // solve is bounded by kMaxZoneProjections per zone, then rigid zones absorb particles, N at
+  // most. So the loop ends; the budget below only guards that reasoning.
+  const long budget = static_cast<long>(eventsPerParticle_ + kMaxZoneProjections + 2) * (n + 1) * 4 + 1000;
+  long processed = 0;
+  while (!heap_.empty()) {
+    std::pop_heap(heap_.begin(), heap_.end(), later);
+    const Event e = heap_.back();
+    heap_.pop_back();
+    if (stale(scene, e)) continue;
+    if (++processed > budget) return Status::error("contact events do not settle (internal error: budget exceeded)");
+    changed_.clear();
+    {
+      const StepTimer timer(ctx.timing, ctx.stats->response);
+      respond(scene, e, state, ctx);
+    }
+    if (Status s = detectChanged(scene, e.t, ctx); !s) return s;
+  }
+  // Finish: the end of every particle's last piece.
+  state.x = motion_.end();
+  int zones = 0, largest = 0;
+  zones_.sizes(zones, largest);
+  if (zones > 0) {
+    ctx.stats->failsafeUsed = true;
+    ctx.stats->zones = zones;
+    ctx.stats->largestZone = largest;
+  }
+  if (ctx.observer) ctx.observer->midStep(*ctx.log, state);
+  return Status::ok();
+}
+
+Status EventHandler::detectAll(const Scene& scene, StepContext& ctx) {
+  const int n = scene.numParticles(), planes = static_cast<int>(scene.halfplanes.size());
+  StepStats& stats = *ctx.stats;
+  for (int i = 0; i < n; ++i) {
+    keys_.clear();
+    {
+      const StepTimer timer(ctx.timing, stats.broadPhase);
+      row_.clear();
+      candidates_.particlesOf(i, -1, row_);
+      for (int j : row_) keys_.push_back(pairKey(i, PairKind::ParticleParticle, j));
+      row_.clear();
+      if (!scene.edges.empty()) candidates_.edgesOf(i, -1, row_);
+      for (int e : row_) keys_.push_back(pairKey(i, PairKind::ParticleEdge, e));
+      for (int h = 0; h < planes; ++h)
+        if (candidates_.nearPlane(i, h)) keys_.push_back(pairKey(i, PairKind::ParticleHalfPlane, h));
+    }
+    const StepTimer timer(ctx.timing, stats.narrowPhase);
+    for (uint64_t key : keys_)
+      if (Status s = query(scene, key, 0.0, stats); !s) return s;
+  }
+  return Status::ok();
+}
+
+Status EventHandler::detectChanged(const Scene& scene, double T, StepContext& ctx) {
+  if (changed_.empty()) return Status::ok();
+  {
+    const StepTimer timer(ctx.timing, ctx.stats->broadPhase);
+    for (int p : changed_) candidates_.update(p);
+    candidates_.settle(false);
+    keys_.clear();
+    for (int p : changed_) candidates_.pairsOf(p, keys_);
+    std::sort(keys_.begin(), keys_.end());
+    keys_.erase(std::unique(keys_.begin(), keys_.end()), keys_.end());
+  }
+  const StepTimer timer(ctx.timing, ctx.stats->narrowPhase);
+  for (uint64_t key : keys_)
+    if (Status s = query(scene, key, T, *ctx.stats); !s) return s;
+  return Status::ok();
+}
+
+// The pair over [T, 1]: every particle is on its last piece there (events come in time order).
+Status EventHandler::query(const Scene& scene, uint64_t key, double T, StepStats& stats) {
+  ++stats.candidatePairs;
+  ++stats.queries[static_cast<int>(keyKind(key))];
+  const double left = 1.0 - T;
+  if (left <= 0.0) return Status::ok();
+  math::ExactContact contact;
+  const math::CcdOutcome outcome = queryPair(scene, key, [&](int p, Vec2& x, Vec2& d) {
+    x = motion_.at(p, T);
+    d = left * motion_.rate(p);
+  }, contact);
+  if (outcome == math::CcdOutcome::Miss) return Status::ok();
+  if (outcome == math::CcdOutcome::Overflow)
+    return Status::error("the " + pairName(key) + " cannot be tested for contact: its coordinates or motion are too "
+                         "large to represent (overflow); check the scene's positions and velocities");
+  Event e;
+  e.t = std::min(T + contact.tau * left, 1.0);
+  e.key = key;
+  e.normal = contact.normal;
+  e.alpha = contact.alpha;
+  const PairParticles pair = pairParticles(scene, key);
+  for (int k = 0; k < pair.count; ++k) e.version[k] = motion_.version(pair.p[k]);
+  heap_.push_back(e);
+  std::push_heap(heap_.begin(), heap_.end(), later);
+  return Status::ok();
+}
+
+bool EventHandler::stale(const Scene& scene, const Event& e) const {
+  const PairParticles pair = pairParticles(scene, e.key);
+  for (int k = 0; k < pair.count; ++k)
+    if (motion_.version(pair.p[k]) != e.version[k]) return true;
+  return false;
+}
+
+void EventHandler::respond(const Scene& scene, const Event& e, State& state, StepContext& ctx) {
+  const double h = ctx.dt;
+  auto rate = [&](int p) { return motion_.rate(p); };
+  double scale = 0;
+  const double closing = closingSpeed(scene, e.key, e.normal, e.alpha, rate, scale);
+  if (closing <= kRestingClosingFraction * scale) return;  // resolved already (rounding)
+
+  const PairParticles pair = pairParticles(scene, e.key);
+  bool toZones = false, sameRigidZone = true;
+  int zone = -2;
+  for (int k = 0; k < pair.count; ++k) {
+    const int p = pair.p[k];
+    if (scene.isFixed(p)) continue;
+    const int z = zones_.zoneOf(p);
+    toZones = toZones || z >= 0 || events_[p] >= eventsPerParticle_;
+    sameRigidZone = sameRigidZone && z >= 0 && zones_.isRigid(z) && (zone == -2 || zone == z);
+    zone = z;
+  }
+  if (zone == -2) return;  // every particle of the pair is fixed
+  if (toZones) {
+    // Inside one rigid zone, contacts are exempt (its motion is rigid to first order).
+    if (sameRigidZone) return;
+    const StepTimer timer(ctx.timing, ctx.stats->failsafe);
+    const int z = zones_.absorb(scene, motion_, candidates_, e.key, e.t);
+    if (z >= 0) zones_.resolve(scene, motion_, z, e.t, h, state.v, changed_, *ctx.stats);
+    return;
+  }
+
+  // One impulse against the current velocities (the paths' rates over h).
+  const int i = keyParticle(e.key), other = keyOther(e.key);
+  const auto v = [&](int p) -> Vec2 { return motion_.rate(p) / h; };
+  VelocityChange change;
+  switch (keyKind(e.key)) {
+    case PairKind::ParticleParticle:
+      change = particleParticleResponse(scene, i, other, e.normal, cor_, v(i), v(other));
+      break;
+    case PairKind::ParticleEdge: {
+      const Edge& edge = scene.edges[other];
+      change = particleEdgeResponse(scene, i, edge, e.alpha, e.normal, cor_, v(i), v(edge.i), v(edge.j));
+      break;
+    }
+    case PairKind::ParticleHalfPlane:
+      change = particleHalfPlaneResponse(scene, i, e.normal, cor_, v(i));
+      break;
+  }
+  ++ctx.stats->collisions;
+  ctx.log->impulses.push_back(Impulse{keyKind(e.key), i, other, e.normal, e.t});
+  for (int k = 0; k < change.count; ++k) {
+    const int p = change.particle[k];
+    at(state.v, p) += change.dv[k];
+    motion_.setRate(p, e.t, motion_.rate(p) + h * change.dv[k]);
+    ++events_[p];
+    changed_.push_back(p);
+  }
+}
+
+// The trajectory file's polynomial log: every pair's polynomials over the predicted motion, in
+// the reference's order and form (what the course's files hold), independent of the events.
+void EventHandler::logReferencePolynomials(const Scene& scene, const State& start, const State& state,
+                                           StepContext& ctx) {
+  logger_.forEachCollision(scene, start.x, state.x, &ctx.log->polynomials, [](const Collision&) {});
+}
+
+int EventHandler::zoneOf(int particle) const {
+  const int z = zones_.zoneOf(particle);
+  return z >= 0 && zones_.isRigid(z) ? z : -1;
+}
+
+}  // namespace fosssim

@@ -1,0 +1,81 @@
+// Internal header: the default mode's "continuous-time" and "hybrid" handling, contacts in time
+// order within each step (--compat keeps the reference's handlers, collision_handlers.h).
+//
+//   detect   every candidate pair over the whole step (broad phase, then the scale-invariant
+//            capsule query); each hit is an event (time, pair) in a min-heap;
+//   respond  events in time order: bring the pair's particles to the event time, apply one
+//            impulse against their current velocities (so simultaneous impacts are resolved one
+//            after another, Gauss-Seidel, never summed from stale velocities), bend their paths
+//            there, and query again only the pairs of the particles that changed, over the rest
+//            of the step; stale events (a particle changed since) are dropped;
+//   failsafe a particle that has taken its quota of impulse events in this step (a resting pile,
+//            a ball in a wedge: the Zeno cascades of event-driven methods) hands its contacts to
+//            the impact zones of contact_zones.h, which stop them approaching without a loop;
+//   finish   every particle ends its last straight piece at t = 1.
+// Free flight between events is exact and impulses act along the line through the contact, so
+// momentum and angular momentum are kept to rounding; an impulse with COR <= 1 and a zone's
+// projection never add kinetic energy. A contact closing slower than kRestingClosingFraction of
+// its pair's speeds is resolved already (pair_query.h).
+#pragma once
+
+#include "contact_zones.h"
+#include "continuous_detection.h"
+#include "pair_candidates.h"
+#include "step_motion.h"
+
+#include "fosssim/core/collision_handler.h"
+
+#include <vector>
+
+namespace fosssim {
+
+/// Impulse events per particle and step for "continuous-time" before its contacts go to the
+/// failsafe: far more than any honest collision sequence needs within one step (a particle in a
+/// Newton's cradle takes two), few enough that a resting pile reaches the zones quickly.
+constexpr int kContinuousEventsPerParticle = 32;
+
+class EventHandler final : public CollisionHandler {
+ public:
+  /// eventsPerParticle: impulse events a particle may take in a step before the failsafe (0:
+  /// every contact goes to the zones at once). allPairs: no broad phase (HandlerOptions).
+  EventHandler(const CollisionSettings& settings, int eventsPerParticle, bool allPairs);
+  Status handle(const Scene& scene, const State& start, State& state, StepContext& ctx) override;
+  int zoneOf(int particle) const override;
+  std::vector<Violation> unresolved(const Scene& scene, const VecX& start, const VecX& end,
+                                    size_t limit) const override;
+
+ private:
+  struct Event {
+    double t = 0;      ///< step fraction
+    uint64_t key = 0;  ///< the pair
+    Vec2 normal = Vec2::Zero();  ///< unit, from the particle toward the other object
+    double alpha = 0;  ///< particle-edge: the edge parameter
+    uint32_t version[3] = {0, 0, 0};  ///< the pair's particles' versions when it was found
+  };
+  /// Earliest first; equal times in pair order, so the result never depends on discovery order.
+  static bool later(const Event& a, const Event& b) { return a.t > b.t || (a.t == b.t && a.key > b.key); }
+
+  Status detectAll(const Scene& scene, StepContext& ctx);
+  /// Queries every pair of the particles in changed_ over [T, 1].
+  Status detectChanged(const Scene& scene, double T, StepContext& ctx);
+  Status query(const Scene& scene, uint64_t key, double T, StepStats& stats);
+  bool stale(const Scene& scene, const Event& e) const;
+  /// Applies the event's impulse (or hands it to the zones); fills changed_.
+  void respond(const Scene& scene, const Event& e, State& state, StepContext& ctx);
+  void logReferencePolynomials(const Scene& scene, const State& start, const State& state, StepContext& ctx);
+
+  double cor_;
+  int eventsPerParticle_;
+  bool allPairs_;
+  StepMotion motion_;
+  PairCandidates candidates_;
+  ContactZones zones_;
+  ContinuousDetector logger_{math::QuinticForm::Exact};  ///< builds the trajectory log's polynomials
+  std::vector<Event> heap_;
+  std::vector<int> events_;       ///< N: impulse events taken by each particle in this step
+  std::vector<int> changed_;      ///< particles whose path the last response bent
+  std::vector<uint64_t> keys_;    ///< scratch: pairs to query
+  std::vector<int> row_;          ///< scratch: one row of candidates
+};
+
+}  // namespace fosssim

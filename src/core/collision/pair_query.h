@@ -1,0 +1,88 @@
+// Internal header: the default mode's continuous-time query of one pair over part of a step, on
+// the scale-invariant capsule CCD of the math library (ccd_exact.h), and the pair's closing
+// speed along a contact normal. Shared by the time-ordered handler and its verification.
+#pragma once
+
+#include "pair_candidates.h"
+
+#include "fosssim/core/scene.h"
+#include "fosssim/math/ccd_exact.h"
+
+namespace fosssim {
+
+/// The particles a pair moves: the particle, then the other particle or the edge's endpoints.
+struct PairParticles {
+  int count = 0;
+  int p[3] = {0, 0, 0};
+};
+
+inline PairParticles pairParticles(const Scene& scene, uint64_t key) {
+  PairParticles out;
+  const int i = keyParticle(key), other = keyOther(key);
+  out.p[0] = i;
+  switch (keyKind(key)) {
+    case PairKind::ParticleParticle: out.p[1] = other, out.count = 2; break;
+    case PairKind::ParticleEdge: out.p[1] = scene.edges[other].i, out.p[2] = scene.edges[other].j, out.count = 3; break;
+    case PairKind::ParticleHalfPlane: out.count = 1; break;
+  }
+  return out;
+}
+
+/// Queries pair `key` over an interval of the step. motion(p, x, d) gives particle p's position
+/// x at the interval's start and its displacement d over the interval. On a hit, `contact`
+/// holds the time as a fraction of the interval, the unit normal from the particle toward the
+/// other object and the edge parameter.
+template <class Motion>
+math::CcdOutcome queryPair(const Scene& scene, uint64_t key, Motion&& motion, math::ExactContact& contact) {
+  const int i = keyParticle(key), other = keyOther(key);
+  Vec2 x1, d1;
+  motion(i, x1, d1);
+  switch (keyKind(key)) {
+    case PairKind::ParticleParticle: {
+      Vec2 x2, d2;
+      motion(other, x2, d2);
+      return math::exactPP(math::PPInput{x1, d1, scene.radius[i], x2, d2, scene.radius[other]}, &contact);
+    }
+    case PairKind::ParticleEdge: {
+      const Edge& e = scene.edges[other];
+      Vec2 x2, d2, x3, d3;
+      motion(e.i, x2, d2);
+      motion(e.j, x3, d3);
+      return math::exactPE(math::PEInput{x1, d1, scene.radius[i], x2, d2, x3, d3, e.radius}, &contact);
+    }
+    case PairKind::ParticleHalfPlane: {
+      const HalfPlane& h = scene.halfplanes[other];
+      return math::exactPH(math::PHInput{x1, d1, scene.radius[i], h.point, h.normal}, &contact);
+    }
+  }
+  return math::CcdOutcome::Miss;
+}
+
+/// How fast pair `key` closes along `normal` (unit, from the particle toward the other object),
+/// given each particle's rate(p): positive when approaching. `scale` receives the sum of the
+/// pair's rates' magnitudes, against which a closing speed is judged to be rounding.
+template <class Rate>
+double closingSpeed(const Scene& scene, uint64_t key, const Vec2& normal, double alpha, Rate&& rate, double& scale) {
+  const int i = keyParticle(key), other = keyOther(key);
+  const Vec2 vi = rate(i);
+  Vec2 vo = Vec2::Zero();
+  scale = vi.norm();
+  switch (keyKind(key)) {
+    case PairKind::ParticleParticle: vo = rate(other), scale += vo.norm(); break;
+    case PairKind::ParticleEdge: {
+      const Vec2 va = rate(scene.edges[other].i), vb = rate(scene.edges[other].j);
+      vo = (1.0 - alpha) * va + alpha * vb;
+      scale += va.norm() + vb.norm();
+      break;
+    }
+    case PairKind::ParticleHalfPlane: break;
+  }
+  return (vi - vo).dot(normal);
+}
+
+/// Closing speeds at or below this fraction of the pair's own speeds are the rounding left by a
+/// resolved contact (an inelastic response leaves a closing speed of a few ulps of the speeds),
+/// not an approach: treating them as contacts would only repeat a response that changes nothing.
+constexpr double kRestingClosingFraction = 1e-9;
+
+}  // namespace fosssim
