@@ -46,8 +46,7 @@ TEST_P(Stress, HybridLeavesNoCollisionAfterAnyStep) {
     collisions += sim->stats().collisions;
     failsafeSteps += sim->stats().failsafeUsed;
     largestZone = std::max(largestZone, sim->stats().largestZone);
-    const auto left = unresolvedCollisions(s.scene, sim->lastStart().x, s.state.x,
-                                           [&](int p) { return sim->zoneOf(p); }, 3);
+    const auto left = sim->unresolved(s.scene, s.state, 3);
     violations += static_cast<long>(left.size());
     for (const Violation& v : left)
       ADD_FAILURE() << "step " << k + 1 << ": " << pairKindName(v.kind) << " pair (" << v.i << ", " << v.j

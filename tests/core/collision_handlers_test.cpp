@@ -26,9 +26,11 @@ TestScene collisionSetup(const std::string& type, double cor, double dt = 0.01) 
   return s;
 }
 
-std::unique_ptr<Simulator> makeSimulator(const TestScene& s) {
+std::unique_ptr<Simulator> makeSimulator(const TestScene& s, bool compat = false) {
   std::unique_ptr<Simulator> sim;
-  EXPECT_TRUE(Simulator::create(s.scene, {}, sim).isOk());
+  SimulatorOptions options;
+  options.handler.compat = compat;
+  EXPECT_TRUE(Simulator::create(s.scene, options, sim).isOk());
   return sim;
 }
 
@@ -115,13 +117,14 @@ TEST(CollisionHandlers, FastParticleTunnelsOnlyThroughDiscreteDetection) {
 }
 
 // A ball hits the first of a row of touching balls: impulses travel down the row one pass at a
-// time, so the hybrid method needs several passes; momentum is kept and nothing overlaps after.
+// time, so the course's hybrid method (--compat: passes of summed impulses) needs several passes;
+// momentum is kept and nothing overlaps after. (The default mode's events: contact_physics_test.)
 TEST(CollisionHandlers, ChainNeedsSeveralImpulsePasses) {
   TestScene s = collisionSetup("hybrid", 1.0);
   s.scene.collision.maxIterations = 50;
   addBody(s, 1.0, Vec2(-0.4, 0), Vec2(5, 0), 0.1);
   for (int k = 0; k < 4; ++k) addBody(s, 1.0, Vec2(0.2 * k, 0), Vec2(0, 0), 0.1 - 1e-9);
-  auto sim = makeSimulator(s);
+  auto sim = makeSimulator(s, /*compat=*/true);
   const Vec2 p0 = momentum(s);
   int maxPasses = 0;
   for (int k = 0; k < 30; ++k) {
@@ -135,9 +138,12 @@ TEST(CollisionHandlers, ChainNeedsSeveralImpulsePasses) {
       EXPECT_GE((at(s.state.x, j) - at(s.state.x, i)).norm(), 0.2 - 1e-6) << i << " " << j;
 }
 
-// A dense pile dropped into a V with a single impulse pass: impulses alone cannot resolve it, so
-// the rigid-zone failsafe must act, and after every step nothing collides outside a zone.
+// A dense pile dropped into a V with a single impulse pass (per particle and step in the default
+// mode): impulses alone cannot resolve it, so the failsafe must act, and after every step nothing
+// collides outside a rigid zone. Both modes.
 TEST(CollisionHandlers, PileNeedsTheFailsafeAndEndsCollisionFree) {
+  for (const bool compat : {false, true}) {
+  SCOPED_TRACE(compat ? "compat" : "default mode");
   TestScene s = collisionSetup("hybrid", 0.0, 0.02);
   s.scene.collision.maxIterations = 1;
   for (int row = 0; row < 4; ++row)
@@ -146,21 +152,23 @@ TEST(CollisionHandlers, PileNeedsTheFailsafeAndEndsCollisionFree) {
   s.scene.halfplanes.push_back(HalfPlane{Vec2(0, 0), Vec2(1, 1)});
   s.scene.halfplanes.push_back(HalfPlane{Vec2(0, 0), Vec2(-1, 1)});
   s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, -9.81)));
-  auto sim = makeSimulator(s);
+  auto sim = makeSimulator(s, compat);
   int failsafeSteps = 0, largestZone = 0;
   for (int k = 0; k < 60; ++k) {
     ASSERT_TRUE(sim->step(s.scene, s.state).isOk());
     failsafeSteps += sim->stats().failsafeUsed;
     largestZone = std::max(largestZone, sim->stats().largestZone);
-    const auto left = unresolvedCollisions(s.scene, sim->lastStart().x, s.state.x,
-                                           [&](int p) { return sim->zoneOf(p); });
+    const auto left = sim->unresolved(s.scene, s.state);
     ASSERT_TRUE(left.empty()) << "step " << k + 1 << ": pair (" << left[0].i << ", " << left[0].j << ")";
   }
   EXPECT_GT(failsafeSteps, 0);
   EXPECT_GE(largestZone, 2);
+  }
 }
 
-// Mirror-symmetric scene, simultaneous impulses: the result stays mirror-symmetric.
+// Mirror-symmetric scene, simultaneous impulses summed as the course does (--compat): the result
+// stays mirror-symmetric. (The default mode applies simultaneous impulses one after another,
+// which keeps energy from growing but picks an order: contact_physics_test.)
 TEST(CollisionHandlers, MirrorSymmetricSceneStaysSymmetric) {
   TestScene s = collisionSetup("hybrid", 0.5);
   addBody(s, 1.0, Vec2(-1, 0), Vec2(4, 0), 0.2);
@@ -168,7 +176,7 @@ TEST(CollisionHandlers, MirrorSymmetricSceneStaysSymmetric) {
   addBody(s, 2.0, Vec2(0, 0.5), Vec2(0, -1), 0.2);
   s.scene.halfplanes.push_back(HalfPlane{Vec2(0, -0.5), Vec2(0, 1)});
   s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, -9.81)));
-  auto sim = makeSimulator(s);
+  auto sim = makeSimulator(s, /*compat=*/true);
   run(s, *sim, 100);
   EXPECT_NEAR(s.state.x[0], -s.state.x[2], 1e-9);
   EXPECT_NEAR(s.state.x[1], s.state.x[3], 1e-9);

@@ -68,28 +68,40 @@ int ContactZones::unite(int a, int b) {
 void ContactZones::addContact(int zone, uint64_t key) { contacts_[zone].push_back(key); }
 
 // Could the pair touch before the step ends? Its distance at T against the radius sum plus what
-// the pair can close in the rest of the step (the sum of its particles' remaining displacements).
+// the pair can close in the rest of the step, and the boxes of its remaining motions (grown by
+// the radii) must meet. The box test keeps zones from depending on the broad phase: its boxes
+// contain these, so every pair found near here is among its candidates.
 bool ContactZones::near(const Scene& scene, const StepMotion& motion, uint64_t key, double T) const {
   const int i = keyParticle(key), other = keyOther(key);
   const Vec2 x = motion.at(i, T);
   const double left = 1.0 - T;
+  auto box = [&](int p, double grow) {
+    const Vec2 a = motion.at(p, T), b = motion.end().segment<2>(2 * p);
+    return Box{std::min(a.x(), b.x()) - grow, std::min(a.y(), b.y()) - grow, std::max(a.x(), b.x()) + grow,
+               std::max(a.y(), b.y()) + grow};
+  };
   switch (keyKind(key)) {
     case PairKind::ParticleParticle: {
-      const double reach = (scene.radius[i] + scene.radius[other]) * (1.0 + kTouchingSlack) +
-                           left * (motion.rate(other) - motion.rate(i)).norm();
-      return (motion.at(other, T) - x).squaredNorm() <= reach * reach;
+      const double rs = (scene.radius[i] + scene.radius[other]) * (1.0 + kTouchingSlack);
+      const double reach = rs + left * (motion.rate(other) - motion.rate(i)).norm();
+      return overlap(box(i, rs), box(other, 0.0)) && (motion.at(other, T) - x).squaredNorm() <= reach * reach;
     }
     case PairKind::ParticleEdge: {
       const Edge& e = scene.edges[other];
-      const double reach = (scene.radius[i] + e.radius) * (1.0 + kTouchingSlack) +
-                           left * (motion.rate(i).norm() + motion.rate(e.i).norm() + motion.rate(e.j).norm());
-      return math::segmentContactVector(x, motion.at(e.i, T), motion.at(e.j, T)).squaredNorm() <= reach * reach;
+      const double rs = (scene.radius[i] + e.radius) * (1.0 + kTouchingSlack);
+      const double reach = rs + left * (motion.rate(i).norm() + motion.rate(e.i).norm() + motion.rate(e.j).norm());
+      const Box a = box(e.i, 0.0), b = box(e.j, 0.0);
+      const Box edge{std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
+      return overlap(box(i, rs), edge) &&
+             math::segmentContactVector(x, motion.at(e.i, T), motion.at(e.j, T)).squaredNorm() <= reach * reach;
     }
     case PairKind::ParticleHalfPlane: {
+      // The signed distance is linear in time: its extremes over [T, 1] are at the two ends.
       const HalfPlane& h = scene.halfplanes[other];
       const Vec2 n = unit(h.normal);
-      const double reach = scene.radius[i] * (1.0 + kTouchingSlack) + left * std::abs(motion.rate(i).dot(n));
-      return (x - h.point).dot(n) <= reach;
+      const double r = scene.radius[i] * (1.0 + kTouchingSlack);
+      const double s0 = (x - h.point).dot(n), s1 = s0 + left * motion.rate(i).dot(n);
+      return std::min(s0, s1) <= r && std::max(s0, s1) >= -r;
     }
   }
   return false;

@@ -16,13 +16,6 @@
 namespace fosssim {
 namespace {
 
-/// A contact is a violation only if the pair can close by more than this fraction of its
-/// length scale (coordinates and radii) before its piece ends. Below that it is the contact that
-/// ended the piece, seen a little early: the event time and the interpolated piece agree only to
-/// rounding, and for a pair closing slowly the time of first contact is ill-conditioned (a
-/// rounding of the distance moves it by that rounding over the closing speed). A contact exactly
-/// at t = 1 belongs to the next step, which starts with it.
-constexpr double kVerifyDepthFraction = 1e-12;
 
 /// Each particle's path: start, its breaks in time order, end.
 class Paths {
@@ -72,6 +65,42 @@ class Paths {
   std::vector<MotionBreak> points_;
 };
 
+/// A contact is a violation only if the pair overlaps by more than this fraction of its length
+/// scale (coordinates and radii) before its piece ends. Shallower overlaps are rounding: the
+/// contact that ended the piece seen a little early (event times and interpolated pieces agree
+/// only to rounding, and the time of first contact is ill-conditioned for a pair closing slowly),
+/// or a disk sliding over a joint at a height a few ulps below touching. A contact exactly at
+/// t = 1 belongs to the next step, which starts with it.
+constexpr double kVerifyDepthFraction = 1e-12;
+
+/// Overlap depth of a pair at step fraction t (positive: overlapping).
+double depth(const Scene& scene, uint64_t key, const Paths& paths, double t) {
+  const int i = keyParticle(key), other = keyOther(key);
+  const Vec2 x = paths.at(i, t);
+  switch (keyKind(key)) {
+    case PairKind::ParticleParticle: return scene.radius[i] + scene.radius[other] - (paths.at(other, t) - x).norm();
+    case PairKind::ParticleEdge: {
+      const Edge& e = scene.edges[other];
+      return scene.radius[i] + e.radius - math::segmentContactVector(x, paths.at(e.i, t), paths.at(e.j, t)).norm();
+    }
+    case PairKind::ParticleHalfPlane: {
+      const HalfPlane& h = scene.halfplanes[other];
+      return scene.radius[i] - (x - h.point).dot(h.normal) / h.normal.norm();
+    }
+  }
+  return 0;
+}
+
+/// The deepest overlap of a pair between its first contact t and the end of its piece tb, by
+/// sampling: geometrically closer to t (a pair that passes through penetrates soon after its
+/// contact) and evenly over the piece.
+double deepest(const Scene& scene, uint64_t key, const Paths& paths, double t, double tb) {
+  double d = depth(scene, key, paths, tb);
+  for (double f = 0.5; f > 1e-12; f *= 0.5) d = std::max(d, depth(scene, key, paths, t + f * (tb - t)));
+  for (int k = 1; k < 32; ++k) d = std::max(d, depth(scene, key, paths, t + k / 32.0 * (tb - t)));
+  return d;
+}
+
 }  // namespace
 
 std::vector<Violation> EventHandler::unresolved(const Scene& scene, const VecX& start, const VecX& end,
@@ -104,7 +133,7 @@ std::vector<Violation> EventHandler::unresolved(const Scene& scene, const VecX& 
       if (closing <= kRestingClosingFraction * scale) continue;
       double length = 0;
       for (int k = 0; k < pair.count; ++k) length += paths.at(pair.p[k], t).norm() + scene.radius[pair.p[k]];
-      if (closing * (tb - t) <= kVerifyDepthFraction * length) continue;
+      if (deepest(scene, key, paths, t, tb) <= kVerifyDepthFraction * length) continue;
       bool exempt = true;
       int zone = -2;
       for (int k = 0; k < pair.count; ++k) {
