@@ -35,7 +35,7 @@ QueryRate rate(const std::string& name, const Workload& w) {
   QueryRate q;
   q.name = name + " (" + std::to_string(w.keys.size()) + " pairs)";
   if (w.keys.empty()) return q;
-  const ContinuousDetector detector(math::QuinticForm::Exact);
+  const ContinuousDetector detector(math::DetectionRules{});
   Collision hit;
   auto sweep = [&]() {
     long hits = 0;

@@ -101,17 +101,19 @@ bool sweptBoxesApart(const PEInput& in) {
 
 // firstPositiveTime, staged so that polynomials can be added as they are built and the
 // query abandoned at the first one that is never positive. The rules are the solver's own
-// (all positive just after 0 gives 0; an empty positive set gives kNever; otherwise the
-// intersection of the same PositiveSets), so both paths give identical answers.
+// (all positive just after 0 gives 0, under IntervalRule::Exact only; an empty positive set
+// gives kNever; otherwise the intersection of the same PositiveSets), so both paths give
+// identical answers.
 class StagedSolve {
  public:
+  explicit StagedSolve(IntervalRule rule) : rule_(rule) {}
   // False when p is never positive in [0, 1]: the pair cannot collide this step.
   bool add(const Polynomial& p) {
     polys_[count_] = &p;
-    known_[count_] = !positiveJustAfterZero(p);
+    known_[count_] = rule_ == IntervalRule::Reference || !positiveJustAfterZero(p);
     if (known_[count_]) {
       allPositiveAtZero_ = false;
-      sets_[count_] = positiveSet(p, 1.0);
+      sets_[count_] = positiveSet(p, 1.0, rule_);
       if (sets_[count_].empty()) return false;
     }
     ++count_;
@@ -120,11 +122,12 @@ class StagedSolve {
   double finish() {
     if (allPositiveAtZero_) return 0.0;
     for (int i = 0; i < count_; ++i)
-      if (!known_[i]) sets_[i] = positiveSet(*polys_[i], 1.0);
-    return firstCommonTime(sets_, count_, 1.0);
+      if (!known_[i]) sets_[i] = positiveSet(*polys_[i], 1.0, rule_);
+    return firstCommonTime(sets_, count_, 1.0, rule_);
   }
 
  private:
+  IntervalRule rule_;
   // Filled in order up to count_; not zeroed on purpose (hot path).
   const Polynomial* polys_[4];
   PositiveSet sets_[4];
@@ -268,8 +271,8 @@ Vec2 phContactVector(const PHInput& in, double tau) {
 // the same way. Without one, only what is needed is built, into locals (a zeroed scratch
 // PolyLog would cost more than the PP solve itself).
 
-bool detectPP(const PPInput& in, Contact* hit, PolyLog* log) {
-  StagedSolve solve;  // holds pointers: finish() inside the scope of the polynomials
+bool detectPP(const PPInput& in, Contact* hit, PolyLog* log, const DetectionRules& rules) {
+  StagedSolve solve(rules.intervals);  // holds pointers: finish() inside the scope of the polynomials
   double tau = kNever;
   if (log != nullptr) {
     log->count = 2;
@@ -287,8 +290,9 @@ bool detectPP(const PPInput& in, Contact* hit, PolyLog* log) {
   return report(tau, hit, tau <= 1.0 ? ppContactVector(in, tau) : Vec2::Zero());
 }
 
-bool detectPE(const PEInput& in, Contact* hit, PolyLog* log, QuinticForm form) {
-  StagedSolve solve;  // holds pointers: finish() inside the scope of the polynomials
+bool detectPE(const PEInput& in, Contact* hit, PolyLog* log, const DetectionRules& rules) {
+  StagedSolve solve(rules.intervals);  // holds pointers: finish() inside the scope of the polynomials
+  const QuinticForm form = rules.quintic;
   double tau = kNever;
   if (log != nullptr) {  // all of them, whatever the outcome
     const PEProducts k(in);
@@ -320,8 +324,8 @@ bool detectPE(const PEInput& in, Contact* hit, PolyLog* log, QuinticForm form) {
   return report(tau, hit, tau <= 1.0 ? peContactVector(in, tau) : Vec2::Zero());
 }
 
-bool detectPH(const PHInput& in, Contact* hit, PolyLog* log) {
-  StagedSolve solve;  // holds pointers: finish() inside the scope of the polynomials
+bool detectPH(const PHInput& in, Contact* hit, PolyLog* log, const DetectionRules& rules) {
+  StagedSolve solve(rules.intervals);  // holds pointers: finish() inside the scope of the polynomials
   double tau = kNever;
   if (log != nullptr) {
     log->count = 2;

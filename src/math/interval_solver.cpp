@@ -77,6 +77,35 @@ void generalSet(const Polynomial& p, double tMax, PositiveSet* set) {
   if (signAfter > 0) set->append(tMax, kNever);
 }
 
+// ---- IntervalRule::Reference
+
+// Adds the reference's closed interval [a, b] in the form the chase needs: intervals ending at or
+// before 0 are dropped (the reference skips them when it looks for the first time >= 0, and an
+// intersection with one of them ends at or before 0 too), starts are clamped up to 0 (the start
+// of an intersection is the largest start, and the answer its maximum with 0), and intervals
+// starting after tMax are dropped (whatever they add to the intersection starts after tMax).
+// Appended in ascending order of a, touching or overlapping intervals merge, as the reference's
+// consolidation does.
+void appendClosed(double a, double b, double tMax, PositiveSet* set) {
+  if (!(b > 0.0) || a > tMax) return;
+  set->append(a > 0.0 ? a : 0.0, b);
+}
+
+// Degree 0 to 2, exactly as the reference: its roots (referenceRealRoots), then the sign of each
+// piece read at one point by Horner's rule (Polynomial::operator() evaluates in the same order).
+void referenceLowDegreeSet(const Polynomial& p, double tMax, PositiveSet* set) {
+  double r[2];
+  const int n = p.degree() >= 1 ? referenceRealRoots(p, r) : 0;
+  if (n == 0) {  // a constant, or no real root: all or nothing, as p(0) says
+    if (p(0.0) > 0.0) appendClosed(-kNever, kNever, tMax, set);
+    return;
+  }
+  // In ascending order of start: (-inf, r0], then [r_i, r_i+1], then [r_last, inf).
+  if (p(r[0] - 1.0) > 0.0) appendClosed(-kNever, r[0], tMax, set);
+  if (n == 2 && p(0.5 * (r[0] + r[1])) > 0.0) appendClosed(r[0], r[1], tMax, set);
+  if (p(r[n - 1] + 1.0) > 0.0) appendClosed(r[n - 1], kNever, tMax, set);
+}
+
 }  // namespace
 
 void PositiveSet::append(double a, double b) {
@@ -91,9 +120,17 @@ void PositiveSet::append(double a, double b) {
   }
 }
 
-PositiveSet positiveSet(const Polynomial& p, double tMax) {
+PositiveSet positiveSet(const Polynomial& p, double tMax, IntervalRule rule) {
   PositiveSet set;
   if (p.size == 0 || !allFinite(p)) return set;
+  if (rule == IntervalRule::Reference && p.degree() <= 2) {
+    referenceLowDegreeSet(p, tMax, &set);
+    return set;
+  }
+  // Degree >= 3 under the Reference rule: FOSSSim's pieces between its own roots in [0, tMax]
+  // have the signs the reference reads, and are read as closed by firstCommonTime. The roots
+  // themselves are FOSSSim's (a root at tMax snapped as in the Exact rule), not rpoly's: a
+  // particle-edge contact exactly at the end of a step may still be decided differently.
   switch (p.degree()) {
     case 0:
       if (p.c[0] > 0.0) set.append(0.0, kNever);
@@ -111,9 +148,12 @@ PositiveSet positiveSet(const Polynomial& p, double tMax) {
   return set;
 }
 
-double firstCommonTime(const PositiveSet* sets, int count, double tMax) {
+double firstCommonTime(const PositiveSet* sets, int count, double tMax, IntervalRule rule) {
   // Chase: t only grows, and never past a point of the intersection. At a fixed point every
-  // set contains t, so t is the infimum of the intersection.
+  // set contains t, so t is the infimum of the intersection. Half-open [lo, hi) no longer
+  // contains t once hi <= t; the reference's closed [lo, hi] still does at hi == t (touching
+  // stretches meet: its overlap test is b.s <= a.e && a.s <= b.e).
+  const bool closed = rule == IntervalRule::Reference;
   double t = 0.0;
   int cursor[kMaxSolverPolynomials] = {};
   assert(count <= kMaxSolverPolynomials);
@@ -122,7 +162,7 @@ double firstCommonTime(const PositiveSet* sets, int count, double tMax) {
     for (int i = 0; i < count; ++i) {
       const PositiveSet& s = sets[i];
       int& k = cursor[i];
-      while (k < s.count && s.hi[k] <= t) ++k;
+      while (k < s.count && (closed ? s.hi[k] < t : s.hi[k] <= t)) ++k;
       if (k == s.count) return kNever;
       if (s.lo[k] > t) {
         t = s.lo[k];
@@ -133,9 +173,9 @@ double firstCommonTime(const PositiveSet* sets, int count, double tMax) {
   return t <= tMax ? t : kNever;
 }
 
-double firstPositiveTime(const Polynomial* polys, int count, double tMax) {
+double firstPositiveTime(const Polynomial* polys, int count, double tMax, IntervalRule rule) {
   assert(count <= kMaxSolverPolynomials);
-  bool allPositiveAtStart = true;
+  bool allPositiveAtStart = rule == IntervalRule::Exact;
   for (int i = 0; i < count && allPositiveAtStart; ++i)
     allPositiveAtStart = positiveJustAfterZero(polys[i]);
   if (allPositiveAtStart) return 0.0;
@@ -149,10 +189,10 @@ double firstPositiveTime(const Polynomial* polys, int count, double tMax) {
   }
   PositiveSet sets[kMaxSolverPolynomials];
   for (int i = 0; i < count; ++i) {
-    sets[i] = positiveSet(polys[order[i]], tMax);
+    sets[i] = positiveSet(polys[order[i]], tMax, rule);
     if (sets[i].empty()) return kNever;
   }
-  return firstCommonTime(sets, count, tMax);
+  return firstCommonTime(sets, count, tMax, rule);
 }
 
 }  // namespace fosssim::math

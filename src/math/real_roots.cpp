@@ -159,4 +159,49 @@ int realRootsInInterval(const Polynomial& p, double tMax, double roots[kMaxRoots
   return count;
 }
 
+int referenceRealRoots(const Polynomial& p, double roots[2]) {
+  // rpoly first divides out roots at 0: trailing exact zeros (at most one can remain with a
+  // nonzero root beside it, since p has degree <= 2 and a nonzero leading coefficient).
+  int n = p.degree();
+  int count = 0;
+  while (n > 0 && p.c[n] == 0.0) {
+    roots[count++] = 0.0;
+    --n;
+  }
+  if (n < 1) return 0;  // only roots at 0: the port returns failure, and no root is used
+  if (n == 1) {
+    roots[count++] = -p.c[1] / p.c[0];
+  } else {
+    // Quad(a, b1, c); c != 0 here (zero roots are gone), a != 0 (leading coefficient).
+    const double a = p.c[0], c = p.c[2];
+    const double b = p.c[1] / 2.0;
+    double e = 0.0;
+    double d = 0.0;
+    if (std::fabs(b) < std::fabs(c)) {
+      e = b * (b / std::fabs(c)) - (c < 0.0 ? -a : a);
+      d = std::sqrt(std::fabs(e)) * std::sqrt(std::fabs(c));
+    } else {
+      e = 1.0 - (a / b) * (c / b);
+      d = std::sqrt(std::fabs(e)) * std::fabs(b);
+    }
+    if (e < 0.0) {  // complex pair -B/a +- i|D/a|: real only when the imaginary part is tiny
+      if (std::fabs(d / a) < kReferenceImaginaryTolerance) {
+        roots[count++] = -b / a;
+        roots[count++] = -b / a;
+      }
+    } else {
+      if (b >= 0.0) d = -d;
+      const double large = (-b + d) / a;
+      roots[count++] = (large != 0.0) ? (c / large) / a : 0.0;
+      roots[count++] = large;
+    }
+  }
+  if (count == 2 && roots[0] > roots[1]) {
+    const double tmp = roots[0];
+    roots[0] = roots[1];
+    roots[1] = tmp;
+  }
+  return count;
+}
+
 }  // namespace fosssim::math

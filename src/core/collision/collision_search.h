@@ -11,7 +11,11 @@
 // With a polynomial log (trajectory files, grading) every pair is queried in the reference's
 // order whatever the broad phase says, since the reference's log holds every pair's
 // polynomials. The same happens when all pairs are forced (HandlerOptions::allPairs) and when the
-// state is not finite. detectAll spreads its rows over threads (HandlerOptions::threads) and
+// state is not finite. One exception to "exactly": under --compat (IntervalRule::Reference) the
+// reference's sign test at r -+ 1 cancels catastrophically for roots beyond ~1e8 steps and can
+// report a far, slow pair at t = 0, as the reference does; the broad phase rules such pairs out.
+// Runs that write or grade trajectories log polynomials, so they query every pair and match the
+// reference there too. detectAll spreads its rows over threads (HandlerOptions::threads) and
 // joins their collisions in row order (parallel_rows.h): the same result for any thread count.
 #pragma once
 
@@ -30,8 +34,8 @@ class CollisionSearch {
   /// Candidates collected at a time before the narrow phase runs on them.
   static constexpr size_t kKeysPerBlock = 1 << 14;
 
-  explicit CollisionSearch(math::QuinticForm form, bool allPairs = false, int threads = 1)
-      : detector_(form), forceAll_(allPairs), threads_(threads) {}
+  explicit CollisionSearch(const math::DetectionRules& rules, bool allPairs = false, int threads = 1)
+      : detector_(rules), forceAll_(allPairs), threads_(threads) {}
 
   /// Every collision of qs -> qe in pair order into `out`.
   void detectAll(const Scene& scene, const VecX& qs, const VecX& qe, StepContext& ctx, std::vector<Collision>& out);

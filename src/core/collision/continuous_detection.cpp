@@ -27,7 +27,9 @@ bool ContinuousDetector::particleParticle(const Scene& scene, const VecX& qs, co
   const math::PPInput in{at(qs, i), at(qe, i) - at(qs, i), scene.radius[i],
                          at(qs, j), at(qe, j) - at(qs, j), scene.radius[j]};
   math::Contact contact;
-  if (!query(in, contact, log, [](auto& a, auto* c, auto* l) { return math::detectPP(a, c, l); })) return false;
+  const math::DetectionRules rules = rules_;
+  if (!query(in, contact, log, [rules](auto& a, auto* c, auto* l) { return math::detectPP(a, c, l, rules); }))
+    return false;
   hit = Collision{PairKind::ParticleParticle, i, j, contact.tau, contact.n, 0.0};
   return true;
 }
@@ -38,8 +40,8 @@ bool ContinuousDetector::particleEdge(const Scene& scene, const VecX& qs, const 
   const math::PEInput in{at(qs, i),   at(qe, i) - at(qs, i),     scene.radius[i], at(qs, e.i),
                          at(qe, e.i) - at(qs, e.i), at(qs, e.j), at(qe, e.j) - at(qs, e.j), e.radius};
   math::Contact contact;
-  const math::QuinticForm form = form_;
-  if (!query(in, contact, log, [form](auto& a, auto* c, auto* l) { return math::detectPE(a, c, l, form); }))
+  const math::DetectionRules rules = rules_;
+  if (!query(in, contact, log, [rules](auto& a, auto* c, auto* l) { return math::detectPE(a, c, l, rules); }))
     return false;
   // The response uses the closest point's parameter at the collision time, clamped to the edge.
   const double t = contact.tau;
@@ -54,7 +56,9 @@ bool ContinuousDetector::particleHalfPlane(const Scene& scene, const VecX& qs, c
   const HalfPlane& h = scene.halfplanes[plane];
   const math::PHInput in{at(qs, i), at(qe, i) - at(qs, i), scene.radius[i], h.point, h.normal};
   math::Contact contact;
-  if (!query(in, contact, log, [](auto& a, auto* c, auto* l) { return math::detectPH(a, c, l); })) return false;
+  const math::DetectionRules rules = rules_;
+  if (!query(in, contact, log, [rules](auto& a, auto* c, auto* l) { return math::detectPH(a, c, l, rules); }))
+    return false;
   hit = Collision{PairKind::ParticleHalfPlane, i, plane, contact.tau, contact.n, 0.0};
   return true;
 }

@@ -22,7 +22,7 @@ struct Collision {
 
 class ContinuousDetector {
  public:
-  explicit ContinuousDetector(math::QuinticForm form) : form_(form) {}
+  explicit ContinuousDetector(const math::DetectionRules& rules) : rules_(rules) {}
 
   /// Where forEachCollision counts its queries (may be null).
   void setStats(StepStats* stats) { stats_ = stats; }
@@ -63,7 +63,7 @@ class ContinuousDetector {
   }
 
  private:
-  math::QuinticForm form_;
+  math::DetectionRules rules_;
   StepStats* stats_ = nullptr;
 };
 

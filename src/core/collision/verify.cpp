@@ -8,7 +8,7 @@ std::vector<Violation> unresolvedCollisions(const Scene& scene, const VecX& star
                                             const ZoneOf& zoneOf, size_t limit) {
   std::vector<Violation> found;
   // A fresh detection with the broad phase (the same collisions as checking every pair).
-  CollisionSearch search(math::QuinticForm::Exact);
+  CollisionSearch search(math::DetectionRules{});
   StepStats stats;
   StepContext ctx;
   ctx.stats = &stats;
