@@ -101,7 +101,7 @@ Answer reference(const PPInput& in) {
 }
 Answer reference(const PEInput& in) {
   Contact c;
-  return fromContact(detectPE(in, &c, nullptr, QuinticForm::Exact), c);
+  return fromContact(detectPE(in, &c, nullptr, DetectionRules{}), c);
 }
 Answer reference(const PHInput& in) {
   Contact c;

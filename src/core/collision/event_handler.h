@@ -70,7 +70,7 @@ class EventHandler final : public CollisionHandler {
   StepMotion motion_;
   PairCandidates candidates_;
   ContactZones zones_;
-  ContinuousDetector logger_{math::QuinticForm::Exact};  ///< builds the trajectory log's polynomials
+  ContinuousDetector logger_{math::DetectionRules{}};  ///< builds the trajectory log's polynomials
   std::vector<Event> heap_;
   std::vector<int> events_;       ///< N: impulse events taken by each particle in this step
   std::vector<int> changed_;      ///< particles whose path the last response bent
