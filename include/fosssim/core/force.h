@@ -34,6 +34,17 @@ class Force {
 
   /// True when energy() is a potential whose gradient is addGradient (conservative forces).
   virtual bool hasPotential() const { return false; }
+
+  /// True when the part of the force that energy() does not account for can do positive work,
+  /// so that the total mechanical energy may grow honestly (the energy watch then stays off).
+  /// By default a force without a potential may; drag and spring damping with b >= 0 only remove
+  /// energy and say so.
+  virtual bool mayAddEnergy() const { return !hasPotential(); }
+
+  /// The stiffness k of a spring-like force (spring, penalty), 0 for other forces. A spring-like
+  /// force's energy() is k/2 (stretch)^2 >= 0; the energy watch relies on that (and names k in
+  /// its advice on blow-ups).
+  virtual double stiffness() const { return 0.0; }
 };
 
 }  // namespace fosssim

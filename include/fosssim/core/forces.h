@@ -19,6 +19,8 @@ class SpringForce final : public Force {
   void addJacobianX(const Scene&, const VecX& x, const VecX& v, Triplets& out) const override;
   void addJacobianV(const Scene&, const VecX& x, const VecX& v, Triplets& out) const override;
   bool hasPotential() const override { return b_ == 0.0; }
+  bool mayAddEnergy() const override { return b_ < 0.0; }  ///< damping with b >= 0 only removes energy
+  double stiffness() const override { return k_; }
 
  private:
   int i_, j_;
@@ -73,6 +75,7 @@ class DragDampingForce final : public Force {
   const char* keyword() const override { return "dragdamping"; }
   void addGradient(const Scene&, const VecX& x, const VecX& v, VecX& gradE) const override;
   void addJacobianV(const Scene&, const VecX& x, const VecX& v, Triplets& out) const override;
+  bool mayAddEnergy() const override { return b_ < 0.0; }  ///< -b v with b >= 0 only removes energy
 
  private:
   double b_;
@@ -105,7 +108,7 @@ class PenaltyForce final : public Force {
   void addGradient(const Scene&, const VecX& x, const VecX& v, VecX& gradE) const override;
   bool hasJacobians() const override { return false; }
   bool hasPotential() const override { return true; }
-  double stiffness() const { return k_; }
+  double stiffness() const override { return k_; }
   double thickness() const { return thickness_; }
 
  private:

@@ -1,5 +1,6 @@
 // The step loop's engine: one step = predict (integrator), detect and respond (collision handler),
-// verify (finite state). Built from a scene's settings through the integrator and collision tables.
+// verify (finite state, no energy blow-up). Built from a scene's settings through the integrator
+// and collision tables.
 #pragma once
 
 #include "fosssim/core/collision_handler.h"
@@ -15,7 +16,13 @@ struct SimulatorOptions {
   /// the reference's log holds every pair's polynomials, so every pair is then queried in the
   /// reference's order, without the broad phase; it costs time).
   bool logPolynomials = false;
+  /// Stop a run whose mechanical energy grows by orders of magnitude (src/core/energy_watch.h).
+  /// On for every run of the program; off only where instability is what is measured (the
+  /// study, which has its own blow-up mark and classifies the outcome itself).
+  bool watchEnergy = true;
 };
+
+class EnergyWatch;
 
 class Simulator {
  public:
@@ -23,7 +30,8 @@ class Simulator {
   static Status create(const Scene& scene, const SimulatorOptions& options, std::unique_ptr<Simulator>& out);
 
   /// Advances `state` by one step of `scene` (the scene this simulator was created for).
-  /// On failure (non-finite state, solver failure) the message names the step and particle.
+  /// On failure (non-finite state, solver failure, energy blow-up) the message names the step
+  /// and particle.
   Status step(const Scene& scene, State& state, StepObserver* observer = nullptr);
 
   /// What the last step's collision handling did.
@@ -40,9 +48,14 @@ class Simulator {
   void setTiming(bool on) { timing_ = on; }
   /// What this scene's trajectory records contain.
   const RecordLayout& layout() const { return collision_->layout; }
+  /// The largest energy growth (in multiples of the scene's energy scale) seen in this run; 0
+  /// when the watch is off for this scene (see src/core/energy_watch.h).
+  double energyGrowth() const;
+
+  ~Simulator();
 
  private:
-  Simulator() = default;
+  Simulator();
   const CollisionEntry* collision_ = nullptr;
   std::unique_ptr<Integrator> integrator_;
   std::unique_ptr<CollisionHandler> handler_;  ///< null for "none" and "penalty"
@@ -51,6 +64,7 @@ class Simulator {
   bool timing_ = false;
   HandlerOptions handlerOptions_;  ///< allPairs and threads also reach the penalty force
   State start_;  ///< the state at the beginning of the current step (scratch)
+  std::unique_ptr<EnergyWatch> energyWatch_;  ///< part of the verify phase
 };
 
 /// Checks that every position and velocity is finite; otherwise names the first bad particle.

@@ -1,0 +1,232 @@
+// The energy watch (src/core/energy_watch.h): blow-ups stop with a message that names step,
+// particle, force and what to change; honest scenes, far from the origin or in other units, run.
+#include "fosssim/core/simulator.h"
+#include "test_scenes.h"
+
+#include "../../src/core/energy_watch.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace fosssim {
+namespace {
+
+using testing::addBody;
+using testing::TestScene;
+
+/// How a run ended.
+struct RunEnd {
+  Status status = Status::ok();
+  long steps = 0;         ///< steps completed without failure
+  double topSpeed = 0;    ///< the largest particle speed over the completed steps
+  double growth = 0;      ///< the watch's largest gain / scale
+};
+
+RunEnd runFor(TestScene& s, long steps, bool watch = true) {
+  SimulatorOptions options;
+  options.watchEnergy = watch;
+  std::unique_ptr<Simulator> sim;
+  RunEnd end;
+  end.status = Simulator::create(s.scene, options, sim);
+  for (long k = 0; end.status && k < steps; ++k) {
+    end.status = sim->step(s.scene, s.state);
+    if (!end.status) break;
+    ++end.steps;
+    for (int i = 0; i < s.state.numParticles(); ++i) end.topSpeed = std::max(end.topSpeed, at(s.state.v, i).norm());
+  }
+  if (sim) end.growth = sim->energyGrowth();
+  return end;
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+/// A ball of radius 0.1 dropped from height 1 onto the floor y = 0 under gravity, in units
+/// scaled by length L, mass M and time T (powers of two keep the arithmetic exact).
+TestScene droppedBall(const std::string& collision, double k, double thickness, double L = 1, double M = 1,
+                      double T = 1) {
+  TestScene s;
+  addBody(s, 1.0 * M, Vec2(0, 1) * L, Vec2::Zero(), 0.1 * L);
+  s.scene.halfplanes.push_back(HalfPlane{Vec2::Zero(), Vec2::UnitY()});
+  s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, -9.81) * L / (T * T)));
+  s.scene.collision.type = collision;
+  s.scene.collision.cor = 1.0;
+  if (collision == "penalty" || collision == "hybrid")
+    s.scene.forces.push_back(std::make_unique<PenaltyForce>(k * M / (T * T), thickness * L));
+  s.scene.integrator = "symplectic-euler";
+  s.scene.dt = 0.01 * T;
+  return s;
+}
+
+/// Two disks of radius 0.1 tied by a spring (rest length 0.1, so it pulls them together) whose
+/// centres are 0.25 apart, inside a penalty layer of thickness 0.1 and stiffness k that pushes
+/// them apart: the tracker's "two disks tied by a spring inside a stiff penalty layer".
+TestScene springInPenaltyLayer(const std::string& integrator, double k, double L = 1, double M = 1, double T = 1) {
+  TestScene s;
+  addBody(s, 1.0 * M, Vec2(0, 0), Vec2::Zero(), 0.1 * L);
+  addBody(s, 1.0 * M, Vec2(0.25, 0) * L, Vec2::Zero(), 0.1 * L);
+  s.scene.edges.push_back(Edge{0, 1, 0.02 * L});
+  s.scene.forces.push_back(std::make_unique<SpringForce>(0, 1, 100.0 * M / (T * T), 0.1 * L, 0.0));
+  s.scene.forces.push_back(std::make_unique<PenaltyForce>(k * M / (T * T), 0.1 * L));
+  s.scene.collision.type = "penalty";
+  s.scene.integrator = integrator;
+  s.scene.dt = 0.01 * T;
+  return s;
+}
+
+/// The step number a failure message starts with ("step 43 (t = ...): ..."), or -1.
+long failedStep(const Status& status) {
+  const std::string& m = status.message();
+  return m.rfind("step ", 0) == 0 ? std::stol(m.substr(5)) : -1;
+}
+
+// The tracker's first case: a ball falls into a penalty layer of stiffness 1e200. It leaves at
+// about 1e195 m/s; the watch stops the run in that step and says who, what and what to change.
+TEST(EnergyWatch, AbsurdlyStiffPenaltyContactStopsTheRun) {
+  TestScene s = droppedBall("penalty", 1e200, 0.01);
+  const RunEnd end = runFor(s, 200);
+  ASSERT_FALSE(end.status.isOk());
+  const std::string& m = end.status.message();
+  EXPECT_EQ(failedStep(end.status), end.steps + 1) << m;  // the failing step, and nothing after it
+  EXPECT_LT(end.steps, 60) << m;                          // it reaches the floor at t ~ 0.43
+  EXPECT_LT(end.topSpeed, 10.0) << "no completed step carries the blow-up on";
+  for (const char* part : {"energy blow-up", "particle 0 is fastest", "'collision penalty'", "k = 1e+200",
+                           "smaller time step (dt = 0.01)", "smaller stiffness k", "sqrt(m/k) = 1e-100"})
+    EXPECT_TRUE(contains(m, part)) << "missing \"" << part << "\" in: " << m;
+}
+
+// The tracker's second case: two disks tied by a spring inside a stiff penalty layer. Left alone
+// they reach thousands of m/s (the tracker saw 1,650); watched, they stop well before.
+TEST(EnergyWatch, SpringPairInsideAStiffPenaltyLayerIsCaught) {
+  for (const auto& [integrator, k] : {std::pair{"symplectic-euler", 1e6}, std::pair{"explicit-euler", 1e4}}) {
+    SCOPED_TRACE(integrator);
+    TestScene unwatched = springInPenaltyLayer(integrator, k);
+    const RunEnd free = runFor(unwatched, 2000, /*watch=*/false);
+    ASSERT_TRUE(free.status.isOk()) << free.status.message();
+    EXPECT_GT(free.topSpeed, 1650.0);
+
+    TestScene watched = springInPenaltyLayer(integrator, k);
+    const RunEnd end = runFor(watched, 2000);
+    ASSERT_FALSE(end.status.isOk());
+    const std::string& m = end.status.message();
+    EXPECT_EQ(failedStep(end.status), end.steps + 1) << m;
+    EXPECT_LT(end.topSpeed, 1650.0) << m;
+    EXPECT_GT(end.growth, EnergyWatch::kBlowUpGrowth) << m;
+    EXPECT_TRUE(contains(m, "energy blow-up")) << m;
+    EXPECT_TRUE(contains(m, " is fastest, at speed ")) << m;
+    // The advice: with symplectic Euler the stiff penalty layer is at fault (even when the soft
+    // spring takes up the energy in the failing step); explicit Euler is unstable on any spring.
+    if (k == 1e6) {
+      EXPECT_TRUE(contains(m, "the stiffest force is 'collision penalty' #1 (k = 1e+06)")) << m;
+      EXPECT_TRUE(contains(m, "smaller stiffness k: steps resolve k = 1e+06")) << m;
+    } else {
+      EXPECT_TRUE(contains(m, "'springforce' #1 (k = 100)")) << m;
+      EXPECT_TRUE(contains(m, "explicit Euler gains energy on every oscillation")) << m;
+    }
+  }
+}
+
+// Honest scenes: energy kept up to the integrator's error. Their growth stays far below the mark
+// (about the scene's energy scale at most), not merely below it.
+// An elastic ball under gravity with continuous-time or hybrid handling gains about m g^2 dt / 2
+// per unit of time for ever (the response reflects a velocity that took a full step of gravity):
+// its energy grows linearly in time, without bound. That drift is allowed for (linear in the
+// steps, where a blow-up is exponential); it must not read as a blow-up.
+TEST(EnergyWatch, ElasticBouncingBallRunsForLong) {
+  for (const char* collision : {"hybrid", "continuous-time"})
+    for (double height : {1.0, 0.01}) {
+      SCOPED_TRACE(std::string(collision) + " from " + std::to_string(height));
+      TestScene s = droppedBall(collision, 10, 0.1);  // the hybrid's default penalty layer
+      s.state.x[1] = 0.1 + height;
+      const RunEnd end = runFor(s, 30000);
+      EXPECT_TRUE(end.status.isOk()) << end.status.message();
+      EXPECT_LT(end.growth, 1.5);
+    }
+}
+
+TEST(EnergyWatch, SymplecticSpringRunsForLong) {
+  TestScene s = testing::spring("symplectic-euler", 0.01, 100.0);
+  const RunEnd end = runFor(s, 20000);
+  EXPECT_TRUE(end.status.isOk()) << end.status.message();
+  EXPECT_LT(end.growth, 0.1);
+}
+
+// Explicit Euler gains m g^2 dt^2 / 2 in the first step of a fall from rest, before any
+// potential is released; over 100 s (49 km) the gain stays a sliver of what gravity released.
+TEST(EnergyWatch, LongFreeFallFromAGreatHeightRuns) {
+  for (const char* integrator : {"explicit-euler", "symplectic-euler"}) {
+    SCOPED_TRACE(integrator);
+    TestScene s = testing::projectile(integrator, 0.01, Vec2::Zero(), Vec2(0, -9.81));
+    s.state.x = Vec2(0, 5e4);
+    const RunEnd end = runFor(s, 10000);
+    EXPECT_TRUE(end.status.isOk()) << end.status.message();
+    EXPECT_LE(end.growth, 1.0);
+  }
+}
+
+// Gravity's potential -m g.x depends on where the origin is; the verdict must not.
+TEST(EnergyWatch, SceneFarFromTheOriginRuns) {
+  const Vec2 far(3e6, -7e6);
+  for (const char* collision : {"hybrid", "penalty"}) {
+    SCOPED_TRACE(collision);
+    TestScene near = droppedBall(collision, 1e4, 0.01), away = droppedBall(collision, 1e4, 0.01);
+    away.state.x += far;
+    away.scene.halfplanes[0].point += far;
+    const RunEnd a = runFor(near, 1000), b = runFor(away, 1000);
+    EXPECT_TRUE(a.status.isOk()) << a.status.message();
+    EXPECT_TRUE(b.status.isOk()) << b.status.message();
+    EXPECT_LT(b.growth, 1.0);
+    EXPECT_NEAR(b.growth, a.growth, 0.05);
+  }
+}
+
+// Scaling length, mass and time (by powers of two, so that the arithmetic stays exact) changes
+// every energy by the same factor: the same verdict at the same step, the same growth.
+TEST(EnergyWatch, UnitsDoNotChangeTheVerdict) {
+  const double L = 32, M = 0.125, T = 0.25;
+  TestScene pair = springInPenaltyLayer("symplectic-euler", 1e6),
+            scaledPair = springInPenaltyLayer("symplectic-euler", 1e6, L, M, T);
+  const RunEnd a = runFor(pair, 2000), b = runFor(scaledPair, 2000);
+  EXPECT_FALSE(a.status.isOk());
+  EXPECT_FALSE(b.status.isOk());
+  EXPECT_EQ(a.steps, b.steps);
+  EXPECT_NEAR(b.growth / a.growth, 1.0, 1e-9);
+
+  TestScene ball = droppedBall("penalty", 1e4, 0.01), scaledBall = droppedBall("penalty", 1e4, 0.01, L, M, T);
+  const RunEnd c = runFor(ball, 1000), d = runFor(scaledBall, 1000);
+  EXPECT_TRUE(c.status.isOk()) << c.status.message();
+  EXPECT_TRUE(d.status.isOk()) << d.status.message();
+  EXPECT_NEAR(d.growth, c.growth, 1e-9 * std::max(1.0, c.growth));
+}
+
+// Where energy may grow honestly the watch stays off; and a caller can turn it off.
+TEST(EnergyWatch, OffWhereOutsideWorkIsPossibleOrWhenAsked) {
+  auto activeFor = [](TestScene& s) {
+    EnergyWatch watch;
+    State end = s.state;
+    end.step = 1;
+    EXPECT_TRUE(watch.check(s.scene, s.state, end).isOk());
+    return watch.active();
+  };
+  TestScene vortex = testing::spring("symplectic-euler", 0.01, 1.0);
+  vortex.scene.forces.push_back(std::make_unique<VortexForce>(0, 1, 1.0, 1.0));
+  EXPECT_FALSE(activeFor(vortex)) << "the vortex force does work without a potential";
+
+  TestScene driven = testing::spring("symplectic-euler", 0.01, 1.0);
+  driven.scene.fixed[0] = 1;
+  at(driven.state.v, 0) = Vec2(1, 0);
+  EXPECT_FALSE(activeFor(driven)) << "a fixed particle with a velocity drives the spring";
+
+  TestScene damped = testing::spring("symplectic-euler", 0.01, 1.0);
+  damped.scene.forces.push_back(std::make_unique<DragDampingForce>(0.5));
+  damped.scene.forces.push_back(std::make_unique<SpringForce>(0, 1, 1.0, 1.0, 0.3));
+  EXPECT_TRUE(activeFor(damped)) << "drag and spring damping only remove energy";
+
+  TestScene pair = springInPenaltyLayer("symplectic-euler", 1e6);
+  const RunEnd end = runFor(pair, 2000, /*watch=*/false);
+  EXPECT_TRUE(end.status.isOk()) << end.status.message();
+  EXPECT_EQ(end.steps, 2000);
+}
+
+}  // namespace
+}  // namespace fosssim
