@@ -89,6 +89,19 @@ TEST(SceneLoader, CollisionDefaults) {
   EXPECT_EQ(zeroK.scene.forces.size(), 1u);  // k="0" still adds the force
 }
 
+// The default mode's failsafe (spec: <collision failsafe="projection|rigid">, projection when
+// absent); an unknown keyword is an error that lists the valid ones.
+TEST(SceneLoader, CollisionFailsafe) {
+  EXPECT_EQ(load(extra("  <collision type=\"hybrid\"/>")).scene.collision.failsafe, Failsafe::Projection);
+  EXPECT_EQ(load(extra("  <collision type=\"hybrid\" failsafe=\"rigid\"/>")).scene.collision.failsafe, Failsafe::Rigid);
+  EXPECT_EQ(load(extra("  <collision type=\"continuous-time\" failsafe=\"projection\"/>")).scene.collision.failsafe,
+            Failsafe::Projection);
+  SceneFile bad;
+  const Status s = parseScene(extra("  <collision type=\"hybrid\" failsafe=\"frozen\"/>"), kFile, bad);
+  ASSERT_FALSE(s.isOk());
+  EXPECT_NE(s.message().find("projection, rigid"), std::string::npos) << s.message();
+}
+
 TEST(SceneLoader, LenientAttributeSyntaxOfTheCourseScenes) {
   // No whitespace between attributes, spaces around '=', leading and trailing spaces in numbers.
   const SceneFile f = load(replaced(4, "  <particle m = \"3\" px=\" 1.0\" py=\"2.5 \"vx=\"0\"vy=\"-1\" fixed= \"1\" radius =\"0.2\"/>"));
