@@ -1,0 +1,99 @@
+// Helpers for the property tests of the default mode's contact physics (contact_physics_test.cpp,
+// contact_physics_random_test.cpp; the promises: spec "Contact physics in the default mode"). Every
+// scene is built inline with the symplectic Euler integrator (x += h v_new: free flight is exact).
+#pragma once
+
+#include "fosssim/core/simulator.h"
+#include "test_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace fosssim::testing {
+
+/// The default mode's two time-ordered collision types.
+inline const char* const kEventTypes[] = {"continuous-time", "hybrid"};
+
+inline TestScene contactScene(const std::string& type, double cor, double dt = 0.01,
+                              Failsafe failsafe = Failsafe::Projection, int maxIterations = 10) {
+  TestScene s;
+  s.scene.integrator = "symplectic-euler";
+  s.scene.dt = dt;
+  s.scene.collision.type = type;
+  s.scene.collision.cor = cor;
+  s.scene.collision.maxIterations = maxIterations;
+  s.scene.collision.failsafe = failsafe;
+  return s;
+}
+
+inline std::unique_ptr<Simulator> defaultModeSimulator(const TestScene& s) {
+  std::unique_ptr<Simulator> sim;
+  SimulatorOptions options;
+  options.handler.compat = false;
+  const Status status = Simulator::create(s.scene, options, sim);
+  EXPECT_TRUE(status.isOk()) << status.message();
+  return sim;
+}
+
+/// One step, which must succeed and leave nothing unresolved (promise 1, --verify's check).
+inline ::testing::AssertionResult stepClean(Simulator& sim, TestScene& s) {
+  const long k = s.state.step + 1;
+  if (Status st = sim.step(s.scene, s.state); !st.isOk())
+    return ::testing::AssertionFailure() << "step " << k << " failed: " << st.message();
+  const auto left = sim.unresolved(s.scene, s.state, 4);
+  if (!left.empty())
+    return ::testing::AssertionFailure() << "step " << k << ": " << left.size() << " unresolved, first "
+                                         << pairKindName(left[0].kind) << " (" << left[0].i << ", " << left[0].j
+                                         << ") at tau " << left[0].tau;
+  return ::testing::AssertionSuccess();
+}
+
+inline double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+/// Kinetic energy of the movable particles.
+inline double kinetic(const TestScene& s, const VecX& v) {
+  double e = 0;
+  for (int i = 0; i < s.scene.numParticles(); ++i)
+    if (!s.scene.isFixed(i)) e += 0.5 * s.scene.massOf(i) * at(v, i).squaredNorm();
+  return e;
+}
+inline double kinetic(const TestScene& s) { return kinetic(s, s.state.v); }
+
+inline Vec2 momentum(const TestScene& s) {
+  Vec2 p = Vec2::Zero();
+  for (int i = 0; i < s.scene.numParticles(); ++i) p += s.scene.massOf(i) * at(s.state.v, i);
+  return p;
+}
+/// Sum of m |v|: the scale momentum errors are measured against (the total may be near zero).
+inline double momentumScale(const TestScene& s) {
+  double m = 0;
+  for (int i = 0; i < s.scene.numParticles(); ++i) m += s.scene.massOf(i) * at(s.state.v, i).norm();
+  return m;
+}
+/// Angular momentum about the origin.
+inline double angularMomentum(const TestScene& s) {
+  double l = 0;
+  for (int i = 0; i < s.scene.numParticles(); ++i) l += s.scene.massOf(i) * cross(at(s.state.x, i), at(s.state.v, i));
+  return l;
+}
+/// Sum of m |x| |v|: the scale angular momentum errors are measured against.
+inline double angularScale(const TestScene& s) {
+  double l = 0;
+  for (int i = 0; i < s.scene.numParticles(); ++i)
+    l += s.scene.massOf(i) * at(s.state.x, i).norm() * at(s.state.v, i).norm();
+  return l;
+}
+
+/// Distance from point p to segment a-b.
+inline double segmentDistance(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 d = b - a;
+  const double t = std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
+  return (p - (a + t * d)).norm();
+}
+
+}  // namespace fosssim::testing

@@ -1,0 +1,256 @@
+// The default mode's contact promises on randomised scenes (seeded std::mt19937, so every run sees
+// the same scenes) and on a pile poured under gravity: energy never grows, nothing tunnels out of
+// a thin slot, momentum and angular momentum of a free gas are kept, a pile flows into its V
+// instead of freezing above it, and both failsafes leave every step collision-free. Each step of
+// each test must leave nothing unresolved (stepClean). Hand-made scenes: contact_physics_test.cpp.
+#include "contact_physics.h"
+
+#include <cstdint>
+#include <cstdio>
+#include <random>
+
+namespace fosssim::testing {
+namespace {
+
+using Rng = std::mt19937;
+// mt19937's output is fixed by the standard (its distributions are not): the same scenes everywhere.
+double uniform(Rng& rng, double lo, double hi) { return lo + (hi - lo) * (rng() / 4294967296.0); }
+int uniformInt(Rng& rng, int lo, int hi) { return lo + static_cast<int>(rng() % static_cast<uint32_t>(hi - lo + 1)); }
+
+const char* failsafeName(Failsafe f) { return f == Failsafe::Rigid ? "rigid" : "projection"; }
+
+// A random collision-free scene in the box [-1, 1]^2: 3-12 disks (some fixed), up to 3 edges
+// between them (no springs), up to 4 box walls as half-planes with unnormalised normals, random
+// velocities, no forces.
+TestScene randomScene(Rng& rng, const char* type, Failsafe failsafe) {
+  const double cors[] = {0.0, 0.3, 0.5, 0.8, 1.0};
+  TestScene s = contactScene(type, cors[uniformInt(rng, 0, 4)], 0.01, failsafe);
+  const int n = uniformInt(rng, 3, 12);
+  std::vector<Vec2> x;
+  std::vector<double> r;
+  while (static_cast<int>(x.size()) < n) {
+    const Vec2 p(uniform(rng, -0.8, 0.8), uniform(rng, -0.8, 0.8));
+    const double radius = uniform(rng, 0.04, 0.12);
+    bool free = true;
+    for (size_t k = 0; k < x.size(); ++k) free = free && (x[k] - p).norm() > r[k] + radius + 0.01;
+    if (!free) continue;
+    x.push_back(p);
+    r.push_back(radius);
+    const bool fixed = uniform(rng, 0, 1) < 0.15;
+    const Vec2 v = fixed ? Vec2::Zero() : Vec2(uniform(rng, -3, 3), uniform(rng, -3, 3));
+    addBody(s, uniform(rng, 0.5, 2.0), p, v, radius, fixed);
+  }
+  const int edges = uniformInt(rng, 0, 3);
+  for (int tries = 0; tries < 20 && static_cast<int>(s.scene.edges.size()) < edges; ++tries) {
+    const int a = uniformInt(rng, 0, n - 1), b = uniformInt(rng, 0, n - 1);
+    const double radius = uniform(rng, 0.01, 0.04);
+    bool free = a != b;
+    for (int k = 0; k < n && free; ++k)
+      if (k != a && k != b) free = segmentDistance(x[k], x[a], x[b]) > r[k] + radius + 0.005;
+    for (const Edge& e : s.scene.edges) free = free && !((e.i == a && e.j == b) || (e.i == b && e.j == a));
+    if (free) s.scene.edges.push_back(Edge{a, b, radius});
+  }
+  const Vec2 walls[] = {Vec2(1, 0), Vec2(-1, 0), Vec2(0, 1), Vec2(0, -1)};
+  for (const Vec2& w : walls)
+    if (uniform(rng, 0, 1) < 0.6) s.scene.halfplanes.push_back(HalfPlane{-w, uniform(rng, 0.1, 10) * w});
+  return s;
+}
+
+// 1d. Over 200 random scenes, both types and both failsafes: with no forces kinetic energy is the
+// only energy, and no impulse (COR <= 1) or failsafe may raise it, so it never grows over a step.
+TEST(ContactPhysicsRandom, KineticEnergyNeverGrows) {
+  for (const char* type : kEventTypes)
+    for (Failsafe failsafe : {Failsafe::Projection, Failsafe::Rigid}) {
+      Rng rng(20240611);
+      for (int scene = 0; scene < 200; ++scene) {
+        TestScene s = randomScene(rng, type, failsafe);
+        SCOPED_TRACE(std::string(type) + " failsafe " + failsafeName(failsafe) + " scene " + std::to_string(scene) +
+                     " COR " + std::to_string(s.scene.collision.cor));
+        auto sim = defaultModeSimulator(s);
+        // On a failure, go on with the next scene (so that a run lists every failing scene).
+        for (int k = 0; k < 25; ++k) {
+          const double before = kinetic(s);
+          const ::testing::AssertionResult clean = stepClean(*sim, s);
+          if (!clean) {
+            ADD_FAILURE() << clean.message();
+            break;
+          }
+          if (kinetic(s) > before * (1 + 1e-12)) {
+            ADD_FAILURE() << "step " << k + 1 << ": kinetic energy " << before << " -> " << kinetic(s);
+            break;
+          }
+        }
+      }
+    }
+}
+
+// 2b. Thirty shots of three fast disks (20-200 m/s across a slot, so up to 40 bounces per step)
+// inside a 0.1 m slot between two thin fixed edges 100 m long: none crosses an edge (while within
+// the slot's length, centres stay within [0.025, 0.075]: edge radius 0.005 plus disk radius 0.02)
+// and no two overlap, at every step.
+TEST(ContactPhysicsRandom, FastDisksStayInThinSlot) {
+  Rng rng(777);
+  for (int shot = 0; shot < 30; ++shot) {
+    const char* type = kEventTypes[shot % 2];
+    SCOPED_TRACE(std::string(type) + " shot " + std::to_string(shot));
+    TestScene s = contactScene(type, shot % 3 == 0 ? 0.5 : 1.0);
+    for (double y : {0.0, 0.1}) {
+      addBody(s, 1.0, Vec2(-50, y), Vec2::Zero(), 0.005, true);
+      addBody(s, 1.0, Vec2(50, y), Vec2::Zero(), 0.005, true);
+      s.scene.edges.push_back(Edge{s.state.numParticles() - 2, s.state.numParticles() - 1, 0.005});
+    }
+    for (int k = 0; k < 3; ++k) {
+      const double vy = uniform(rng, 20, 200) * (uniform(rng, 0, 1) < 0.5 ? -1 : 1);
+      addBody(s, uniform(rng, 0.5, 2), Vec2(-0.5 + 0.5 * k + uniform(rng, -0.1, 0.1), uniform(rng, 0.03, 0.07)),
+              Vec2(uniform(rng, -2, 2), vy), 0.02);
+    }
+    auto sim = defaultModeSimulator(s);
+    for (int k = 0; k < 50; ++k) {
+      const double before = kinetic(s);
+      ASSERT_TRUE(stepClean(*sim, s));
+      ASSERT_LE(kinetic(s), before * (1 + 1e-12)) << "step " << k + 1;
+      for (int i = 4; i < 7; ++i) {
+        if (std::abs(s.state.x[2 * i]) > 49) continue;  // out of the slot's end
+        ASSERT_GE(s.state.x[2 * i + 1], 0.025 - 1e-9) << "disk " << i << " step " << k + 1;
+        ASSERT_LE(s.state.x[2 * i + 1], 0.075 + 1e-9) << "disk " << i << " step " << k + 1;
+        for (int j = i + 1; j < 7; ++j)
+          ASSERT_GE((at(s.state.x, i) - at(s.state.x, j)).norm(), 0.04 - 1e-9) << i << "-" << j << " step " << k + 1;
+      }
+    }
+  }
+}
+
+// 3b. A gas of 30 free disks (no walls, no fixed particles, COR 1): every impulse acts along the
+// line of centres between free particles and free flight is exact, so total momentum and angular
+// momentum about the origin are kept (1e-9 of sum m|v| and sum m|x||v|) over 100 steps.
+TEST(ContactPhysicsRandom, FreeGasKeepsMomentumAndAngularMomentum) {
+  for (const char* type : kEventTypes) {
+    SCOPED_TRACE(type);
+    Rng rng(31337);
+    TestScene s = contactScene(type, 1.0);
+    std::vector<Vec2> x;
+    while (x.size() < 30) {
+      const Vec2 p(uniform(rng, -1, 1), uniform(rng, -1, 1));
+      bool free = true;
+      for (const Vec2& q : x) free = free && (q - p).norm() > 0.17;
+      if (!free) continue;
+      x.push_back(p);
+      addBody(s, uniform(rng, 0.5, 2), p, Vec2(uniform(rng, -2, 2), uniform(rng, -2, 2)), 0.08);
+    }
+    auto sim = defaultModeSimulator(s);
+    const Vec2 p0 = momentum(s);
+    const double l0 = angularMomentum(s), pScale = momentumScale(s);
+    long impulses = 0;
+    for (int k = 0; k < 100; ++k) {
+      const double before = kinetic(s);
+      ASSERT_TRUE(stepClean(*sim, s));
+      impulses += static_cast<long>(sim->log().impulses.size());
+      ASSERT_LE(kinetic(s), before * (1 + 1e-12)) << "step " << k + 1;
+      ASSERT_LE((momentum(s) - p0).norm(), 1e-9 * pScale) << "step " << k + 1;
+      ASSERT_LE(std::abs(angularMomentum(s) - l0), 1e-9 * angularScale(s)) << "step " << k + 1;
+    }
+    EXPECT_GE(impulses, 10) << "too few collisions to test anything";
+    std::printf("[ gas      ] %s: %ld impulses\n", type, impulses);
+  }
+}
+
+// 6b / 8. A pile of 60 disks (radius 0.05) poured from a column into a V of two half-planes
+// (walls y = |x|) under gravity, COR 0.5.
+struct PileResult {
+  double frozenCom = 0;     // centre-of-mass height had the column frozen at its first contact
+  double finalCom = 0;      // centre-of-mass height after the last step
+  double comAt100 = 0;      // ... after 100 steps
+  double movingLanded = 1;  // least fraction of landed disks moving > 0.05 m/s while half to all
+                            // of the disks have landed (the others still falling)
+  int failsafeSteps = 0;
+};
+
+PileResult pourPile(const char* type, Failsafe failsafe, int steps) {
+  constexpr int kRows = 10, kCols = 6;
+  const double r = 0.05, h = 0.01;
+  const Vec2 g(0, -9.81);
+  TestScene s = contactScene(type, 0.5, h, failsafe);
+  for (int row = 0; row < kRows; ++row)
+    for (int col = 0; col < kCols; ++col)
+      addBody(s, 1.0, Vec2(-0.3 + 0.12 * col + (row % 2 ? 0.007 : -0.004), 0.6 + 0.15 * row), Vec2::Zero(), r);
+  const Vec2 normals[] = {Vec2(1, 1), Vec2(-1, 1)};
+  for (const Vec2& n : normals) s.scene.halfplanes.push_back(HalfPlane{Vec2::Zero(), n});
+  s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(g));
+  const int n = s.state.numParticles();
+  auto sim = defaultModeSimulator(s);
+  auto com = [&] {
+    double y = 0;
+    for (int i = 0; i < n; ++i) y += s.state.x[2 * i + 1];
+    return y / n;
+  };
+  PileResult out;
+  // Frozen at first contact: the whole column dropped rigidly until its first disk meets a wall.
+  double drop = 1e300;
+  for (int i = 0; i < n; ++i)
+    for (const Vec2& w : normals) drop = std::min(drop, (w.normalized().dot(at(s.state.x, i)) - r) / w.normalized().y());
+  out.frozenCom = com() - drop;
+  std::vector<char> landed(n, 0);
+  for (int k = 0; k < steps; ++k) {
+    VecX predicted = s.state.v;
+    for (int i = 0; i < n; ++i) at(predicted, i) += h * g;
+    EXPECT_TRUE(stepClean(*sim, s));
+    if (::testing::Test::HasFatalFailure() || ::testing::Test::HasNonfatalFailure()) return out;
+    // Energy: no response raises the kinetic energy of the integrator's prediction v + h g.
+    EXPECT_LE(kinetic(s), kinetic(s, predicted) * (1 + 1e-12)) << "step " << k + 1;
+    const StepStats& st = sim->stats();
+    out.failsafeSteps += st.failsafeUsed;
+    if (st.failsafeUsed) {
+      EXPECT_TRUE(st.zones >= 1 && st.largestZone >= 1) << "step " << k + 1;
+    }
+    for (const Impulse& im : sim->log().impulses) {
+      landed[im.i] = 1;
+      if (im.kind == PairKind::ParticleParticle) landed[im.j] = 1;
+    }
+    for (int i = 0; i < n; ++i) {
+      landed[i] = landed[i] || sim->zoneOf(i) >= 0;
+      for (const Vec2& w : normals) EXPECT_GE(w.normalized().dot(at(s.state.x, i)), r - 1e-9) << "disk " << i << " step " << k + 1;
+    }
+    int count = 0, moving = 0;
+    for (int i = 0; i < n; ++i)
+      if (landed[i]) ++count, moving += at(s.state.v, i).norm() > 0.05;
+    if (2 * count >= n && count < n) out.movingLanded = std::min(out.movingLanded, double(moving) / count);
+    if (k + 1 == 100) out.comAt100 = com();
+  }
+  out.finalCom = com();
+  return out;
+}
+
+// "Flows" is measured three ways: (1) at every step from when half of the disks have landed (taken
+// an impulse or joined a rigid zone) until the last one lands, some landed disks still move faster
+// than 0.05 m/s (a failsafe that freezes zones touching a wall stops them); (2) the centre of mass keeps descending (lower at step 300
+// than at step 100); (3) it ends below a geometric bound: the 60 disks (area 60 pi r^2) filling
+// the V (area H^2 up to height H) at a packing fraction of only 0.5 have centres no higher than
+// r sqrt(2) + 2H/3 on average, far below 'frozenCom', the column stopped rigidly at its first
+// contact (the old failsafe's rigid block standing above the V).
+TEST(ContactPhysicsRandom, PileFlowsIntoTheV) {
+  const double H = std::sqrt(60 * std::acos(-1.0) * 0.05 * 0.05 / 0.5), packedBound = 0.05 * std::sqrt(2.0) + 2 * H / 3;
+  for (const char* type : {"hybrid"}) {
+    SCOPED_TRACE(type);
+    const PileResult p = pourPile(type, Failsafe::Projection, 300);
+    ASSERT_FALSE(HasFailure());
+    EXPECT_GT(p.movingLanded, 0.0);
+    EXPECT_LT(p.finalCom, p.comAt100);
+    EXPECT_LT(packedBound, p.frozenCom);
+    EXPECT_LT(p.finalCom, packedBound) << "frozen-at-contact height " << p.frozenCom;
+    std::printf("[ pile     ] %s: failsafe in %d steps, landed moving %.2f, COM %.3f (step 100 %.3f, bound %.3f, frozen %.3f)\n",
+                type, p.failsafeSteps, p.movingLanded, p.finalCom, p.comAt100, packedBound, p.frozenCom);
+  }
+}
+
+// 8. The rigid failsafe (rigid impact zones at once) must keep the same pile collision-free at
+// every step too (pourPile checks stepClean, the walls and the energy of every step); 150 steps.
+TEST(ContactPhysicsRandom, RigidFailsafeKeepsPileCollisionFree) {
+  for (const char* type : kEventTypes) {
+    SCOPED_TRACE(type);
+    const PileResult p = pourPile(type, Failsafe::Rigid, 150);
+    std::printf("[ pile     ] %s rigid: failsafe in %d steps, COM %.3f\n", type, p.failsafeSteps, p.finalCom);
+  }
+}
+
+}  // namespace
+}  // namespace fosssim::testing
