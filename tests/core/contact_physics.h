@@ -40,11 +40,57 @@ inline std::unique_ptr<Simulator> defaultModeSimulator(const TestScene& s) {
   return sim;
 }
 
-/// One step, which must succeed and leave nothing unresolved (promise 1, --verify's check).
+/// Overlap depth of every pair at positions x (particle-particle, particle-capsule, particle-
+/// half-plane), computed here from the geometry alone, independently of the simulator's checks.
+/// `names` (optional) receives each pair's description.
+inline std::vector<double> overlaps(const Scene& scene, const VecX& x, std::vector<std::string>* names = nullptr) {
+  std::vector<double> d;
+  const int n = scene.numParticles();
+  auto segmentDistance = [](const Vec2& p, const Vec2& a, const Vec2& b) {
+    const Vec2 e = b - a;
+    const double ee = e.squaredNorm();
+    const double t = ee > 0 ? std::clamp((p - a).dot(e) / ee, 0.0, 1.0) : 0.0;
+    return (a + t * e - p).norm();
+  };
+  auto name = [&](const char* kind, int i, int j) {
+    if (names) names->push_back(std::string(kind) + " (" + std::to_string(i) + ", " + std::to_string(j) + ")");
+  };
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      d.push_back(scene.radius[i] + scene.radius[j] - (at(x, j) - at(x, i)).norm());
+      name("particle-particle", i, j);
+    }
+    for (size_t k = 0; k < scene.edges.size(); ++k) {
+      const Edge& e = scene.edges[k];
+      d.push_back(e.i == i || e.j == i ? -1.0
+                                       : scene.radius[i] + e.radius - segmentDistance(at(x, i), at(x, e.i), at(x, e.j)));
+      name("particle-edge", i, static_cast<int>(k));
+    }
+    for (size_t k = 0; k < scene.halfplanes.size(); ++k) {
+      const HalfPlane& h = scene.halfplanes[k];
+      d.push_back(scene.radius[i] - (at(x, i) - h.point).dot(h.normal) / h.normal.norm());
+      name("particle-half-plane", i, static_cast<int>(k));
+    }
+  }
+  return d;
+}
+
+/// One step, which must succeed and leave nothing unresolved (promise 1, --verify's check), and
+/// must not deepen any pair's overlap at the end of the step beyond rounding (checked here
+/// independently of --verify, from positions alone).
 inline ::testing::AssertionResult stepClean(Simulator& sim, TestScene& s) {
   const long k = s.state.step + 1;
+  const std::vector<double> before = overlaps(s.scene, s.state.x);
   if (Status st = sim.step(s.scene, s.state); !st.isOk())
     return ::testing::AssertionFailure() << "step " << k << " failed: " << st.message();
+  std::vector<std::string> names;
+  const std::vector<double> after = overlaps(s.scene, s.state.x, &names);
+  const double length = 1.0 + s.state.x.cwiseAbs().maxCoeff();
+  for (size_t m = 0; m < after.size(); ++m)
+    if (after[m] > std::max(before[m], 0.0) + 1e-9 * length)
+      return ::testing::AssertionFailure() << "step " << k << ": " << names[m] << " ends " << after[m]
+                                           << " deep (was " << before[m] << "); zones " << sim.stats().zones
+                                           << ", rigid " << sim.stats().rigidZones;
   const auto left = sim.unresolved(s.scene, s.state, 4);
   if (!left.empty())
     return ::testing::AssertionFailure() << "step " << k << ": " << left.size() << " unresolved, first "

@@ -69,13 +69,18 @@ TEST(ContactPhysics, ParticleOnFreeEdgeEndLosesExactlyTheRestitutionEnergy) {
         const Vec2 p0 = momentum(s);
         const double l0 = angularMomentum(s), pScale = momentumScale(s), lScale = angularScale(s);
         const double e0 = kinetic(s), W = 1 + (1 - c.a) * (1 - c.a) + c.a * c.a;
-        bool first = true;
+        bool first = true, failsafe = false;
         for (int k = 0; k < 100; ++k) {
           const double before = kinetic(s);
           ASSERT_TRUE(stepClean(*sim, s));
           ASSERT_LE(kinetic(s), before * (1 + 1e-12)) << "step " << k + 1;
           ASSERT_LE((momentum(s) - p0).norm(), 1e-12 * pScale) << "step " << k + 1;
-          ASSERT_LE(std::abs(angularMomentum(s) - l0), 1e-9 * lScale) << "step " << k + 1;
+          // Impulses act through the contact: L is kept to rounding. Once the disk rests on the
+          // rotating edge (COR 0), the contact deepens only through the rotation and goes to the
+          // failsafe, whose row along the later normal does not pass through today's contact
+          // points: L is then kept to first order in the step only.
+          failsafe = failsafe || sim->stats().failsafeUsed;
+          ASSERT_LE(std::abs(angularMomentum(s) - l0), (failsafe ? 1e-6 : 1e-9) * lScale) << "step " << k + 1;
           if (first && !sim->log().impulses.empty()) {
             first = false;
             ASSERT_EQ(sim->log().impulses.size(), 1u) << "step " << k + 1;

@@ -22,6 +22,8 @@ struct StepStats {
   int failsafeRounds = 0;    ///< hybrid: rigid moves of the failsafe (each followed by a detection)
   int zones = 0;             ///< hybrid: impact zones at the end of the failsafe
   int largestZone = 0;       ///< hybrid: particles in the largest zone
+  int zoneParticles = 0;     ///< default mode: particles in failsafe zones at the end of the step
+  int rigidZones = 0;        ///< default mode: zones that fell back to rigid motion
 
   void clear() { *this = StepStats{}; }
 };

@@ -28,10 +28,25 @@
 
 namespace fosssim {
 
-/// Projections of one zone in one step before it moves rigidly instead. Each new contact of a
-/// zone costs a solve; a zone still meeting new contacts after this many is a jam (a wedge, a
-/// column being crushed) that a rigid motion settles for the rest of the step.
+/// Solves of one zone in one step without new contacts since the last solve, before it moves
+/// rigidly instead: a zone still meeting its own contacts after this many is a jam (a wedge, a
+/// column being crushed) that a rigid motion settles for the rest of the step. Solves for new
+/// contacts (newcomers landing on a pile) do not count: they are bounded by the pairs.
 constexpr int kMaxZoneProjections = 8;
+/// All solves of one zone in one step, new contacts or not: bounds the cost of a zone that keeps
+/// meeting newcomers one at a time (each solve costs the whole zone).
+constexpr int kMaxZoneSolves = 64;
+
+/// The projection's tolerance, relative to the zone's largest speed: tighter than the solver's
+/// default, because what it leaves closing deepens the zone's slowest contacts over the rest of
+/// the step, and verification counts deepening beyond kDepthTolerance (1e-12) of the lengths.
+/// Gauss-Seidel converges linearly, so this costs about 30% more sweeps than 1e-10.
+constexpr double kZoneProjectionTolerance = 1e-13;
+
+/// Closing speeds inside one zone up to this fraction of the zone's largest rate are left over
+/// by its projection (kZoneProjectionTolerance times a row norm of at most sqrt(3)), so that a
+/// solved zone is not solved again for them.
+constexpr double kZoneClosingFraction = 2e-13;
 
 /// Extra reach, as a fraction of a pair's radius sum, within which two zone neighbours count as
 /// touching on top of the distance they could close in the rest of the step (absorbs rounding of
@@ -47,16 +62,20 @@ class ContactZones {
   /// rest of the step (transitively) into one zone, whose contacts it records; returns the zone.
   int absorb(const Scene& scene, const StepMotion& motion, const PairCandidates& candidates, uint64_t key, double T);
 
-  /// Solves zone `zone` at time T: writes its particles' new rates into `motion`, their velocity
-  /// changes into v (2N), and appends the particles whose rate changed to `changed`.
-  void resolve(const Scene& scene, StepMotion& motion, int zone, double T, double h, VecX& v,
-               std::vector<int>& changed, StepStats& stats);
+  /// Solves zone `zone` at time T, growing it while its new velocities bring more pairs near:
+  /// writes its particles' new rates into `motion`, their velocity changes into v (2N), and
+  /// appends the particles whose rate changed to `changed` (perhaps more than once).
+  void resolve(const Scene& scene, StepMotion& motion, PairCandidates& candidates, int zone, double T,
+               double h, VecX& v, std::vector<int>& changed, StepStats& stats);
 
   /// The zone of particle p, or -1.
   int zoneOf(int p) const { return parent_.empty() || parent_[p] < 0 ? -1 : root(p); }
   bool isRigid(int zone) const { return rigid_[zone] != 0; }
-  /// Number of zones and the size of the largest, for the statistics.
-  void sizes(int& zones, int& largest) const;
+  /// Adds the zones (count, particles, largest, rigid ones) to the statistics.
+  void sizes(StepStats& stats) const;
+  /// The largest rate (displacement per step) among the zone's particles after its last solve:
+  /// the scale of what its projection leaves closing (math::kProjectionTolerance of it).
+  double rateScale(int zone) const { return rateScale_[root(zone)]; }
   void setRigidOnly(bool rigid) { rigidOnly_ = rigid; }
 
  private:
@@ -67,16 +86,27 @@ class ContactZones {
   int join(int p);              ///< adds movable particle p to the zones (alone), returns its root
   int unite(int a, int b);      ///< merges two zones, returns the new root
   void addContact(int zone, uint64_t key);
+  int take(const Scene& scene, int p, int zone);  ///< movable p joins `zone` (or a new one)
+  int grow(const Scene& scene, const StepMotion& motion, const PairCandidates& candidates, int zone, double T);
+  size_t uniqueContacts(int zone);
+  void solve(const Scene& scene, StepMotion& motion, int zone, double T, double h, VecX& v,
+             std::vector<int>& changed, StepStats& stats);
   bool near(const Scene& scene, const StepMotion& motion, uint64_t key, double T) const;
-  void project(const Scene& scene, const StepMotion& motion, int zone, double T, double h, bool& converged);
+  void project(const Scene& scene, const StepMotion& motion, int zone, double T, bool& converged);
+  /// Appends the contact's row with its normal at position(p); returns the normal (zero: none).
+  template <class Position>
+  Vec2 addRow(const Scene& scene, uint64_t key, Position&& position);
   void moveRigidly(const Scene& scene, const StepMotion& motion, int zone, double T, double h);
 
   bool rigidOnly_ = false;
   std::vector<int> parent_;                ///< N: union-find parent, -1 when in no zone
   std::vector<std::vector<int>> members_;  ///< per root: its particles
   std::vector<std::vector<uint64_t>> contacts_;  ///< per root: its contacts' pair keys
-  std::vector<int> projections_;           ///< per root: solves so far in this step
+  std::vector<int> projections_;           ///< per root: solves without new contacts in this step
+  std::vector<int> solves_;                ///< per root: all solves in this step
+  std::vector<size_t> solvedContacts_;     ///< per root: contacts at its last solve
   std::vector<char> rigid_;                ///< per root: moving rigidly for the rest of the step
+  std::vector<double> rateScale_;          ///< per root: see rateScale()
   std::vector<int> roots_;                 ///< every particle that has been a root this step
   std::vector<int> queue_;
   std::vector<uint64_t> keys_;

@@ -7,6 +7,9 @@
 
 #include "fosssim/core/scene.h"
 #include "fosssim/math/ccd_exact.h"
+#include "fosssim/math/geometry.h"
+
+#include <algorithm>
 
 namespace fosssim {
 
@@ -81,8 +84,61 @@ double closingSpeed(const Scene& scene, uint64_t key, const Vec2& normal, double
 }
 
 /// Closing speeds at or below this fraction of the pair's own speeds are the rounding left by a
-/// resolved contact (an inelastic response leaves a closing speed of a few ulps of the speeds),
-/// not an approach: treating them as contacts would only repeat a response that changes nothing.
+/// resolved contact (an inelastic response leaves a closing speed of a few ulps of the speeds):
+/// an impulse cannot act on them (one along a normal that does not close would add energy).
 constexpr double kRestingClosingFraction = 1e-9;
+
+/// Overlap depths below this fraction of a pair's length scale (its coordinates and radii) are
+/// rounding. A pair counts as penetrating only when its overlap deepens by more than this.
+constexpr double kDepthTolerance = 1e-12;
+
+/// Overlap depth of pair `key` (positive: overlapping) with its particles at position(p).
+template <class Position>
+double pairDepth(const Scene& scene, uint64_t key, Position&& position) {
+  const int i = keyParticle(key), other = keyOther(key);
+  const Vec2 x = position(i);
+  switch (keyKind(key)) {
+    case PairKind::ParticleParticle: return scene.radius[i] + scene.radius[other] - (position(other) - x).norm();
+    case PairKind::ParticleEdge: {
+      const Edge& e = scene.edges[other];
+      return scene.radius[i] + e.radius - math::segmentContactVector(x, position(e.i), position(e.j)).norm();
+    }
+    case PairKind::ParticleHalfPlane: {
+      const HalfPlane& h = scene.halfplanes[other];
+      return scene.radius[i] - (x - h.point).dot(h.normal) / h.normal.norm();
+    }
+  }
+  return 0;
+}
+
+/// The time in [t, tb] at which pair `key` overlaps deepest, with its particles at
+/// position(p, s) at time s; `deepest` receives that depth. Sampled: geometrically closer to t (a
+/// pair passing through penetrates soon after its contact) and evenly over [t, tb] (an edge's
+/// rotation deepens slowly).
+template <class Position>
+double deepestTime(const Scene& scene, uint64_t key, Position&& position, double t, double tb, double& deepest) {
+  auto depthAt = [&](double s) { return pairDepth(scene, key, [&](int p) { return position(p, s); }); };
+  double best = tb;
+  deepest = depthAt(tb);
+  auto sample = [&](double s) {
+    const double d = depthAt(s);
+    if (d > deepest) deepest = d, best = s;
+  };
+  for (double f = 0.5; f > 1e-12; f *= 0.5) sample(t + f * (tb - t));
+  for (int k = 1; k < 32; ++k) sample(t + k / 32.0 * (tb - t));
+  return best;
+}
+
+/// How much pair `key` deepens its overlap between t and tb beyond the overlap at t (or beyond
+/// touching); `length` receives the pair's length scale (coordinates and radii) at t.
+template <class Position>
+double pairDeepening(const Scene& scene, uint64_t key, Position&& position, double t, double tb, double& length) {
+  double deepest = 0;
+  deepestTime(scene, key, position, t, tb, deepest);
+  const PairParticles pair = pairParticles(scene, key);
+  length = 0;
+  for (int k = 0; k < pair.count; ++k) length += position(pair.p[k], t).norm() + scene.radius[pair.p[k]];
+  return deepest - std::max(pairDepth(scene, key, [&](int p) { return position(p, t); }), 0.0);
+}
 
 }  // namespace fosssim

@@ -2,9 +2,9 @@
 // move on straight pieces that bend at contacts, so a straight-line detection from start to end
 // would test a chord the particles never followed. Instead every pair is tested piece by piece:
 // between consecutive bends of its particles both move in straight lines, and the ordinary
-// continuous-time query applies. A pair that comes into contact while closing faster than
-// rounding (pair_query.h) on any piece, and deeper than rounding before the piece ends, is
-// reported, unless one rigid zone moved all of it.
+// continuous-time query applies. A pair that comes into contact on a piece and overlaps deeper
+// than rounding before the piece ends (pair_query.h) is reported, unless one rigid zone moved
+// all of it.
 //
 // Candidates: each particle's whole path lies in the box spanned by the corners (lowest and
 // highest coordinates) of its path points, so the broad phase is built on those corners.
@@ -65,42 +65,6 @@ class Paths {
   std::vector<MotionBreak> points_;
 };
 
-/// A contact is a violation only if the pair overlaps by more than this fraction of its length
-/// scale (coordinates and radii) before its piece ends. Shallower overlaps are rounding: the
-/// contact that ended the piece seen a little early (event times and interpolated pieces agree
-/// only to rounding, and the time of first contact is ill-conditioned for a pair closing slowly),
-/// or a disk sliding over a joint at a height a few ulps below touching. A contact exactly at
-/// t = 1 belongs to the next step, which starts with it.
-constexpr double kVerifyDepthFraction = 1e-12;
-
-/// Overlap depth of a pair at step fraction t (positive: overlapping).
-double depth(const Scene& scene, uint64_t key, const Paths& paths, double t) {
-  const int i = keyParticle(key), other = keyOther(key);
-  const Vec2 x = paths.at(i, t);
-  switch (keyKind(key)) {
-    case PairKind::ParticleParticle: return scene.radius[i] + scene.radius[other] - (paths.at(other, t) - x).norm();
-    case PairKind::ParticleEdge: {
-      const Edge& e = scene.edges[other];
-      return scene.radius[i] + e.radius - math::segmentContactVector(x, paths.at(e.i, t), paths.at(e.j, t)).norm();
-    }
-    case PairKind::ParticleHalfPlane: {
-      const HalfPlane& h = scene.halfplanes[other];
-      return scene.radius[i] - (x - h.point).dot(h.normal) / h.normal.norm();
-    }
-  }
-  return 0;
-}
-
-/// The deepest overlap of a pair between its first contact t and the end of its piece tb, by
-/// sampling: geometrically closer to t (a pair that passes through penetrates soon after its
-/// contact) and evenly over the piece.
-double deepest(const Scene& scene, uint64_t key, const Paths& paths, double t, double tb) {
-  double d = depth(scene, key, paths, tb);
-  for (double f = 0.5; f > 1e-12; f *= 0.5) d = std::max(d, depth(scene, key, paths, t + f * (tb - t)));
-  for (int k = 1; k < 32; ++k) d = std::max(d, depth(scene, key, paths, t + k / 32.0 * (tb - t)));
-  return d;
-}
-
 }  // namespace
 
 std::vector<Violation> EventHandler::unresolved(const Scene& scene, const VecX& start, const VecX& end,
@@ -127,17 +91,22 @@ std::vector<Violation> EventHandler::unresolved(const Scene& scene, const VecX& 
       };
       if (queryPair(scene, key, motion, contact) == math::CcdOutcome::Miss) continue;
       const double t = ta + contact.tau * (tb - ta);
-      double scale = 0;
-      const auto rate = [&](int p) -> Vec2 { return (paths.at(p, tb) - paths.at(p, ta)) / (tb - ta); };
-      const double closing = closingSpeed(scene, key, contact.normal, contact.alpha, rate, scale);
-      if (closing <= kRestingClosingFraction * scale) continue;
+      // A contact is a violation only if the pair's overlap deepens beyond rounding before its
+      // piece ends: a shallower one is the contact that ended the piece seen a little early
+      // (event times and interpolated pieces agree only to rounding; the time of first contact
+      // is ill-conditioned for a pair closing slowly) or a disk sliding over a joint a few ulps
+      // below touching. An overlap the step starts with was judged when it formed. A contact
+      // exactly at t = 1 belongs to the next step, which starts with it.
       double length = 0;
-      for (int k = 0; k < pair.count; ++k) length += paths.at(pair.p[k], t).norm() + scene.radius[pair.p[k]];
-      if (deepest(scene, key, paths, t, tb) <= kVerifyDepthFraction * length) continue;
-      bool exempt = true;
+      const auto position = [&](int p, double at) { return paths.at(p, at); };
+      if (pairDeepening(scene, key, position, t, tb, length) <= kDepthTolerance * length) continue;
+      bool exempt = keyKind(key) != PairKind::ParticleHalfPlane;  // as in EventHandler::respond
       int zone = -2;
       for (int k = 0; k < pair.count; ++k) {
-        if (scene.isFixed(pair.p[k])) continue;
+        if (scene.isFixed(pair.p[k])) {
+          exempt = false;
+          continue;
+        }
         const int z = zoneOf(pair.p[k]);
         exempt = exempt && z >= 0 && (zone == -2 || z == zone);
         zone = z;
