@@ -1,11 +1,20 @@
 """Checks of the oracle trajectories of assets/t2m2 (the four course families) and the creative
-scene: predicted collision times, exact velocity exchanges, no overlap at step ends."""
+scene: predicted collision times, exact velocity exchanges, no overlap at step ends.
+
+These files are made by the default mode (contacts in time order, sequential impulses, paths that
+bend at contact times, inelastic-projection failsafe), not by the course's handlers (which --compat
+reproduces). Every scene here also gets checks_common.default_mode (polynomial log over the
+predicted motion, impulses replayed in time order, no deepening, no tunnelling along the replayed
+paths, no kinetic energy added, momenta of free scenes). Where a check used to encode the course's
+behaviour (one impulse pass per contact, summed impulses, straight motion through a contact step,
+rigid impact zones that freeze), it now checks what the default mode promises instead; each such
+place says why."""
 import math
 
 from fosssim_traj import (PE, PH, PP, add, cross, dot, mul, norm, segment_distance, sub, unit)
 from checks_common import (CheckFailed, check, close, close2, conserved_kinetic, conserved_momentum,
-                           expect, halfplane_distance, hybrid_failsafe_only, hybrid_impulses_only,
-                           kinetic, pair_polys_per_pass, straight_line_gaps)
+                           expect, halfplane_distance, kinetic, momentum, pair_gaps, predicted_motion,
+                           straight_line_gaps)
 
 # ---- t2m2/ContinuousTimeTests ------------------------------------------------------------------
 
@@ -14,12 +23,11 @@ def impulses_by_step(tr):
 
 
 def ct_common(sc, tr):
-    """Continuous-time: the end record repeats the mid record's state, impulses and polynomials."""
-    for k, mid in enumerate(tr.mids):
-        end = tr.ends[k + 1]
-        expect(mid.x == end.x and mid.v == end.v and mid.impulses == end.impulses and mid.polys == end.polys,
-               'step %d: mid and end records differ' % (k + 1))
-        expect(len(end.polys) == pair_polys_per_pass(sc), 'step %d: %d polynomials' % (k + 1, len(end.polys)))
+    """Continuous-time: default_mode (run by generic) checked the records, the polynomial log (one
+    set per pair) and the replay; here no step may need the failsafe (a particle may take 32
+    impulses in a step before it does, far more than these scenes need)."""
+    bad = [k for k in range(1, len(tr.explained)) if not tr.explained[k]]
+    expect(not bad, 'steps not explained by their impulses (failsafe): %s' % bad)
 
 
 def tunnels(sc, i, j, kind, steps):
@@ -80,27 +88,51 @@ def _(sc, tr, notes):
     notes.append('tunnelling scene; one PP impulse at the predicted step %d, tau %.3f (1e-9); velocities exactly exchanged (1e-12)' % (step, hits[0][1][4]))
 
 
+def gauss_seidel_1d(m, v, pairs, e=1.0):
+    """Sequential 1D impulses at one instant: the first approaching pair (in pair order) gets an
+    impulse with restitution e, again and again, until no pair of `pairs` approaches."""
+    v = list(v)
+    order = []
+    while True:
+        hit = next(((i, j) for (i, j) in pairs if v[i] > v[j]), None)
+        if hit is None:
+            return v, order
+        i, j = hit
+        u = v[j] - v[i]
+        v[i] += (1 + e) * u * m[j] / (m[i] + m[j])
+        v[j] -= (1 + e) * u * m[i] / (m[i] + m[j])
+        order.append(hit)
+
+
 @check('t2m2/ContinuousTimeTests/simultaneous.xml')
 def _(sc, tr, notes):
+    # The course applied the two contacts once each, one after the other, from positions moved as
+    # if the new velocities held for the whole step, so the middle ball met the left one again a few
+    # steps later. The default mode brings all three balls to the contact instant and applies
+    # impulses against the current velocities until no pair of that instant approaches: after
+    # (0,1) and (1,2) the middle ball moves left faster than the left ball while still touching
+    # it, so (0,1) is hit again at the same instant. Checked: the contact instant predicted from
+    # the initial conditions, the impulse order, and the sequential 1D elastic result.
     ct_common(sc, tr)
     conserved_momentum(sc, tr, notes)
     conserved_kinetic(sc, tr)
     hits = impulses_by_step(tr)
-    first = hits[0][0]
-    same = [im[:3] for k, im in hits if k == first]
-    expect(same == [(PP, 0, 1), (PP, 1, 2)], 'first step impulses %s' % same)
-    expect(any(k > first and im[:3] == (PP, 0, 1) for k, im in hits), 'no second collision')
-    v = [tr.ends[first].vel(i)[0] for i in range(3)]
-    # Sequential 1D elastic collisions: (0,1) then (1,2) with the updated velocity of 1.
-    m = sc.m
-    u0, u1, u2 = sc.v0[0][0], sc.v0[1][0], sc.v0[2][0]
-    a0 = ((m[0] - m[1]) * u0 + 2 * m[1] * u1) / (m[0] + m[1])
-    a1 = ((m[1] - m[0]) * u1 + 2 * m[0] * u0) / (m[0] + m[1])
-    b1 = ((m[1] - m[2]) * a1 + 2 * m[2] * u2) / (m[1] + m[2])
-    b2 = ((m[2] - m[1]) * u2 + 2 * m[1] * a1) / (m[1] + m[2])
-    for got, want, name in zip(v, (a0, b1, b2), 'left middle right'.split()):
-        close(got, want, 1e-9, name + ' velocity after the double hit')
-    notes.append('both contacts in step %d, resolved in pair order to the sequential 1D elastic result (1e-9); momentum (1e-12) and kinetic energy (1e-12) conserved' % first)
+    h = sc.dt
+    t_hit = (sc.x0[1][0] - sc.x0[0][0] - sc.r[0] - sc.r[1]) / (sc.v0[0][0] - sc.v0[1][0])
+    t_hit2 = (sc.x0[2][0] - sc.x0[1][0] - sc.r[1] - sc.r[2]) / (sc.v0[1][0] - sc.v0[2][0])
+    close(t_hit, t_hit2, 1e-12, 'both balls reach the middle one at once')
+    step = math.floor(t_hit / h) + 1
+    want_v, order = gauss_seidel_1d(sc.m, [sc.v0[i][0] for i in range(3)], [(0, 1), (1, 2)])
+    expect([im[:3] for k, im in hits] == [(PP, i, j) for (i, j) in order] and all(k == step for k, im in hits),
+           'impulses %s, expected %s all in step %d' % (hits, order, step))
+    for k, im in hits:
+        close(im[4], t_hit / h - (step - 1), 1e-9, 'contact instant within the step')
+    for i in range(3):
+        close2(tr.ends[step].vel(i), (want_v[i], 0.0), 1e-9, 'velocity of ball %d after the contact instant' % i)
+    expect(want_v[2] > 0 and want_v[1] < 0 and want_v[0] < want_v[1] and want_v[2] > -want_v[0],
+           'not the asymmetric outcome: %s' % want_v)
+    notes.append('all contacts at the predicted instant of step %d (tau %.3f, 1e-9), in the order %s (Gauss-Seidel until no pair approaches); velocities %s equal the sequential 1D elastic result (1e-9); the right ball flies off fastest; momentum (1e-12) and kinetic energy (1e-12) conserved'
+                 % (step, hits[0][1][4], order, ', '.join('%.3f' % x for x in want_v)))
 
 
 def halfplane_cor(sc, tr, notes):
@@ -123,10 +155,15 @@ def halfplane_cor(sc, tr, notes):
         for n, rec in enumerate(tr.ends):
             v = v0 if n < step else v1
             close2(rec.vel(i), v, 1e-12, 'v[%d] at step %d' % (i, n))
-            if n > 0:
+            if n == step:
+                # The path bends at the contact time (the course moved the whole step at v1).
+                tau = mine[0][1][4]
+                close2(rec.pos(i), add(tr.ends[n - 1].pos(i), add(mul(tau * h, v0), mul((1 - tau) * h, v1))), 1e-12,
+                       'x[%d] at the contact step %d (bent path)' % (i, n))
+            elif n > 0:
                 close2(rec.pos(i), add(tr.ends[n - 1].pos(i), mul(h, v)), 1e-12, 'x[%d] at step %d' % (i, n))
         close(dot(v1, nh), -e * dot(v0, nh), 1e-12, 'normal speed ratio')
-        notes.append('ball %d: one PH impulse at the predicted step %d, tau %.3f (1e-9); leaves with normal velocity -COR times incoming (%.3f -> %.3f m/s) and tangential unchanged (1e-12)'
+        notes.append('ball %d: one PH impulse at the predicted step %d, tau %.3f (1e-9); leaves with normal velocity -COR times incoming (%.3f -> %.3f m/s) and tangential unchanged (1e-12); its path bends at the contact time (1e-12)'
                      % (i, step, mine[0][1][4], dot(v0, nh), dot(tr.ends[-1].vel(i), nh)))
 
 
@@ -156,11 +193,48 @@ def _(sc, tr, notes):
 
 # ---- t2m2/ImpulsesTests ------------------------------------------------------------------------
 
+def impulses_only(sc, tr, notes, min_cascade):
+    """ImpulsesTests: the impulses resolve every step. The course counted impulse passes and showed
+    that its failsafe never changed the state; the default mode has no passes (contacts come one
+    at a time, in time order) and no separate failsafe record, so the same claim is: replaying the
+    step's logged impulses reproduces every step (default_mode), and some step holds a cascade of
+    at least `min_cascade` time-ordered impulses."""
+    bad = [k for k in range(1, len(tr.explained)) if not tr.explained[k]]
+    expect(not bad, 'steps not explained by their impulses (the failsafe acted): %s' % bad)
+    most = max(len(r.impulses) for r in tr.ends)
+    expect(most >= min_cascade, 'at most %d impulses in a step, expected >= %d' % (most, min_cascade))
+    notes.append('the impulses alone explain every step (failsafe never acted); up to %d time-ordered impulses in a step' % most)
+
+
+def chain_times(sc, tr, notes):
+    """A row of balls on the x axis, struck by ball 0: the contacts (k, k+1) come one after another,
+    each when ball k, moving at the velocity its own hit gave it, closes the gap to ball k+1 (at
+    rest). Checks the logged pairs and their absolute times (in steps, 1e-9) and returns the
+    predicted final velocities (sequential 1D elastic collisions)."""
+    h = sc.dt
+    v = [sc.v0[i][0] for i in range(sc.n)]
+    t = 0.0
+    hits = [((k - 1) + im[4], im) for k, rec in enumerate(tr.ends) for im in rec.impulses]
+    expect(len(hits) == sc.n - 1, 'impulses %s' % [im for _, im in hits])
+    for i in range(sc.n - 1):
+        # Ball i + 1 is at rest and ball i has not moved before its own hit: the initial gap.
+        gap = sc.x0[i + 1][0] - sc.x0[i][0] - sc.r[i] - sc.r[i + 1]
+        t += gap / ((v[i] - v[i + 1]) * h)
+        when, im = hits[i]
+        expect(im[:3] == (PP, i, i + 1), 'contact %d is %s' % (i, im[:3]))
+        close(when, t, 1e-9, 'time of contact (%d, %d) in steps' % (i, i + 1))
+        m1, m2 = sc.m[i], sc.m[i + 1]
+        v[i], v[i + 1] = ((m1 - m2) * v[i] + 2 * m2 * v[i + 1]) / (m1 + m2), ((m2 - m1) * v[i + 1] + 2 * m1 * v[i]) / (m1 + m2)
+    notes.append('contacts (0,1), (1,2), ... at the predicted times (1e-9 of a step): %s' % ', '.join('%.4f' % w for w, _ in hits))
+    return v
+
+
 @check('t2m2/ImpulsesTests/cradle.xml')
 def _(sc, tr, notes):
-    hybrid_impulses_only(sc, tr, notes, min_passes=4)
+    impulses_only(sc, tr, notes, min_cascade=3)
     conserved_momentum(sc, tr, notes)
     conserved_kinetic(sc, tr)
+    chain_times(sc, tr, notes)
     last = tr.ends[-1]
     for i in range(sc.n - 1):
         close2(last.vel(i), (0.0, 0.0), 1e-12, 'ball %d at rest' % i)
@@ -170,14 +244,10 @@ def _(sc, tr, notes):
 
 @check('t2m2/ImpulsesTests/mass_ladder.xml')
 def _(sc, tr, notes):
-    hybrid_impulses_only(sc, tr, notes, min_passes=3)
+    impulses_only(sc, tr, notes, min_cascade=3)
     conserved_momentum(sc, tr, notes)
     conserved_kinetic(sc, tr)
-    # Sequential 1D elastic collisions down the ladder.
-    v = [sc.v0[i][0] for i in range(sc.n)]
-    for i in range(sc.n - 1):
-        m1, m2 = sc.m[i], sc.m[i + 1]
-        v[i], v[i + 1] = ((m1 - m2) * v[i] + 2 * m2 * v[i + 1]) / (m1 + m2), ((m2 - m1) * v[i + 1] + 2 * m1 * v[i]) / (m1 + m2)
+    v = chain_times(sc, tr, notes)
     for i in range(sc.n):
         close2(tr.ends[-1].vel(i), (v[i], 0.0), 1e-12, 'final velocity of ball %d' % i)
     notes.append('kinetic energy conserved (1e-12); final velocities equal the chain of 1D elastic collisions (1e-12), last ball %.3f m/s' % v[-1])
@@ -185,7 +255,7 @@ def _(sc, tr, notes):
 
 @check('t2m2/ImpulsesTests/fixed_posts.xml')
 def _(sc, tr, notes):
-    hybrid_impulses_only(sc, tr, notes, min_passes=2)
+    impulses_only(sc, tr, notes, min_cascade=1)
     bounces = 0
     for n, rec in enumerate(tr.ends):
         close(norm(rec.vel(2)), 4.0, 1e-12, 'ping-pong speed at step %d' % n)
@@ -201,7 +271,7 @@ def _(sc, tr, notes):
 
 @check('t2m2/ImpulsesTests/shelf_bounce.xml')
 def _(sc, tr, notes):
-    hybrid_impulses_only(sc, tr, notes, min_passes=2)
+    impulses_only(sc, tr, notes, min_cascade=1)
     # First floor bounce of ball 3: the step's velocity is -COR times the predicted one (normal y).
     g, h = sc.gravity[0][1], sc.dt
     for n in range(1, len(tr.ends)):
@@ -217,60 +287,130 @@ def _(sc, tr, notes):
 
 
 # ---- t2m2/GeometricTests -----------------------------------------------------------------------
+#
+# maxiters 0: a particle may take no impulse, so every contact goes to the failsafe at once. The
+# course's failsafe moved each impact zone rigidly and froze zones holding a fixed particle or
+# touching a half-plane; the scene descriptions still tell that story. The default mode's failsafe
+# is the inelastic projection (contact-physics.md): the zone's velocities become the closest ones,
+# in the kinetic-energy norm, under which no contact approaches. For one contact that means: the
+# approaching normal part of the relative velocity is removed, momentum is kept where no fixed
+# particle or half-plane acts, and tangential motion is kept (nothing freezes; a frictionless
+# ball slides off).
 
-def frozen_from(tr, i):
-    """The first step from which particle i never moves again (None if it moves in the last step)."""
-    last = tr.ends[-1].pos(i)
-    k = len(tr.ends) - 1
-    while k > 0 and tr.ends[k - 1].pos(i) == last:
-        k -= 1
-    return k if k < len(tr.ends) - 1 else None
+def failsafe_only(sc, tr, notes):
+    """No impulse is ever logged, and the failsafe acted (some step is not the predicted motion)."""
+    expect(all(not r.impulses for r in tr.ends), 'an impulse was logged with maxiters 0')
+    acted = [k for k in range(1, len(tr.explained)) if not tr.explained[k]]
+    expect(acted, 'the failsafe never acted')
+    notes.append('no impulse (maxiters 0); the failsafe (inelastic projection) acted in %d steps' % len(acted))
+    return acted
+
+
+def first_touch(xa, da, xb, db, R):
+    """First t in [0, 1] at which |(xb + t db) - (xa + t da)| = R (straight lines), or None."""
+    x, d = sub(xb, xa), sub(db, da)
+    A, B, C = dot(d, d), 2 * dot(x, d), dot(x, x) - R * R
+    disc = B * B - 4 * A * C
+    if A == 0 or disc < 0:
+        return None
+    t = (-B - math.sqrt(disc)) / (2 * A)
+    return t if 0 <= t <= 1 else None
+
+
+def projected_hit(sc, tr, k, a, b):
+    """Step k (1-based) in which particles a and b first touch along the predicted motion: the contact
+    time T, the unit normal from a to b there, and the predicted velocities."""
+    s = tr.ends[k - 1]
+    px, pv = predicted_motion(sc, s)
+    T = first_touch(s.pos(a), sub(px[a], s.pos(a)), s.pos(b), sub(px[b], s.pos(b)), sc.r[a] + sc.r[b])
+    expect(T is not None, 'step %d: particles %d and %d do not touch along the predicted motion' % (k, a, b))
+    xa = add(s.pos(a), mul(T, sub(px[a], s.pos(a))))
+    xb = add(s.pos(b), mul(T, sub(px[b], s.pos(b))))
+    return T, unit(sub(xb, xa)), pv
 
 
 @check('t2m2/GeometricTests/stack.xml')
 def _(sc, tr, notes):
-    hybrid_failsafe_only(sc, tr, notes)
-    steps = [frozen_from(tr, i) for i in range(sc.n)]
-    expect(all(s is not None for s in steps), 'not all at rest: %s' % steps)
+    # Was: the balls freeze bottom-up into a crooked stack (rigid zones touching the floor). Now the
+    # balls land inelastically and, being frictionless, slide off each other onto the floor.
+    failsafe_only(sc, tr, notes)
+    # The floor is horizontal and gravity vertical: nothing acts horizontally, so the horizontal
+    # momentum is kept exactly by the projection (its rows are contact normals between free balls,
+    # plus the floor's vertical one).
+    px0 = momentum(sc, tr.ends[0])[0]
+    for k, rec in enumerate(tr.ends):
+        close(momentum(sc, rec)[0], px0, 1e-12, 'horizontal momentum at step %d' % k)
+    # The big ball lands alone: in its landing step its fall is stopped and nothing else changes.
+    floor = lambda rec, i: halfplane_distance(sc, rec.pos(i), sc.r[i], 0)
+    land = next(k for k in range(1, len(tr.ends)) if not tr.explained[k])
+    close(floor(tr.ends[land], 0), 0.0, 1e-12, 'ball 0 on the floor after landing (step %d)' % land)
+    close2(tr.ends[land].vel(0), (predicted_motion(sc, tr.ends[land - 1])[1][0][0], 0.0), 1e-12, 'ball 0 stops falling, keeps its horizontal velocity')
+    # At the end all three lie on the floor, sliding freely (tangential motion kept, 1e-12).
+    last = tr.ends[-1]
     for i in range(sc.n):
-        expect(tr.ends[-1].vel(i) == (0.0, 0.0), 'ball %d still has velocity' % i)
-    expect(steps == sorted(steps), 'balls froze out of order: %s' % steps)
-    notes.append('balls come to rest bottom-up (steps %s) and never move again (bit-exact)' % steps)
+        close(floor(last, i), 0.0, 1e-9, 'ball %d on the floor at the end' % i)
+        for rec in tr.ends[-10:]:
+            close2(rec.vel(i), (last.vel(i)[0], 0.0), 1e-12, 'ball %d slides at constant velocity over the last steps' % i)
+    expect(last.vel(1)[0] > 0 and last.vel(0)[0] < 0, 'balls 0 and 1 did not slide apart')
+    notes.append('horizontal momentum kept (1e-12); ball 0 lands in step %d, stops falling and keeps its horizontal velocity (1e-12); the upper balls slide off (frictionless, nothing freezes): all end on the floor sliding at %s m/s'
+                 % (land, ', '.join('%.3f' % last.vel(i)[0] for i in range(sc.n))))
 
 
 @check('t2m2/GeometricTests/trapped.xml')
 def _(sc, tr, notes):
-    hybrid_failsafe_only(sc, tr, notes)
-    for i in (2, 3):
-        k = frozen_from(tr, i)
-        expect(k is not None, 'ball %d never stops' % i)
-        # It stops where its straight-line motion would have hit a post in the next step.
+    # Was: each ball stops dead before the post (a zone with a fixed particle froze). Now the
+    # projection against a fixed post removes only the approaching normal velocity: a ball keeps its
+    # tangential part and slides past; a head-on ball stops.
+    acted = failsafe_only(sc, tr, notes)
+    h = sc.dt
+    for i, post in ((2, 1), (3, 0)):
+        k = next(k for k in acted if tr.ends[k].vel(i) != tr.ends[k - 1].vel(i))
         for n in range(k):
-            close2(tr.ends[n].pos(i), add(sc.x0[i], mul(n * sc.dt, sc.v0[i])), 1e-12, 'free flight of %d' % i)
-        nxt = add(tr.ends[k].pos(i), mul(sc.dt, sc.v0[i]))
-        gap = min(norm(sub(nxt, sc.x0[p])) - sc.r[i] - sc.r[p] for p in (0, 1))
-        expect(gap < 0, 'ball %d stopped without reason' % i)
-        expect(tr.ends[-1].vel(i) == (0.0, 0.0), 'ball %d has velocity' % i)
-        notes.append('ball %d flies straight (1e-12), stops dead at step %d, the step whose straight-line motion would reach a post, and never moves again' % (i, k))
+            close2(tr.ends[n].pos(i), add(sc.x0[i], mul(n * h, sc.v0[i])), 1e-12, 'free flight of %d' % i)
+        T, nrm, pv = projected_hit(sc, tr, k, i, post)
+        v = pv[i]
+        vstar = sub(v, mul(dot(v, nrm), nrm))
+        close2(tr.ends[k].vel(i), vstar, 1e-9, 'ball %d after the projection at step %d' % (i, k))
+        xT = add(tr.ends[k - 1].pos(i), mul(T * h, v))
+        close2(tr.ends[k].pos(i), add(xT, mul((1 - T) * h, vstar)), 1e-9, 'ball %d path bends at the contact time' % i)
+        for n in range(k + 1, len(tr.ends)):
+            close2(tr.ends[n].vel(i), vstar, 1e-12, 'ball %d moves on at constant velocity (step %d)' % (i, n))
+        notes.append('ball %d flies straight (1e-12) until it meets post %d at step %d (T %.3f): its normal velocity is removed and its tangential velocity kept (1e-9), |v| %.3f -> %.3f m/s, then it moves on unchanged'
+                     % (i, post, k, T, norm(v), norm(vstar)))
+    expect(norm(tr.ends[-1].vel(3)) < 1e-9 and norm(tr.ends[-1].vel(2)) > 1.0, 'ball 3 (head-on) should stop, ball 2 (off-centre) slide on')
 
 
 @check('t2m2/GeometricTests/zone_halfplane.xml')
 def _(sc, tr, notes):
-    hybrid_failsafe_only(sc, tr, notes)
-    for i in range(sc.n):
-        expect(frozen_from(tr, i) is not None and tr.ends[-1].vel(i) == (0.0, 0.0), 'ball %d not at rest' % i)
-    air = [i for i in range(sc.n) if halfplane_distance(sc, tr.ends[-1].pos(i), sc.r[i], 0) > 0.05]
-    expect(air == [1, 3], 'balls frozen in mid-air: %s' % air)
-    # The mid-air pair: rigid while it flies (distance kept after its first contact).
-    d = [norm(sub(r.pos(3), r.pos(2))) - sc.r[2] - sc.r[3] for r in tr.ends]
-    expect(min(d) >= -1e-12, 'pair overlapped')
-    notes.append('all balls end at rest; balls 1 and 3 are frozen in mid-air (%.3f and %.3f m above the floor) as members of zones that touch the floor' %
-                 tuple(halfplane_distance(sc, tr.ends[-1].pos(i), sc.r[i], 0) for i in (1, 3)))
+    # Was: every ball freezes, balls 1 and 3 in mid-air. Now: the heavy ball lands and stays on the
+    # floor, the light ball slides over it and off (as a real frictionless ball would), the mid-air
+    # pair loses its closing velocity and falls on, and nothing is frozen in mid-air.
+    failsafe_only(sc, tr, notes)
+    px0 = momentum(sc, tr.ends[0])[0]
+    for k, rec in enumerate(tr.ends):
+        close(momentum(sc, rec)[0], px0, 1e-12, 'horizontal momentum at step %d (floor and gravity are vertical)' % k)
+    floor = lambda rec, i: halfplane_distance(sc, rec.pos(i), sc.r[i], 0)
+    land = next(k for k, rec in enumerate(tr.ends) if floor(rec, 0) < 1e-9)
+    for rec in tr.ends[land:]:
+        close(floor(rec, 0), 0.0, 1e-9, 'ball 0 stays on the floor')
+        close(rec.vel(0)[1], 0.0, 1e-9, 'ball 0 does not leave the floor')
+    # The mid-air pair (2, 3): in their contact step (before either reaches the floor) their
+    # closing velocity is removed along the contact normal and their momentum kept.
+    k = next(k for k in range(1, len(tr.ends)) if not tr.explained[k] and tr.ends[k].vel(2) != predicted_motion(sc, tr.ends[k - 1])[1][2])
+    T, nrm, pv = projected_hit(sc, tr, k, 2, 3)
+    a, b = tr.ends[k].vel(2), tr.ends[k].vel(3)
+    close(dot(sub(b, a), nrm), 0.0, 1e-9, 'pair (2, 3): relative normal velocity after the projection')
+    close(cross(sub(b, a), nrm), cross(sub(pv[3], pv[2]), nrm), 1e-9, 'pair (2, 3): relative tangential velocity kept')
+    close2(add(mul(sc.m[2], a), mul(sc.m[3], b)), add(mul(sc.m[2], pv[2]), mul(sc.m[3], pv[3])), 1e-12, 'pair (2, 3): momentum kept')
+    last = tr.ends[-1]
+    expect(last.pos(1)[0] > last.pos(0)[0] + sc.r[0] and last.vel(1)[0] > 0, 'ball 1 did not slide off ball 0 to the right')
+    notes.append('horizontal momentum kept (1e-12); ball 0 lands at step %d and stays on the floor (1e-9); the mid-air pair meets at step %d (T %.3f): closing velocity removed, tangential velocity and momentum kept (1e-9); ball 1 slides over ball 0 and off to the right; nobody is frozen in mid-air'
+                 % (land, k, T))
 
 
 @check('t2m2/GeometricTests/edge_triangle.xml')
 def _(sc, tr, notes):
-    hybrid_failsafe_only(sc, tr, notes)
+    failsafe_only(sc, tr, notes)
     conserved_momentum(sc, tr, notes)
     for n, rec in enumerate(tr.ends):
         e = sub(rec.pos(1), rec.pos(0))
@@ -281,38 +421,57 @@ def _(sc, tr, notes):
 
 @check('t2m2/GeometricTests/glancing.xml')
 def _(sc, tr, notes):
-    acted = hybrid_failsafe_only(sc, tr, notes)
+    # Was: the pair moves as one rigid body for a step (distance kept, head-on motion turned into
+    # spin). Now the projection removes the closing normal velocity and keeps the tangential one;
+    # the outcome the description names still follows: the light ball up and right, the heavy one
+    # down and left.
+    acted = failsafe_only(sc, tr, notes)
     conserved_momentum(sc, tr, notes)
-    expect(acted == 1, 'failsafe acted in %d steps' % acted)
-    k = next(k for k, mid in enumerate(tr.mids) if mid.x != tr.ends[k + 1].x) + 1
-    a, b = tr.ends[k - 1], tr.ends[k]
-    close(norm(sub(b.pos(1), b.pos(0))), norm(sub(a.pos(1), a.pos(0))), 1e-12, 'distance kept by the rigid step')
-    # Rigid rotation about the centre of mass: same angle for both arms.
-    M = sc.m[0] + sc.m[1]
-    cm = lambda r: mul(1.0 / M, add(mul(sc.m[0], r.pos(0)), mul(sc.m[1], r.pos(1))))
-    arm0, arm1 = sub(a.pos(0), cm(a)), sub(b.pos(0), cm(b))
-    angle = math.atan2(cross(arm0, arm1), dot(arm0, arm1))
-    notes.append('the failsafe acts in exactly one step (%d), keeps the pair distance (1e-12), turns the pair by %.3f rad' % (k, angle))
+    expect(len(acted) == 1, 'failsafe acted in %d steps' % len(acted))
+    k = acted[0]
+    T, nrm, pv = projected_hit(sc, tr, k, 0, 1)
+    a, b = tr.ends[k].vel(0), tr.ends[k].vel(1)
+    close(dot(sub(b, a), nrm), 0.0, 1e-9, 'relative normal velocity after the projection')
+    for i in (0, 1):
+        close(cross(sub(tr.ends[k].vel(i), pv[i]), nrm), 0.0, 1e-9, 'ball %d changed only along the contact normal' % i)
+    expect(a[0] > 0 and a[1] > 0 and b[0] < 0 and b[1] < 0, 'not the diagonal outcome: %s %s' % (a, b))
+    gaps = [norm(sub(r.pos(1), r.pos(0))) - sc.r[0] - sc.r[1] for r in tr.ends[k:]]
+    expect(all(g2 >= g1 for g1, g2 in zip(gaps, gaps[1:])), 'the pair does not separate after the contact')
+    notes.append('the failsafe acts in exactly one step (%d, contact at T %.3f): the closing normal velocity is removed and each ball changes only along the normal (1e-9); the light ball leaves up and right (%.3f, %.3f), the heavy one down and left, and they separate'
+                 % (k, T, a[0], a[1]))
 
 
 # ---- t2m2/HolisticTests and the creative scene -------------------------------------------------
 
 def hybrid_stats(sc, tr, notes):
-    per_pass = pair_polys_per_pass(sc)
-    failsafe = sum(1 for k, mid in enumerate(tr.mids) if mid.x != tr.ends[k + 1].x or mid.v != tr.ends[k + 1].v)
-    most = max(len(m.polys) // per_pass for m in tr.mids)
-    notes.append('%d steps needed the failsafe; up to %d impulse passes in a step' % (failsafe, most))
+    """How the default mode handled the scene: steps the impulses alone explain (replayed), steps
+    the failsafe was needed in, and the most impulses in one step (the course counted passes)."""
+    failsafe = sum(1 for ok in tr.explained[1:] if not ok)
+    most = max(len(r.impulses) for r in tr.ends)
+    notes.append('%d steps needed the failsafe; up to %d time-ordered impulses in a step' % (failsafe, most))
 
 
 @check('t2m2/HolisticTests/v_pile.xml')
 def _(sc, tr, notes):
+    # Was: the heap settles within the run (speeds < 0.05 m/s) because the course's failsafe froze
+    # the zone touching the walls. The default mode's projection keeps tangential motion, so the
+    # frictionless pile keeps flowing into the V within this 0.6 s run (a longer run settles to rest,
+    # outside this file). Checked instead: COR 0 (the replay of the impulses with COR 0 reproduces
+    # the steps, so no contact bounces), the balls fall into the bottom of the V and pile up there.
     hybrid_stats(sc, tr, notes)
-    ke = [kinetic(sc, r) for r in tr.ends]
-    fastest = max(norm(tr.ends[-1].vel(i)) for i in range(sc.n))
-    expect(fastest < 0.05 and ke[-1] < 1e-3 * max(ke), 'not settled: speed %g' % fastest)
+    last = tr.ends[-1]
     for i in range(sc.n):
-        expect(tr.ends[-1].pos(i)[1] < sc.x0[i][1], 'ball %d did not fall' % i)
-    notes.append('the heap settles: final speeds below %.3f m/s, kinetic energy %.1e of its peak; every ball ends below its start' % (fastest, ke[-1] / max(ke)))
+        expect(last.pos(i)[1] < sc.x0[i][1], 'ball %d did not fall' % i)
+    g = pair_gaps(sc, last)
+    on_wall = sorted({i for (kind, i, j), v in g.items() if kind == PH and v < 1e-9})
+    expect(len(on_wall) >= 3, 'only balls %s rest on a wall at the end' % on_wall)
+    # The heap: every ball within a tenth of its radius of a wall or another ball.
+    for i in range(sc.n):
+        near = min(v for (kind, a, b), v in g.items() if a == i or (kind == PP and b == i))
+        expect(near < 0.1 * sc.r[i] + 0.05, 'ball %d is not in the heap (gap %.3f)' % (i, near))
+    ke = [kinetic(sc, r) for r in tr.ends]
+    notes.append('no contact bounces (COR 0, replayed); every ball ends below its start, balls %s rest on the walls and the others lie in the heap; the frictionless pile still flows (kinetic energy %.0f%% of its peak at the end)'
+                 % (on_wall, 100 * ke[-1] / max(ke)))
 
 
 @check('t2m2/HolisticTests/chains_floor.xml')
@@ -339,9 +498,20 @@ def _(sc, tr, notes):
 
 @check('t2m2/HolisticTests/seesaw.xml')
 def _(sc, tr, notes):
+    # Was: the light ball is tossed above y = 2. That height came from the course's summed impulses,
+    # which added about 16 J of mechanical energy (kinetic + gravity + spring + penalty) in steps
+    # 54-57 of the old file; the default mode adds none (default_mode's kinetic energy check), and
+    # the light ball now rises about 1.45 m. Checked: the heavy ball drives the left end down to
+    # the floor, the right end flips up and the light ball is tossed more than 1 m above its start.
     hybrid_stats(sc, tr, notes)
-    expect(max(r.pos(4)[1] for r in tr.ends) > 2.0, 'the light ball was not tossed')
-    notes.append('the light ball is tossed above y = 2')
+    top = max(r.pos(4)[1] for r in tr.ends)
+    expect(top > sc.x0[4][1] + 1.0, 'the light ball was not tossed (highest %.3f)' % top)
+    floor_hits = [k for k, r in enumerate(tr.ends) for im in r.impulses if im[:3] == (PH, 1, 0)]
+    expect(floor_hits, 'the left end never hit the floor')
+    right = max(r.pos(2)[1] for r in tr.ends)
+    expect(right > sc.x0[2][1] + 0.5, 'the right end did not flip up')
+    notes.append('the left end is driven into the floor (first hit step %d), the right end flips up by %.2f m and the light ball is tossed %.2f m above its start'
+                 % (floor_hits[0], right - sc.x0[2][1], top - sc.x0[4][1]))
 
 
 @check('t2m2/creative.xml')
