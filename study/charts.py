@@ -373,6 +373,10 @@ def main(argv):
     chart_penalty_depth(data_dir)
     chart_hybrid(data_dir)
     chart_profile(data_dir)
+    if os.path.exists(os.path.join(data_dir, "contacts_series.csv")):
+        import charts_contacts  # after plt's settings above, which it shares
+        charts_contacts.chart_contacts(data_dir)
+        charts_contacts.chart_contact_outcomes(data_dir)
     print(f"charts: written to {data_dir}")
 
 

@@ -4,6 +4,9 @@
 //   robustness.csv  outcome of a fast disk against a thin edge, per collision method, speed and dt
 //   hybrid.csv      the hybrid handler's failsafe use, zone sizes and cost against maxiters
 //   profile.csv     per scene: the parts of the simulator it uses and what each costs per step
+//   contacts_series.csv, contacts_summary.csv
+//                   multi-contact problems, default mode next to --compat: energy, momentum,
+//                   angular momentum, zones and escapes over time, and each problem's outcome
 #pragma once
 
 #include "problems.h"
@@ -37,5 +40,6 @@ Status runStability(const StudyOptions& options);
 Status runRobustness(const StudyOptions& options);
 Status runHybridCost(const StudyOptions& options);
 Status runProfile(const StudyOptions& options);
+Status runContacts(const StudyOptions& options);
 
 }  // namespace fosssim::study

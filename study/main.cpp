@@ -1,7 +1,7 @@
 // fosssim-study: runs the study's experiments and writes their CSV files (experiments.h).
 // The charts and docs/study.md are made from those files by study/charts.py; scripts/study runs
 // both. Usage:
-//   fosssim-study [--out DIR] [--quick] [--only accuracy,stability,robustness,hybrid,profile]
+//   fosssim-study [--out DIR] [--quick] [--only accuracy,stability,robustness,hybrid,profile,contacts]
 #include "experiments.h"
 
 #include <chrono>
@@ -15,7 +15,8 @@ void usage(std::ostream& out) {
   out << "usage: fosssim-study [--out DIR] [--quick] [--only NAME[,NAME...]]\n"
          "  --out DIR   where the CSV files go (default: the current directory; it must exist)\n"
          "  --quick     a tiny matrix of every experiment (seconds instead of minutes)\n"
-         "  --only      some of: accuracy, stability, robustness, hybrid, profile\n";
+         "  --only      some of: accuracy, stability, robustness, hybrid, profile,\n"
+         "              contacts\n";
 }
 
 }  // namespace
@@ -24,7 +25,7 @@ int main(int argc, char** argv) {
   using namespace fosssim::study;
   StudyOptions options;
   options.log = &std::cerr;
-  std::string only = "accuracy,stability,robustness,hybrid,profile";
+  std::string only = "accuracy,stability,robustness,hybrid,profile,contacts";
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--out" && i + 1 < argc) {
@@ -50,7 +51,8 @@ int main(int argc, char** argv) {
                                     {"stability", runStability},
                                     {"robustness", runRobustness},
                                     {"hybrid", runHybridCost},
-                                    {"profile", runProfile}};
+                                    {"profile", runProfile},
+                                    {"contacts", runContacts}};
   std::stringstream wanted(only);
   std::string name;
   while (std::getline(wanted, name, ',')) {

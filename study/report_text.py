@@ -12,6 +12,92 @@ STABILITY_THEORY = {
     "linearized-implicit-euler": "stable for every dt (the same as implicit Euler on a linear spring)",
 }
 
+# The billiard-break bullets, chosen by report.py from the data: whether the hybrid without its
+# penalty layer (k = 0) still gains energy tells the course's summed impulses (the --compat
+# formulation) from the default mode, where only the penalty layer's work is left.
+BILLIARD_SUMMED = """\
+- **On the billiard break the hybrid handler gains energy (about +{hybrid_gain} of the kinetic
+  energy, at every dt; without the penalty layer about +{hybrid_k0_gain})**: an impulse pass sums
+  impulses that were each computed from the same end-of-step positions, so a disk struck by two
+  others at once (the rack's apex) is pushed twice for one approach. `simple` and
+  `continuous-time` keep the energy to rounding."""
+
+BILLIARD_PENALTY = """\
+- **On the billiard break the hybrid handler's penalty layer changes the kinetic energy (about
+  +{hybrid_gain}, at every dt)**; without it (k = 0) the hybrid keeps the energy to
+  {hybrid_k0_gain}, as `continuous-time` does: the default mode resolves the rack's simultaneous
+  contacts one after another (section 6), and what remains is the work of the penalty force,
+  which symplectic Euler does not integrate exactly."""
+
+ODDITY_SUMMED = """\
+- The hybrid handler gains kinetic energy on simultaneous impacts (about +{hybrid_gain} on a
+  symmetric billiard break, independent of dt and maxiters): impulses of one pass are computed from
+  the same positions and summed. This is the reference's formulation, so it is reproduced on
+  purpose, but users should know.
+"""
+
+ODDITY_PENALTY = """\
+- The hybrid's penalty layer changes the kinetic energy of a billiard break by about
+  +{hybrid_gain} (without it, k = 0: {hybrid_k0_gain}); section 6 shows `--compat`, the course's
+  summed impulses, gaining several times the energy on simultaneous contacts.
+"""
+
+CONTACTS_INTRO = """\
+## 6. Multi-contact problems: the default mode next to --compat
+
+Six scenes where several contacts meet in one step, each run with the default mode (contacts in
+time order, sequential impulses, the inelastic-projection failsafe with rigid zones as the last
+resort) and with `--compat` (the course's formulation: impulses of a pass summed, continuous-time
+in one pass, rigid impact zones that freeze against walls), for `continuous-time` and `hybrid`
+(the hybrid without its penalty layer, k = 0, so that only contact handling differs). Symplectic
+Euler throughout. The charts show energy (kinetic plus gravity's potential, over its start),
+|momentum| and angular momentum about the origin over time; the slot's curves add up its shots.
+Only the rack and the cradle are isolated systems, where both momenta must stay flat; elsewhere
+walls, fixed edges and gravity exchange momentum with the particles. \"Escaped\" is a centre that
+crossed a wall's or an edge's line; \"frozen\" is a kinetic energy at or below 1e-12 of its peak
+over at least the last quarter of the run (for the pile: while packed looser than 0.75, since
+frictionless disks at rest pack near 0.82 or denser; its packing is judged from its mean height
+against the N lowest sites of a triangular lattice in the V). Tests of each claim:
+`tests/study/contacts_test.cpp`.
+"""
+
+CONTACTS_WORDS = """\
+### What it says
+
+- **Joint drop**: in the default mode the ball leaves the joint at its impact speed
+  {joint_default_ratio} (an elastic flat contact reverses the normal velocity), and its energy peaks at
+  {joint_default_gain} times its start (symplectic Euler's own error over the flights; the bounce
+  itself is exact). `--compat`'s hybrid sums the impulses of the {joint_compat_contacts} contacts
+  it finds in that step: the ball rebounds at {joint_compat_ratio} times its impact speed and the
+  energy grows to {joint_compat_gain} times its start. `--compat`'s continuous-time rebounds at
+  {joint_compat_ct_ratio} times the impact speed, its energy peaking at {joint_compat_ct_gain}
+  times the start (its positions move as if the new velocity had held for the whole step).
+- **Touching rack**: in the default mode the kinetic energy at the end differs from its start by
+  {rack_default_energy}, momentum by {rack_default_momentum} and angular momentum by
+  {rack_default_angular} of their scales. `--compat`'s energy peaks at {rack_compat_gain} times
+  its start.
+- **Corridor**: in the default mode the particle escapes in {corridor_default_escapes} of the
+  runs, keeps its speed {corridor_default_speed} and bounces {corridor_default_bounces} times per
+  step on average. With `--compat`, continuous-time {corridor_compat_ct}; the hybrid
+  {corridor_compat_hybrid}.
+- **Slot**: the default mode lets {slot_default_escaped} of {slot_disks} disks through over
+  {slot_shots} shots, with up to {slot_contacts} contacts per step and shot (the busiest step,
+  averaged over the shots). The contacts past a
+  particle's quota of impulse events go to the inelastic failsafe (at most {slot_zones} of the
+  disks in zones), which removes {slot_loss_ct} (continuous-time) and {slot_loss_hybrid} (hybrid)
+  of the kinetic energy that COR 1 would keep: the price of never tunnelling. `--compat`'s
+  continuous-time lets {slot_compat_ct} through; its hybrid {slot_compat_hybrid}.
+- **Newton's cradle**: {cradle_words}
+- **Pile in a V** ({pile_disks} disks): in the default mode {pile_zone_mean} of the disks are in
+  failsafe zones on average (continuous-time, hybrid; at most {pile_zone_max}), and the rigid last
+  resort ran in {pile_rigid} of the {pile_steps} steps. {pile_flows}: its mean height ends at
+  {pile_default_height} m, against {pile_lattice} m for the lattice filling of the V and
+  {pile_frozen_height} m for the column stopped at its first contact (packing
+  {pile_default_packing}; {pile_default_flow}). `--compat`'s hybrid {pile_compat_hybrid}; its
+  continuous-time {pile_compat_ct}.
+- {contacts_cost}
+"""
+
 INTRO = """\
 # The study: what each method costs, how wrong it is, and where it breaks
 
@@ -99,11 +185,7 @@ ACCURACY_WORDS = """\
   it pushes disks apart before they touch, so on the two disks, the COR 0.5 bounce and the cradle
   the hybrid's error stops shrinking with dt (order ≈ 0). With k = 0 the hybrid is as accurate as
   continuous-time on every problem but one:
-- **On the billiard break the hybrid handler gains energy (about +{hybrid_gain} of the kinetic
-  energy, at every dt and with or without the penalty layer)**: an impulse pass sums impulses that were each
-  computed from the same end-of-step positions, so a disk struck by two others at once (the rack's
-  apex) is pushed twice for one approach. `simple` and `continuous-time` keep the energy to
-  rounding.
+{billiard_words}
 - **Penalty ignores COR** (it is a conservative spring: every floor bounce is elastic) and a soft
   one lets disks through: at k = 1e2 (the default) the falling disk passes through the floor and the
   two disks through each other. A stiff one is only stable for ω·dt < 2 with ω = √(k/m): k = 1e6 on
@@ -202,11 +284,7 @@ PICK = """\
 ODDITIES = """\
 ## Things in the simulator that look wrong or cost more than they should
 
-- The hybrid handler gains kinetic energy on simultaneous impacts (about +{hybrid_gain} on a
-  symmetric billiard break, independent of dt and maxiters): impulses of one pass are computed from
-  the same positions and summed. This is the reference's formulation, so it is reproduced on
-  purpose, but users should know.
-- The hybrid's default penalty layer (thickness 0.1, as thick as a typical radius) acts on
+{billiard_oddity}- The hybrid's default penalty layer (thickness 0.1, as thick as a typical radius) acts on
   neighbours that are not touching, and keeps the hybrid's error from shrinking with dt.
 - Zones touching a half-plane or a fixed particle are frozen (positions kept, velocity 0: the
   reference's rule), so piles on a floor stop moving instead of settling.
@@ -253,6 +331,9 @@ def document(sections, facts, elapsed):
         "## 5. Where the time goes, per scene",
         sections["profile"],
         PROFILE_WORDS.format(**facts),
+        CONTACTS_INTRO if sections.get("contacts") else "",
+        sections.get("contacts", ""),
+        facts.get("contacts_words", "") if sections.get("contacts") else "",
         PICK.format(**facts),
         ODDITIES.format(**facts),
     ]

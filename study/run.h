@@ -60,6 +60,10 @@ struct RunResult {
 /// Called after every successful step with the new state.
 using StepVisitor = std::function<void(const Scene&, const State&)>;
 
+/// The simulator options of every study run: the energy watch off (the study has its own blow-up
+/// mark), and the course's formulation (--compat) only when asked for, to compare against it.
+SimulatorOptions studySimulatorOptions(bool compat = false);
+
 /// Total mechanical energy: kinetic plus the potential of the forces that have one.
 double mechanicalEnergy(const Scene& scene, const State& state);
 

@@ -35,7 +35,9 @@ TEST(StudyExperiments, QuickMatrixWritesEveryCsvFile) {
   ASSERT_TRUE(runRobustness(options).isOk());
   ASSERT_TRUE(runHybridCost(options).isOk());
   ASSERT_TRUE(runProfile(options).isOk());
-  for (const char* name : {"accuracy", "stability", "robustness", "hybrid", "profile"})
+  ASSERT_TRUE(runContacts(options).isOk());
+  for (const char* name : {"accuracy", "stability", "robustness", "hybrid", "profile", "contacts_series",
+                           "contacts_summary"})
     EXPECT_GT(lines((dir / (std::string(name) + ".csv")).string()), 2) << name;
   std::filesystem::remove_all(dir);
 }
