@@ -1,52 +1,57 @@
 // Internal header: the default mode's failsafe, impact zones resolved at an instant of the step.
 //
 // When impulses cannot settle a cluster of contacts (a particle took its quota of impulse
-// events in this step: a resting pile, a ball wedged in a corner), the cluster becomes a zone at
-// the current event time T: the particles of the contact and, transitively, every particle that
-// could touch one of them before the step ends. The zone's velocities are then replaced by the
-// closest ones, in the kinetic-energy norm, under which no contact of the zone approaches
-// (math::ZoneProjector, Harmon, Vouga, Tamstorf and Grinspun 2008): contacts stop closing,
-// tangential motion is kept, and kinetic energy can only fall. Later contacts of a zone's
-// particles in the same step join the zone and it is solved again at their time.
+// events in this step: a resting pile, a ball wedged in a corner; or a contact that deepens
+// without closing), its particles join a zone at the current event time T, together with every
+// particle that could touch one of them before the step ends (transitively). Each contact of a
+// zone is a row n·(relative velocity) >= 0, and the zone's velocities become the closest ones,
+// in the kinetic-energy norm, that satisfy every row (Harmon, Vouga, Tamstorf and Grinspun 2008):
+// contacts stop closing, tangential motion is kept, kinetic energy can only fall. Later contacts
+// of a zone's particles in the same step add rows (and particles) and the zone is solved again at
+// their time. All zones of a step share one math::ContactProjector, whose worklist makes a solve
+// cost what the new rows disturb, not the size of the zone (a disk landing on a pile of
+// thousands).
 //
-// Last resort, after kMaxZoneProjections solves of one zone in a step (or at once with
-// failsafe="rigid", or when the projection does not converge): the zone moves rigidly, with its
-// centre-of-mass velocity and the angular velocity of its momentum (the M-orthogonal projection
-// onto rigid motions, so again no energy is gained), or stops if it holds a fixed particle or
-// touches a half-plane. Contacts inside a rigid zone are then exempt (the course's rule).
+// Last resort (a zone that keeps meeting its own contacts, or running out of its solve budget, more
+// than kMaxZoneProjections times in a step, or failsafe="rigid"): the zone moves
+// rigidly, with its centre-of-mass velocity and the angular velocity of its momentum (the
+// M-orthogonal projection onto rigid motions, so again no energy is gained), or stops if it holds
+// a fixed particle or touches a half-plane. Contacts inside a rigid zone are then exempt.
 #pragma once
 
 #include "pair_candidates.h"
 #include "step_motion.h"
 
 #include "fosssim/core/scene.h"
-#include "fosssim/core/status.h"
 #include "fosssim/core/step_stats.h"
-#include "fosssim/math/zone_projection.h"
+#include "fosssim/math/contact_projector.h"
 
+#include <unordered_map>
 #include <vector>
 
 namespace fosssim {
 
-/// Solves of one zone in one step without new contacts since the last solve, before it moves
-/// rigidly instead: a zone still meeting its own contacts after this many is a jam (a wedge, a
-/// column being crushed) that a rigid motion settles for the rest of the step. Solves for new
-/// contacts (newcomers landing on a pile) do not count: they are bounded by the pairs.
+/// Contacts of one zone met again in one step after it was solved for them, before it moves
+/// rigidly instead: a zone whose own contacts keep approaching after this many solves is a jam
+/// (a wedge, a column being crushed) that a rigid motion settles for the rest of the step.
 constexpr int kMaxZoneProjections = 8;
-/// All solves of one zone in one step, new contacts or not: bounds the cost of a zone that keeps
-/// meeting newcomers one at a time (each solve costs the whole zone).
-constexpr int kMaxZoneSolves = 64;
 
 /// The projection's tolerance, relative to the zone's largest speed: tighter than the solver's
 /// default, because what it leaves closing deepens the zone's slowest contacts over the rest of
 /// the step, and verification counts deepening beyond kDepthTolerance (1e-12) of the lengths.
-/// Gauss-Seidel converges linearly, so this costs about 30% more sweeps than 1e-10.
-constexpr double kZoneProjectionTolerance = 1e-13;
+constexpr double kZoneProjectionTolerance = 1e-10;
 
 /// Closing speeds inside one zone up to this fraction of the zone's largest rate are left over
 /// by its projection (kZoneProjectionTolerance times a row norm of at most sqrt(3)), so that a
 /// solved zone is not solved again for them.
-constexpr double kZoneClosingFraction = 2e-13;
+constexpr double kZoneClosingFraction = 2e-10;
+
+/// Gauss-Seidel updates one solve may spend per row it adds to the system (a zone's first solve
+/// adds all its rows; a disk landing on a pile, a few). A resting pile jammed into a V (whose
+/// answer is v = 0) contracts slowly under Gauss-Seidel; a solve that stops early keeps what it
+/// reached (safe: no energy gained) and the contacts still closing come back as events, which
+/// continue it from there: the cost follows what joins, not the size of the pile.
+constexpr long kZoneUpdatesPerRow = 2000;
 
 /// Extra reach, as a fraction of a pair's radius sum, within which two zone neighbours count as
 /// touching on top of the distance they could close in the rest of the step (absorbs rounding of
@@ -59,23 +64,33 @@ class ContactZones {
   void reset(int n);
 
   /// Puts pair `key` (met at time T) and every particle that could touch its particles in the
-  /// rest of the step (transitively) into one zone, whose contacts it records; returns the zone.
-  int absorb(const Scene& scene, const StepMotion& motion, const PairCandidates& candidates, uint64_t key, double T);
+  /// rest of the step (transitively) into one zone, with a row per contact; returns the zone, or
+  /// -1 when every particle of the pair is fixed. h: the step.
+  int absorb(const Scene& scene, const StepMotion& motion, const PairCandidates& candidates, uint64_t key, double T,
+             double h);
 
   /// Solves zone `zone` at time T, growing it while its new velocities bring more pairs near:
-  /// writes its particles' new rates into `motion`, their velocity changes into v (2N), and
-  /// appends the particles whose rate changed to `changed` (perhaps more than once).
-  void resolve(const Scene& scene, StepMotion& motion, PairCandidates& candidates, int zone, double T,
-               double h, VecX& v, std::vector<int>& changed, StepStats& stats);
+  /// writes its particles' new rates into `motion` (and the broad phase's boxes), their velocity
+  /// changes into v (2N), and appends the particles whose rate changed to `changed`.
+  void resolve(const Scene& scene, StepMotion& motion, PairCandidates& candidates, int zone, double T, double h,
+               VecX& v, std::vector<int>& changed, StepStats& stats);
 
   /// The zone of particle p, or -1.
   int zoneOf(int p) const { return parent_.empty() || parent_[p] < 0 ? -1 : root(p); }
-  bool isRigid(int zone) const { return rigid_[zone] != 0; }
+  bool isRigid(int zone) const { return rigid_[root(zone)] != 0; }
+  /// Whether particle p cannot move for the rest of the step: fixed, or in a rigid zone that
+  /// stopped (it holds a fixed particle or touches a half-plane). Particles outside its zone meet
+  /// it as an obstacle.
+  bool isImmobile(const Scene& scene, int p) const {
+    if (scene.isFixed(p)) return true;
+    const int z = zoneOf(p);
+    return z >= 0 && rigid_[z] && immovable_[z];
+  }
+  /// The largest rate (displacement per step) among the zone's particles: the scale of what
+  /// its projection leaves closing.
+  double rateScale(int zone) const { return rateScale_[root(zone)]; }
   /// Adds the zones (count, particles, largest, rigid ones) to the statistics.
   void sizes(StepStats& stats) const;
-  /// The largest rate (displacement per step) among the zone's particles after its last solve:
-  /// the scale of what its projection leaves closing (math::kProjectionTolerance of it).
-  double rateScale(int zone) const { return rateScale_[root(zone)]; }
   void setRigidOnly(bool rigid) { rigidOnly_ = rigid; }
 
  private:
@@ -83,40 +98,39 @@ class ContactZones {
     while (parent_[p] != p) p = parent_[p];
     return p;
   }
-  int join(int p);              ///< adds movable particle p to the zones (alone), returns its root
-  int unite(int a, int b);      ///< merges two zones, returns the new root
-  void addContact(int zone, uint64_t key);
-  int take(const Scene& scene, int p, int zone);  ///< movable p joins `zone` (or a new one)
-  int grow(const Scene& scene, const StepMotion& motion, const PairCandidates& candidates, int zone, double T);
-  size_t uniqueContacts(int zone);
-  void solve(const Scene& scene, StepMotion& motion, int zone, double T, double h, VecX& v,
-             std::vector<int>& changed, StepStats& stats);
-  bool near(const Scene& scene, const StepMotion& motion, uint64_t key, double T) const;
-  void project(const Scene& scene, const StepMotion& motion, int zone, double T, bool& converged);
-  /// Appends the contact's row with its normal at position(p); returns the normal (zero: none).
+  int join(int p);          ///< adds movable particle p to the zones (alone), returns its root
+  int unite(int a, int b);  ///< merges two zones, returns the new root
+  /// Movable p joins `zone` (or starts one); fixed p only enters the projector. Returns the zone.
+  int take(const Scene& scene, const StepMotion& motion, int p, int zone, double h);
+  /// Breadth-first from the particles in queue_: every pair that is near gets its rows, and its
+  /// particles join the zone. Returns the zone; `added` counts the new rows.
+  int grow(const Scene& scene, const StepMotion& motion, const PairCandidates& candidates, int zone, double T,
+           double h, int& added);
+  /// The contact's row (added, or replaced if it has one) with its normal at T, or where it
+  /// would overlap deepest if it deepens without closing; returns whether a row was added.
+  bool setRow(const Scene& scene, const StepMotion& motion, int zone, uint64_t key, double T);
+  /// The row of `key` with its particles at position(p), and its normal (zero: none).
   template <class Position>
-  Vec2 addRow(const Scene& scene, uint64_t key, Position&& position);
-  void moveRigidly(const Scene& scene, const StepMotion& motion, int zone, double T, double h);
+  math::ConstraintRow contactRow(const Scene& scene, uint64_t key, Position&& position, Vec2& normal) const;
+  bool near(const Scene& scene, const StepMotion& motion, uint64_t key, double T) const;
+  void moveRigidly(const Scene& scene, const StepMotion& motion, int zone, double T);
 
   bool rigidOnly_ = false;
   std::vector<int> parent_;                ///< N: union-find parent, -1 when in no zone
   std::vector<std::vector<int>> members_;  ///< per root: its particles
-  std::vector<std::vector<uint64_t>> contacts_;  ///< per root: its contacts' pair keys
-  std::vector<int> projections_;           ///< per root: solves without new contacts in this step
-  std::vector<int> solves_;                ///< per root: all solves in this step
-  std::vector<size_t> solvedContacts_;     ///< per root: contacts at its last solve
+  std::vector<int> projections_;           ///< per root: contacts met again after a solve
+  std::vector<int> solves_;                ///< per root: solves in this step
   std::vector<char> rigid_;                ///< per root: moving rigidly for the rest of the step
+  std::vector<char> immovable_;            ///< per root: a fixed particle or a half-plane among its rows
   std::vector<double> rateScale_;          ///< per root: see rateScale()
   std::vector<int> roots_;                 ///< every particle that has been a root this step
+  std::unordered_map<uint64_t, int> rowOf_;  ///< the projector's row of each pair with one this step
+  std::unordered_map<uint64_t, double> lastImpulse_;  ///< each contact's impulse at the end of the last step
   std::vector<int> queue_;
   std::vector<uint64_t> keys_;
-  // Projection scratch: bodies are the zone's particles, then fixed particles its contacts touch.
-  std::vector<int> slot_;                  ///< N: body index of a particle in the current solve, -1
-  std::vector<int> bodies_;
-  std::vector<double> inverseMass_;
-  std::vector<Vec2> velocity_;
-  std::vector<math::ConstraintRow> rows_;
-  math::ZoneProjector projector_;
+  std::vector<int> moved_;
+  math::ContactProjector projector_;       ///< every zone's rows and velocities of this step
+  int solvedRows_ = 0;                     ///< rows in the projector at its last solve
 };
 
 }  // namespace fosssim

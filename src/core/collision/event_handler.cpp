@@ -158,52 +158,53 @@ void EventHandler::respond(const Scene& scene, const Event& e, State& state, Ste
   }
 
   // A contact is inside one rigid zone (exempt) only if every particle of it moves with that zone:
-  // a half-plane or a fixed particle met by a rigid zone is an obstacle, which joins the zone.
+  // a half-plane or a fixed particle met by a rigid zone is an obstacle, which joins the zone. A
+  // particle of a zone that stopped for the rest of the step is an obstacle too, for particles
+  // outside it: they meet it as a fixed particle and do not join (so a disk landing on a pile at
+  // rest can still roll off it).
   const PairParticles pair = pairParticles(scene, e.key);
-  bool toZones = curving, sameRigidZone = keyKind(e.key) != PairKind::ParticleHalfPlane;
-  bool sameZone = true;
-  int zone = -2;
+  bool toZones = curving, sameRigidZone = keyKind(e.key) != PairKind::ParticleHalfPlane, sameZone = true;
+  int rigidZone = -2, zone = -2;  // -2: none seen yet
   for (int k = 0; k < pair.count; ++k) {
     const int p = pair.p[k];
-    if (scene.isFixed(p)) {
-      sameRigidZone = false;
-      continue;
-    }
     const int z = zones_.zoneOf(p);
+    sameRigidZone = sameRigidZone && z >= 0 && zones_.isRigid(z) && (rigidZone == -2 || rigidZone == z);
+    rigidZone = z;
+    if (scene.isFixed(p) || zones_.isImmobile(scene, p)) continue;
     toZones = toZones || z >= 0 || events_[p] >= eventsPerParticle_;
     sameZone = sameZone && z >= 0 && (zone == -2 || zone == z);
-    sameRigidZone = sameRigidZone && z >= 0 && zones_.isRigid(z) && (zone == -2 || zone == z);
     zone = z;
   }
-  if (zone == -2) return;  // every particle of the pair is fixed
+  if (sameRigidZone) return;  // rigid to first order inside: exempt
+  if (zone == -2) return;     // nothing of the pair can move
   // Inside one zone that its projection solved, closing speeds within the projection's tolerance
   // of the zone's speeds are what the solve leaves, not new approaches (solving again would
   // change nothing but the count that sends the zone to rigid motion).
   if (sameZone && !curving && closing <= kZoneClosingFraction * zones_.rateScale(zone)) return;
   if (toZones) {
-    // Inside one rigid zone, contacts are exempt (its motion is rigid to first order).
-    if (sameRigidZone) return;
     const StepTimer timer(ctx.timing, ctx.stats->failsafe);
-    const int z = zones_.absorb(scene, motion_, candidates_, e.key, e.t);
+    const int z = zones_.absorb(scene, motion_, candidates_, e.key, e.t, h);
     if (z >= 0) zones_.resolve(scene, motion_, candidates_, z, e.t, h, state.v, changed_, *ctx.stats);
     return;
   }
 
-  // One impulse against the current velocities (the paths' rates over h).
+  // One impulse against the current velocities (the paths' rates over h). A particle of a zone
+  // that stopped for the rest of the step is an obstacle, as a fixed particle is.
   const int i = keyParticle(e.key), other = keyOther(e.key);
   const auto v = [&](int p) -> Vec2 { return motion_.rate(p) / h; };
+  const auto w = [&](int p) { return zones_.isImmobile(scene, p) ? 0.0 : 1.0 / scene.massOf(p); };
   VelocityChange change;
   switch (keyKind(e.key)) {
     case PairKind::ParticleParticle:
-      change = particleParticleResponse(scene, i, other, e.normal, cor_, v(i), v(other));
+      change = particleParticleImpulse(w, i, other, e.normal, cor_, v(i), v(other));
       break;
     case PairKind::ParticleEdge: {
       const Edge& edge = scene.edges[other];
-      change = particleEdgeResponse(scene, i, edge, e.alpha, e.normal, cor_, v(i), v(edge.i), v(edge.j));
+      change = particleEdgeImpulse(w, i, edge, e.alpha, e.normal, cor_, v(i), v(edge.i), v(edge.j));
       break;
     }
     case PairKind::ParticleHalfPlane:
-      change = particleHalfPlaneResponse(scene, i, e.normal, cor_, v(i));
+      change = particleHalfPlaneImpulse(w(i), i, e.normal, cor_, v(i));
       break;
   }
   ++ctx.stats->collisions;

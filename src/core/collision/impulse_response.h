@@ -32,26 +32,28 @@ inline double inverseMass(const Scene& scene, int i) {
   return scene.isFixed(i) ? 0.0 : 1.0 / scene.massOf(i);
 }
 
-/// Particles i and j with velocities vi, vj, contact vector n from i to j.
-inline VelocityChange particleParticleResponse(const Scene& scene, int i, int j, const Vec2& n,
-                                               double cor, const Vec2& vi, const Vec2& vj) {
+/// Particles i and j with velocities vi, vj, contact vector n from i to j; w(p) is particle p's
+/// inverse mass (0: it does not move).
+template <class InverseMass>
+VelocityChange particleParticleImpulse(InverseMass&& w, int i, int j, const Vec2& n, double cor, const Vec2& vi,
+                                       const Vec2& vj) {
   VelocityChange out;
-  const double wi = inverseMass(scene, i), wj = inverseMass(scene, j), w = wi + wj;
-  if (w == 0.0) return out;
+  const double wi = w(i), wj = w(j), sum = wi + wj;
+  if (sum == 0.0) return out;
   const Vec2 nhat = normalize(n);
   const double N = (1.0 + cor) * (vj - vi).dot(nhat);
-  if (wi != 0.0) out.add(i, N * wi / w * nhat);
-  if (wj != 0.0) out.add(j, -N * wj / w * nhat);
+  if (wi != 0.0) out.add(i, N * wi / sum * nhat);
+  if (wj != 0.0) out.add(j, -N * wj / sum * nhat);
   return out;
 }
 
 /// Particle i (velocity v1) against edge e (endpoint velocities v2, v3) at parameter alpha in
-/// [0, 1], contact vector n from the particle to the edge.
-inline VelocityChange particleEdgeResponse(const Scene& scene, int i, const Edge& e, double alpha,
-                                           const Vec2& n, double cor, const Vec2& v1, const Vec2& v2,
-                                           const Vec2& v3) {
+/// [0, 1], contact vector n from the particle to the edge; w as above.
+template <class InverseMass>
+VelocityChange particleEdgeImpulse(InverseMass&& w, int i, const Edge& e, double alpha, const Vec2& n, double cor,
+                                   const Vec2& v1, const Vec2& v2, const Vec2& v3) {
   VelocityChange out;
-  const double w1 = inverseMass(scene, i), w2 = inverseMass(scene, e.i), w3 = inverseMass(scene, e.j);
+  const double w1 = w(i), w2 = w(e.i), w3 = w(e.j);
   const double a = alpha, b = 1.0 - alpha;
   const double W = w1 + b * b * w2 + a * a * w3;
   if (W == 0.0) return out;
@@ -63,14 +65,28 @@ inline VelocityChange particleEdgeResponse(const Scene& scene, int i, const Edge
   return out;
 }
 
-/// Particle i (velocity v1) against a half-plane, contact vector n toward the boundary.
-inline VelocityChange particleHalfPlaneResponse(const Scene& scene, int i, const Vec2& n, double cor,
-                                                const Vec2& v1) {
+/// Particle i (velocity v1, inverse mass w1) against a half-plane, contact vector n toward the
+/// boundary.
+inline VelocityChange particleHalfPlaneImpulse(double w1, int i, const Vec2& n, double cor, const Vec2& v1) {
   VelocityChange out;
-  if (scene.isFixed(i)) return out;
+  if (w1 == 0.0) return out;
   const Vec2 nhat = normalize(n);
   out.add(i, -(1.0 + cor) * v1.dot(nhat) * nhat);
   return out;
+}
+
+/// The same with the scene's masses (fixed particles do not move).
+inline VelocityChange particleParticleResponse(const Scene& scene, int i, int j, const Vec2& n, double cor,
+                                               const Vec2& vi, const Vec2& vj) {
+  return particleParticleImpulse([&](int p) { return inverseMass(scene, p); }, i, j, n, cor, vi, vj);
+}
+inline VelocityChange particleEdgeResponse(const Scene& scene, int i, const Edge& e, double alpha, const Vec2& n,
+                                           double cor, const Vec2& v1, const Vec2& v2, const Vec2& v3) {
+  return particleEdgeImpulse([&](int p) { return inverseMass(scene, p); }, i, e, alpha, n, cor, v1, v2, v3);
+}
+inline VelocityChange particleHalfPlaneResponse(const Scene& scene, int i, const Vec2& n, double cor,
+                                                const Vec2& v1) {
+  return particleHalfPlaneImpulse(inverseMass(scene, i), i, n, cor, v1);
 }
 
 }  // namespace fosssim

@@ -90,7 +90,7 @@ constexpr double kRestingClosingFraction = 1e-9;
 
 /// Overlap depths below this fraction of a pair's length scale (its coordinates and radii) are
 /// rounding. A pair counts as penetrating only when its overlap deepens by more than this.
-constexpr double kDepthTolerance = 1e-12;
+constexpr double kDepthTolerance = 1e-10;
 
 /// Overlap depth of pair `key` (positive: overlapping) with its particles at position(p).
 template <class Position>

@@ -1,0 +1,88 @@
+// The failsafe's projection grown one contact at a time: the same problem as ZoneProjector
+// (zone_projection.h: v* = argmin 1/2 (v - v~)^T M (v - v~) subject to G v >= 0), kept open while
+// rows keep arriving, and solved by Gauss-Seidel steps driven by a worklist instead of sweeps.
+//
+// Why a worklist: in a pile, the zone is the whole pile (thousands of bodies) and contacts join
+// it one or a few at a time (a disk landing on it). A sweep costs every row; the effect of a new
+// row, though, spreads only as far as its impulse changes velocities. The worklist holds the rows
+// whose bodies changed; a row whose residual (ZoneProjector's measure) is within the tolerance is
+// dropped without an update, and every update queues the other rows of the bodies it moved. The
+// fixed point is ZoneProjector's (every row within the tolerance), reached at a cost that follows
+// what moves, not the size of the zone.
+//
+// Rows added after a solve project the velocities that solve left, not the original v~: the
+// result is a sequence of projections onto shrinking cones through v = 0, so kinetic energy
+// still never grows (each projection is an M-orthogonal projection onto a cone containing 0) and
+// tangential motion is still kept, but it is not the single projection of v~ onto the final
+// cone. A batch (all rows, then one solve) is exactly that single projection.
+#ifndef FOSSSIM_MATH_CONTACT_PROJECTOR_H
+#define FOSSSIM_MATH_CONTACT_PROJECTOR_H
+
+#include <vector>
+
+#include "fosssim/math/zone_projection.h"
+
+namespace fosssim::math {
+
+class ContactProjector {
+ public:
+  /// Forgets every body and row; bodies are indices 0..capacity-1.
+  void reset(int capacity);
+
+  /// Puts body b into the system with inverse mass w (0: immovable) and velocity v; a body
+  /// already in it keeps its state.
+  void addBody(int b, double inverseMass, const Vec2& v);
+  bool hasBody(int b) const { return b < static_cast<int>(slot_.size()) && slot_[b] >= 0; }
+
+  /// Adds a row over bodies already in the system and queues it for the next solve; returns its
+  /// index. A positive `warmStart` (the contact's impulse of the last step) is applied at once
+  /// as its starting multiplier: resting contacts then start where they ended, which is what
+  /// makes Gauss-Seidel affordable on a pile at rest (from zero it needs O(depth^2) sweeps).
+  int addRow(const ConstraintRow& row, double warmStart = 0.0);
+  /// The multiplier (impulse) of row `index`.
+  double impulse(int index) const { return row_[index].lambda; }
+  /// Replaces row `index` (a contact's normal of a later time), its impulse so far kept applied
+  /// to the velocities and its multiplier restarted at 0; queues it.
+  void setRow(int index, const ConstraintRow& row);
+
+  /// Gauss-Seidel updates from the queued rows until every row it reaches is within `tolerance`
+  /// (ZoneProjector's residual, with V = speedScale), or `maxUpdates` updates: false then (the
+  /// velocities are still safe, see above, but some contact may approach).
+  bool solve(double speedScale, double tolerance, long maxUpdates);
+
+  const Vec2& velocity(int b) const { return body_[slot_[b]].v; }
+  /// Makes body b immovable from now on, at velocity v (the rigid fallback moves it instead).
+  void freeze(int b, const Vec2& v);
+  /// Appends the bodies whose velocity changed since the last call, each once.
+  void takeChanged(std::vector<int>& out);
+  int rows() const { return static_cast<int>(row_.size()); }
+
+ private:
+  struct Body {
+    int id = 0;
+    double inverseMass = 0;
+    Vec2 v = Vec2::Zero();
+    std::vector<int> rows;  ///< the rows it appears in
+    bool changed = false;
+  };
+  struct Row {
+    ConstraintRow r;        ///< bodies as slots into body_
+    double diag = 0;        ///< A_kk = G_k M^-1 G_k^T
+    double norm = 0;        ///< |G_k|
+    double lambda = 0;
+    bool queued = false;
+  };
+  void queue(int k);
+  void queueRowsOf(int slot, int except);
+
+  std::vector<int> slot_;     ///< per body id: index into body_, -1 when absent
+  std::vector<Body> body_;
+  std::vector<Row> row_;
+  std::vector<int> work_;     ///< FIFO of row indices (head_ marks the front)
+  size_t head_ = 0;
+  std::vector<int> changed_;  ///< body slots changed since the last takeChanged
+};
+
+}  // namespace fosssim::math
+
+#endif  // FOSSSIM_MATH_CONTACT_PROJECTOR_H

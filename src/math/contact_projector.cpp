@@ -1,0 +1,152 @@
+#include "fosssim/math/contact_projector.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fosssim::math {
+
+void ContactProjector::reset(int capacity) {
+  if (static_cast<int>(slot_.size()) != capacity) slot_.assign(capacity, -1);
+  for (const Body& b : body_) slot_[b.id] = -1;
+  body_.clear();
+  row_.clear();
+  work_.clear();
+  head_ = 0;
+  changed_.clear();
+}
+
+void ContactProjector::addBody(int b, double inverseMass, const Vec2& v) {
+  if (hasBody(b)) return;
+  slot_[b] = static_cast<int>(body_.size());
+  Body body;
+  body.id = b;
+  body.inverseMass = inverseMass;
+  body.v = v;
+  body_.push_back(std::move(body));
+}
+
+int ContactProjector::addRow(const ConstraintRow& row, double warmStart) {
+  row_.emplace_back();
+  const int index = static_cast<int>(row_.size()) - 1;
+  setRow(index, row);
+  if (warmStart > 0.0) {
+    Row& k = row_[index];
+    k.lambda = warmStart;
+    for (int m = 0; m < k.r.count; ++m) {
+      Body& b = body_[k.r.body[m]];
+      if (b.inverseMass == 0.0) continue;
+      b.v += b.inverseMass * warmStart * k.r.coef[m];
+      if (!b.changed) b.changed = true, changed_.push_back(k.r.body[m]);
+    }
+    for (int m = 0; m < k.r.count; ++m) queueRowsOf(k.r.body[m], -1);
+  }
+  return index;
+}
+
+// The row's bodies' lists name it once; a replaced row keeps its bodies' lists and adds itself
+// to those of new bodies (a stale entry only queues a row needlessly). Its impulse so far stays
+// applied to the velocities; lambda restarts at 0, so the row can only push further along its new
+// normal: every later update is again a projection onto a half-space through v = 0.
+void ContactProjector::setRow(int index, const ConstraintRow& row) {
+  Row& k = row_[index];
+  k.r = row;
+  k.diag = 0;
+  k.lambda = 0;
+  double normSquared = 0;
+  for (int m = 0; m < row.count; ++m) {
+    const int s = slot_[row.body[m]];
+    k.r.body[m] = s;
+    normSquared += row.coef[m].squaredNorm();
+  }
+  // A_kk = sum over the row's distinct bodies of w_b |sum of that body's coefficients|^2 (a body
+  // named twice acts as one: its coefficients add).
+  for (int m = 0; m < row.count; ++m) {
+    bool first = true;
+    for (int q = 0; q < m; ++q) first = first && k.r.body[q] != k.r.body[m];
+    if (!first) continue;
+    Vec2 c = Vec2::Zero();
+    for (int q = m; q < row.count; ++q)
+      if (k.r.body[q] == k.r.body[m]) c += row.coef[q];
+    k.diag += body_[k.r.body[m]].inverseMass * c.squaredNorm();
+  }
+  k.norm = std::sqrt(normSquared);
+  for (int m = 0; m < row.count; ++m) {
+    std::vector<int>& rows = body_[k.r.body[m]].rows;
+    if (std::find(rows.begin(), rows.end(), index) == rows.end()) rows.push_back(index);
+  }
+  queue(index);
+}
+
+void ContactProjector::queue(int k) {
+  if (row_[k].queued) return;
+  row_[k].queued = true;
+  work_.push_back(k);
+}
+
+void ContactProjector::queueRowsOf(int slot, int except) {
+  for (int k : body_[slot].rows)
+    if (k != except) queue(k);
+}
+
+// One Gauss-Seidel step on row k (ZoneProjector's, in velocity form): w = G_k v, then
+// lambda' = max(0, lambda - w / A_kk) and v_b += w_b coef_b (lambda' - lambda). Its residual
+// |min(A_kk lambda, w)| / (|G_k| V) is zero exactly when the row is satisfied and complementary.
+bool ContactProjector::solve(double speedScale, double tolerance, long maxUpdates) {
+  long updates = 0;
+  while (head_ < work_.size()) {
+    const int k = work_[head_++];
+    Row& row = row_[k];
+    row.queued = false;
+    double w = 0;
+    for (int m = 0; m < row.r.count; ++m) w += row.r.coef[m].dot(body_[row.r.body[m]].v);
+    const double threshold = tolerance * row.norm * speedScale;
+    if (row.diag <= 0.0) continue;  // every body immovable: nothing to move (a violation stays)
+    if (std::fabs(std::fmin(row.diag * row.lambda, w)) <= threshold) continue;
+    if (++updates > maxUpdates) {
+      work_.clear();
+      head_ = 0;
+      for (Row& r : row_) r.queued = false;
+      return false;
+    }
+    const double lambda = std::fmax(0.0, row.lambda - w / row.diag);
+    const double delta = lambda - row.lambda;
+    row.lambda = lambda;
+    for (int m = 0; m < row.r.count; ++m) {
+      Body& b = body_[row.r.body[m]];
+      if (b.inverseMass == 0.0) continue;
+      b.v += b.inverseMass * delta * row.r.coef[m];
+      if (!b.changed) b.changed = true, changed_.push_back(row.r.body[m]);
+    }
+    for (int m = 0; m < row.r.count; ++m)
+      if (body_[row.r.body[m]].inverseMass != 0.0) queueRowsOf(row.r.body[m], k);
+  }
+  work_.clear();
+  head_ = 0;
+  return true;
+}
+
+void ContactProjector::freeze(int b, const Vec2& v) {
+  Body& body = body_[slot_[b]];
+  body.inverseMass = 0.0;
+  for (int k : body.rows) {  // the row no longer moves this body: A_kk loses its share
+    Row& row = row_[k];
+    row.diag = 0;
+    for (int m = 0; m < row.r.count; ++m) {
+      const Body& o = body_[row.r.body[m]];
+      row.diag += o.inverseMass * row.r.coef[m].squaredNorm();
+    }
+  }
+  if (body.v == v) return;
+  body.v = v;
+  if (!body.changed) body.changed = true, changed_.push_back(slot_[b]);
+}
+
+void ContactProjector::takeChanged(std::vector<int>& out) {
+  for (int s : changed_) {
+    body_[s].changed = false;
+    out.push_back(body_[s].id);
+  }
+  changed_.clear();
+}
+
+}  // namespace fosssim::math
