@@ -1,0 +1,299 @@
+// The failsafe's worklist Gauss-Seidel (ContactProjector) against its promises: a batch solve is
+// the single projection (checked against the active-set enumeration), incremental solves never
+// add energy and end feasible, warm starts from the last impulses make a resting pile cheap,
+// frozen bodies stay put, and a spent budget is reported without gaining energy.
+#include "fosssim/math/contact_projector.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+#include <numeric>
+#include <random>
+#include <set>
+#include <vector>
+
+namespace fosssim::math {
+namespace {
+
+struct Zone {  // v~ per body, body 0 usually fixed at rest
+  std::vector<double> invMass;
+  std::vector<ConstraintRow> rows;
+  std::vector<Vec2> v;
+};
+
+Vec2 unit(double angle) { return Vec2(std::cos(angle), std::sin(angle)); }
+ConstraintRow makeRow(std::initializer_list<int> bodies, std::initializer_list<Vec2> coefs) {
+  ConstraintRow r;
+  for (int b : bodies) r.body[r.count++] = b;
+  std::copy(coefs.begin(), coefs.end(), r.coef);
+  return r;
+}
+ConstraintRow halfPlaneRow(int p, const Vec2& n) { return makeRow({p}, {n}); }
+ConstraintRow pairRow(int i, int j, const Vec2& n) { return makeRow({i, j}, {-n, n}); }  // n from i to j
+ConstraintRow edgeRow(int p, int a, int b, double alpha, const Vec2& n) {
+  return makeRow({p, a, b}, {n, -(1.0 - alpha) * n, -alpha * n});
+}
+
+// zone_projection_test's generator: 2-5 bodies, body 0 fixed at rest (unless freeOnly: then every
+// body is free and only pair/edge rows, whose coefficients sum to zero, so momentum is kept).
+Zone randomZone(std::mt19937& rng, bool freeOnly = false) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0), angle(0.0, 6.283185307179586);
+  std::uniform_real_distribution<double> logMass(std::log(0.1), std::log(10.0));
+  Zone z;
+  const int bodies = std::uniform_int_distribution<int>(freeOnly ? 3 : 2, 5)(rng);
+  const int rows = std::uniform_int_distribution<int>(1, 10)(rng);
+  for (int b = 0; b < bodies; ++b) {
+    const bool fixed = b == 0 && !freeOnly;
+    z.invMass.push_back(fixed ? 0.0 : 1.0 / std::exp(logMass(rng)));
+    z.v.push_back(fixed ? Vec2::Zero() : Vec2(u(rng), u(rng)));
+  }
+  std::vector<int> ids(bodies);
+  std::iota(ids.begin(), ids.end(), 0);
+  for (int k = 0; k < rows; ++k) {
+    std::shuffle(ids.begin(), ids.end(), rng);
+    const int count = std::uniform_int_distribution<int>(freeOnly ? 2 : 1, std::min(3, bodies))(rng);
+    const Vec2 n = unit(angle(rng));
+    if (count == 1) z.rows.push_back(halfPlaneRow(ids[0], n));
+    if (count == 2) z.rows.push_back(pairRow(ids[0], ids[1], n));
+    if (count == 3) z.rows.push_back(edgeRow(ids[0], ids[1], ids[2], 0.5 * (u(rng) + 1.0), n));
+  }
+  return z;
+}
+
+double rowVelocity(const ConstraintRow& r, const std::vector<Vec2>& v) {
+  double w = 0.0, n2 = 0.0;
+  for (int j = 0; j < r.count; ++j) w += r.coef[j].dot(v[r.body[j]]), n2 += r.coef[j].squaredNorm();
+  return w / std::sqrt(n2);  // per unit |G_k|
+}
+double speedScale(const std::vector<Vec2>& v) {
+  return std::accumulate(v.begin(), v.end(), 0.0, [](double s, const Vec2& x) { return std::max(s, x.norm()); });
+}
+double kineticEnergy(const std::vector<double>& invMass, const std::vector<Vec2>& v) {
+  double e = 0.0;
+  for (size_t b = 0; b < v.size(); ++b) e += invMass[b] > 0.0 ? 0.5 / invMass[b] * v[b].squaredNorm() : 0.0;
+  return e;
+}
+Vec2 momentum(const std::vector<double>& invMass, const std::vector<Vec2>& v) {  // free bodies only
+  Vec2 p = Vec2::Zero();
+  for (size_t b = 0; b < v.size(); ++b) p += v[b] / invMass[b];
+  return p;
+}
+
+constexpr double kTol = 1e-12;
+constexpr long kLargeBudget = 2000000;
+
+void addBodies(ContactProjector& cp, const Zone& z) {
+  cp.reset(static_cast<int>(z.v.size()));
+  for (size_t b = 0; b < z.v.size(); ++b) cp.addBody(static_cast<int>(b), z.invMass[b], z.v[b]);
+}
+std::vector<Vec2> velocities(const ContactProjector& cp, size_t bodies) {
+  std::vector<Vec2> v;
+  for (size_t b = 0; b < bodies; ++b) v.push_back(cp.velocity(static_cast<int>(b)));
+  return v;
+}
+
+// Random over-constrained zones can jam (v* = 0 with nearly dependent normals), where Gauss-Seidel
+// contracts slowly and may spend even a large budget (ZoneProjection allows ~2% of them). Those
+// must return false and still not add energy; all others must equal the single projection.
+TEST(ContactProjector, BatchSolveEqualsTheActiveSetProjection) {
+  std::mt19937 rng(20240601);
+  ContactProjector cp;
+  const int zones = 400;
+  int unconverged = 0;
+  for (int trial = 0; trial < zones; ++trial) {
+    const Zone z = randomZone(rng);
+    addBodies(cp, z);
+    for (const ConstraintRow& r : z.rows) cp.addRow(r);
+    const double scale = speedScale(z.v);
+    const bool ok = cp.solve(scale, kTol, kLargeBudget);
+    const std::vector<Vec2> v = velocities(cp, z.v.size());
+    EXPECT_LE(kineticEnergy(z.invMass, v), kineticEnergy(z.invMass, z.v) * (1 + 1e-13)) << "trial " << trial;
+    EXPECT_EQ(v[0], z.v[0]);
+    unconverged += !ok;
+    if (!ok) continue;
+    std::vector<Vec2> ref = z.v;
+    ASSERT_TRUE(projectByEnumeration(z.invMass, z.rows, ref)) << "trial " << trial;
+    for (size_t b = 0; b < z.v.size(); ++b)
+      EXPECT_LE((v[b] - ref[b]).norm(), 1e-7 * scale) << "trial " << trial << " body " << b;
+  }
+  EXPECT_LE(unconverged, zones / 20);
+}
+
+// Rows arriving in batches, each followed by a solve: a sequence of projections onto shrinking
+// cones through 0, so energy is monotone; a converged last solve leaves every row satisfied
+// (rows not revisited kept their bodies' velocities since they were last within tolerance).
+TEST(ContactProjector, IncrementalSolvesStayFeasibleLoseEnergyAndKeepMomentum) {
+  std::mt19937 rng(424242);
+  ContactProjector cp;
+  int unconverged = 0, trials = 0;
+  for (const bool freeOnly : {false, true})
+    for (int trial = 0; trial < 300; ++trial, ++trials) {
+      const Zone z = randomZone(rng, freeOnly);
+      addBodies(cp, z);
+      const double scale = speedScale(z.v);
+      double energy = kineticEnergy(z.invMass, z.v), mass = 0.0;
+      for (double w : z.invMass) mass += w > 0.0 ? 1.0 / w : 0.0;
+      bool allOk = true;
+      for (size_t next = 0; next < z.rows.size();) {
+        const size_t batch = std::uniform_int_distribution<size_t>(1, z.rows.size() - next)(rng);
+        for (size_t k = 0; k < batch; ++k) cp.addRow(z.rows[next++]);
+        allOk = cp.solve(scale, kTol, kLargeBudget) && allOk;
+        const std::vector<Vec2> v = velocities(cp, z.v.size());
+        const double e = kineticEnergy(z.invMass, v);
+        EXPECT_LE(e, energy * (1 + 1e-13)) << "trial " << trial << " after row " << next;
+        energy = e;
+        if (!freeOnly) continue;  // fixed body or one-body rows: momentum is not kept
+        EXPECT_LE((momentum(z.invMass, v) - momentum(z.invMass, z.v)).norm(), 1e-12 * mass * scale) << trial;
+      }
+      unconverged += !allOk;
+      if (!allOk) continue;
+      const std::vector<Vec2> v = velocities(cp, z.v.size());
+      for (size_t k = 0; k < z.rows.size(); ++k)
+        EXPECT_GE(rowVelocity(z.rows[k], v), -2 * kTol * scale)
+            << "trial " << trial << " row " << k << " freeOnly " << freeOnly;
+    }
+  EXPECT_LE(unconverged, trials / 20);
+}
+
+// A column of disks resting on a floor: each step gravity gives v~ = -g h, and the rows (floor,
+// neighbours) must take it all back. From zero impulses the correction travels up and down the
+// chain (O(n^2) updates); warm-started with the last impulses the column is already at rest.
+TEST(ContactProjector, WarmStartFromTheLastImpulsesSettlesARestingColumnAtOnce) {
+  const int disks = 20;
+  const double gh = 9.81 / 60.0;
+  const Vec2 up(0.0, 1.0);
+  std::mt19937 rng(3);
+  Zone z;
+  for (int i = 0; i < disks; ++i) {
+    z.invMass.push_back(1.0 / std::uniform_real_distribution<double>(0.5, 2.0)(rng));
+    z.v.push_back(-gh * up);
+  }
+  z.rows.push_back(halfPlaneRow(0, up));
+  for (int i = 0; i + 1 < disks; ++i) z.rows.push_back(pairRow(i, i + 1, up));
+  const long small = 4L * static_cast<long>(z.rows.size());
+  ContactProjector cold;
+  addBodies(cold, z);
+  for (const ConstraintRow& r : z.rows) cold.addRow(r);
+  EXPECT_FALSE(cold.solve(gh, kTol, small));  // cold: the small budget is not enough
+  addBodies(cold, z);
+  for (const ConstraintRow& r : z.rows) cold.addRow(r);
+  ASSERT_TRUE(cold.solve(gh, kTol, kLargeBudget));
+  for (int i = 0; i < disks; ++i) EXPECT_LE(cold.velocity(i).norm(), 1e-9 * gh) << "disk " << i;
+  // Closed form: row k carries the weight-step of every disk above it (disk k and up; row 0 is the floor).
+  double above = 0.0;
+  for (int k = disks - 1; k >= 0; --k) {
+    above += gh / z.invMass[k];
+    EXPECT_NEAR(cold.impulse(k), above, 1e-8 * above) << "row " << k;
+  }
+  ContactProjector warm;
+  addBodies(warm, z);
+  for (int k = 0; k < cold.rows(); ++k) warm.addRow(z.rows[k], cold.impulse(k));
+  EXPECT_TRUE(warm.solve(gh, kTol, small));
+  for (int i = 0; i < disks; ++i) EXPECT_LE((warm.velocity(i) - cold.velocity(i)).norm(), 1e-9 * gh) << "disk " << i;
+}
+
+void expectChangedOnce(ContactProjector& cp, const std::vector<Vec2>& before, int trial) {
+  std::vector<int> changed;
+  cp.takeChanged(changed);
+  const std::set<int> listed(changed.begin(), changed.end());
+  EXPECT_EQ(listed.size(), changed.size()) << "trial " << trial << ": a body listed twice";
+  for (size_t b = 0; b < before.size(); ++b) {
+    if (cp.velocity(static_cast<int>(b)) == before[b]) continue;
+    EXPECT_TRUE(listed.count(static_cast<int>(b))) << "trial " << trial << " body " << b << " changed, unlisted";
+  }
+}
+
+// Freezing body b at u before the solve is the projection with b fixed at u (the enumeration
+// sees inverse mass 0 there); later rows and solves never move it. A moving frozen body can make
+// the zone infeasible, where Gauss-Seidel only spends its budget: a smaller one keeps this fast.
+constexpr long kFrozenBudget = 100000;
+TEST(ContactProjector, FrozenBodiesKeepTheirVelocityAndChangesAreListedOnce) {
+  std::mt19937 rng(777);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  ContactProjector cp;
+  int compared = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    Zone z = randomZone(rng);
+    const int b = std::uniform_int_distribution<int>(1, static_cast<int>(z.v.size()) - 1)(rng);
+    const Vec2 frozen(u(rng), u(rng));
+    addBodies(cp, z);
+    for (const ConstraintRow& r : z.rows) cp.addRow(r);
+    cp.freeze(b, frozen);
+    const double scale = std::max(speedScale(z.v), frozen.norm());
+    const bool ok = cp.solve(scale, kTol, kFrozenBudget);
+    expectChangedOnce(cp, z.v, trial);
+    EXPECT_EQ(cp.velocity(b), frozen);
+    z.invMass[b] = 0.0;
+    z.v[b] = frozen;
+    std::vector<Vec2> ref = z.v;
+    if (ok && projectByEnumeration(z.invMass, z.rows, ref)) {  // infeasible when fixed bodies approach
+      ++compared;
+      for (size_t c = 0; c < z.v.size(); ++c)
+        EXPECT_LE((cp.velocity(static_cast<int>(c)) - ref[c]).norm(), 1e-7 * scale) << "trial " << trial;
+    }
+    // More rows on the frozen body, solved: it does not move, others are listed once if moved.
+    const std::vector<Vec2> before = velocities(cp, z.v.size());
+    const Zone more = randomZone(rng);
+    for (ConstraintRow r : more.rows) {
+      r.body[0] = b;
+      for (int m = 1; m < r.count; ++m) r.body[m] = (b + m) % static_cast<int>(z.v.size());
+      cp.addRow(r);
+    }
+    cp.solve(scale, kTol, kFrozenBudget);
+    EXPECT_EQ(cp.velocity(b), frozen) << "trial " << trial;
+    expectChangedOnce(cp, before, trial);
+  }
+  EXPECT_GE(compared, 120);  // 152 of 300 here; others infeasible or out of budget
+}
+
+// A row may name a body twice (an edge whose ends are one particle acts as a pair contact); after
+// freezing the row's other body it must still stop the approach exactly like the pair row does.
+TEST(ContactProjector, FreezeKeepsARowThatNamesABodyTwiceExact) {
+  const Vec2 n = unit(0.8);
+  for (const double alpha : {0.5, 0.2}) {
+    ContactProjector asEdge, asPair;  // the same contact written both ways
+    for (ContactProjector* cp : {&asEdge, &asPair}) {
+      cp->reset(2);
+      cp->addBody(0, 1.0, n);  // moving toward body 1 along n
+      cp->addBody(1, 1.0, Vec2::Zero());
+      cp->addRow(cp == &asEdge ? edgeRow(1, 0, 0, alpha, n) : pairRow(0, 1, n));
+      cp->freeze(1, Vec2::Zero());
+      EXPECT_TRUE(cp->solve(1.0, kTol, 100));
+    }
+    EXPECT_LE(asPair.velocity(0).norm(), 1e-14);
+    EXPECT_LE((asEdge.velocity(0) - asPair.velocity(0)).norm(), 1e-12)
+        << "alpha " << alpha << ": edge row gives (" << asEdge.velocity(0).transpose() << ")";
+  }
+}
+
+// A disk driven into the tip of a narrow V (v* = 0, walls 2e-3 rad apart) contracts by about
+// cos^2(2a) per pair of updates: a small budget runs out, says so, and has only removed energy.
+TEST(ContactProjector, SpentBudgetIsReportedAndAddsNoEnergy) {
+  const double a = 1e-3;  // half-angle of the V
+  const Vec2 v0(0.3, -1.0), n1(std::cos(a), std::sin(a)), n2(-std::cos(a), std::sin(a));
+  for (const long budget : {0L, 1L, 2L, 5L, 50L, 1000L}) {
+    ContactProjector cp;
+    cp.reset(1);
+    cp.addBody(0, 1.0, v0);
+    for (const Vec2& n : {n1, n2}) cp.addRow(halfPlaneRow(0, n));
+    EXPECT_FALSE(cp.solve(v0.norm(), kTol, budget)) << "budget " << budget;
+    EXPECT_LE(cp.velocity(0).norm(), v0.norm() * (1 + 1e-15)) << "budget " << budget;
+  }
+  std::mt19937 rng(99);  // random zones stopped after 0-4 updates: never more energy
+  for (int trial = 0; trial < 200; ++trial) {
+    const Zone z = randomZone(rng);
+    for (long budget = 0; budget <= 4; ++budget) {
+      ContactProjector cp;
+      addBodies(cp, z);
+      for (const ConstraintRow& r : z.rows) cp.addRow(r);
+      cp.solve(speedScale(z.v), kTol, budget);
+      EXPECT_LE(kineticEnergy(z.invMass, velocities(cp, z.v.size())), kineticEnergy(z.invMass, z.v) * (1 + 1e-14))
+          << "trial " << trial << " budget " << budget;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace fosssim::math
