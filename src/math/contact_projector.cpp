@@ -58,17 +58,7 @@ void ContactProjector::setRow(int index, const ConstraintRow& row) {
     k.r.body[m] = s;
     normSquared += row.coef[m].squaredNorm();
   }
-  // A_kk = sum over the row's distinct bodies of w_b |sum of that body's coefficients|^2 (a body
-  // named twice acts as one: its coefficients add).
-  for (int m = 0; m < row.count; ++m) {
-    bool first = true;
-    for (int q = 0; q < m; ++q) first = first && k.r.body[q] != k.r.body[m];
-    if (!first) continue;
-    Vec2 c = Vec2::Zero();
-    for (int q = m; q < row.count; ++q)
-      if (k.r.body[q] == k.r.body[m]) c += row.coef[q];
-    k.diag += body_[k.r.body[m]].inverseMass * c.squaredNorm();
-  }
+  k.diag = diagonal(k.r);
   k.norm = std::sqrt(normSquared);
   for (int m = 0; m < row.count; ++m) {
     std::vector<int>& rows = body_[k.r.body[m]].rows;
@@ -125,17 +115,26 @@ bool ContactProjector::solve(double speedScale, double tolerance, long maxUpdate
   return true;
 }
 
+// A_kk = sum over the row's distinct bodies of w_b |sum of that body's coefficients|^2 (a body
+// named twice acts as one: its coefficients add). Slots, not ids.
+double ContactProjector::diagonal(const ConstraintRow& r) const {
+  double diag = 0;
+  for (int m = 0; m < r.count; ++m) {
+    bool first = true;
+    for (int q = 0; q < m; ++q) first = first && r.body[q] != r.body[m];
+    if (!first) continue;
+    Vec2 c = Vec2::Zero();
+    for (int q = m; q < r.count; ++q)
+      if (r.body[q] == r.body[m]) c += r.coef[q];
+    diag += body_[r.body[m]].inverseMass * c.squaredNorm();
+  }
+  return diag;
+}
+
 void ContactProjector::freeze(int b, const Vec2& v) {
   Body& body = body_[slot_[b]];
   body.inverseMass = 0.0;
-  for (int k : body.rows) {  // the row no longer moves this body: A_kk loses its share
-    Row& row = row_[k];
-    row.diag = 0;
-    for (int m = 0; m < row.r.count; ++m) {
-      const Body& o = body_[row.r.body[m]];
-      row.diag += o.inverseMass * row.r.coef[m].squaredNorm();
-    }
-  }
+  for (int k : body.rows) row_[k].diag = diagonal(row_[k].r);  // the body no longer takes a share
   if (body.v == v) return;
   body.v = v;
   if (!body.changed) body.changed = true, changed_.push_back(slot_[b]);

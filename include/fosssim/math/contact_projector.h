@@ -73,6 +73,7 @@ class ContactProjector {
     bool queued = false;
   };
   void queue(int k);
+  double diagonal(const ConstraintRow& r) const;  ///< A_kk of a row whose bodies are slots
   void queueRowsOf(int slot, int except);
 
   std::vector<int> slot_;     ///< per body id: index into body_, -1 when absent

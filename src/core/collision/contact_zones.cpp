@@ -27,9 +27,10 @@ void ContactZones::reset(int n) {
     rigid_.assign(n, 0);
     immovable_.assign(n, 0);
     rateScale_.assign(n, 0.0);
+    stopped_.assign(n, 0);
   } else {
     for (int r : roots_) {
-      for (int p : members_[r]) parent_[p] = -1;
+      for (int p : members_[r]) parent_[p] = -1, stopped_[p] = 0;
       members_[r].clear();
     }
   }
@@ -137,7 +138,15 @@ int ContactZones::absorb(const Scene& scene, const StepMotion& motion, const Pai
   if (zone < 0) return -1;  // every particle of the pair is fixed
   // A contact that already has rows and approaches again is met again: a jam if it repeats. Its
   // fresh rows (normals of now) join the old ones.
-  if (rowOf_.count(key)) ++projections_[root(zone)];
+  if (rowOf_.count(key) && ++projections_[root(zone)] > kMaxZoneProjections && immovable_[root(zone)] && !rigidOnly_) {
+    // A jam against an obstacle: the contact keeps closing although it was solved for again and
+    // again. Its particles stop for the rest of the step (obstacles from now on), not the zone.
+    for (int k = 0; k < pair.count; ++k)
+      if (!isImmobile(scene, pair.p[k])) {
+        stopped_[pair.p[k]] = 1;
+        projector_.freeze(pair.p[k], Vec2::Zero());
+      }
+  }
   setRow(scene, motion, zone, key, T);
   int added = 0;
   return grow(scene, motion, candidates, zone, T, h, added);
@@ -171,7 +180,7 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
                            double h, VecX& v, std::vector<int>& changed, StepStats& stats) {
   for (;;) {
     zone = root(zone);
-    if (!rigid_[zone] && !rigidOnly_ && projections_[zone] <= kMaxZoneProjections) {
+    if (!rigid_[zone] && !rigidOnly_ && (immovable_[zone] || projections_[zone] <= kMaxZoneProjections)) {
       ++stats.failsafeRounds;
       // A solve that runs out of its budget leaves safe velocities (no energy gained) that may
       // still let some contact close: that contact comes back as an event, counted as met again.

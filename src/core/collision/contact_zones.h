@@ -12,11 +12,14 @@
 // cost what the new rows disturb, not the size of the zone (a disk landing on a pile of
 // thousands).
 //
-// Last resort (a zone that keeps meeting its own contacts, or running out of its solve budget, more
-// than kMaxZoneProjections times in a step, or failsafe="rigid"): the zone moves
-// rigidly, with its centre-of-mass velocity and the angular velocity of its momentum (the
-// M-orthogonal projection onto rigid motions, so again no energy is gained), or stops if it holds
-// a fixed particle or touches a half-plane. Contacts inside a rigid zone are then exempt.
+// Last resort, when a contact keeps closing although its zone was solved for it again and again
+// (more than kMaxZoneProjections times in a step: Gauss-Seidel stalls on a pile jammed against a
+// wall): if the zone touches an obstacle (a fixed particle, a half-plane), the particles of that
+// contact stop for the rest of the step and become obstacles themselves, while the rest of the
+// zone goes on; a zone touching nothing moves rigidly instead, with its centre-of-mass velocity
+// and the angular velocity of its momentum (the M-orthogonal projection onto rigid motions, so no
+// energy is gained and momentum is kept). failsafe="rigid" makes every zone rigid at once, and a
+// rigid zone touching an obstacle stops. Contacts inside a rigid zone are exempt.
 #pragma once
 
 #include "pair_candidates.h"
@@ -82,7 +85,7 @@ class ContactZones {
   /// stopped (it holds a fixed particle or touches a half-plane). Particles outside its zone meet
   /// it as an obstacle.
   bool isImmobile(const Scene& scene, int p) const {
-    if (scene.isFixed(p)) return true;
+    if (scene.isFixed(p) || (!stopped_.empty() && stopped_[p])) return true;
     const int z = zoneOf(p);
     return z >= 0 && rigid_[z] && immovable_[z];
   }
@@ -123,6 +126,7 @@ class ContactZones {
   std::vector<char> rigid_;                ///< per root: moving rigidly for the rest of the step
   std::vector<char> immovable_;            ///< per root: a fixed particle or a half-plane among its rows
   std::vector<double> rateScale_;          ///< per root: see rateScale()
+  std::vector<char> stopped_;              ///< N: stopped for the rest of the step (a jam's particles)
   std::vector<int> roots_;                 ///< every particle that has been a root this step
   std::unordered_map<uint64_t, int> rowOf_;  ///< the projector's row of each pair with one this step
   std::unordered_map<uint64_t, double> lastImpulse_;  ///< each contact's impulse at the end of the last step
