@@ -1,5 +1,7 @@
 #include "fosssim/math/ccd_exact.h"
 
+#include "staged_solve.h"
+
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -81,36 +83,6 @@ void setRelative(Polynomial* out, std::initializer_list<double> coeffs) {
   out->assign(c + first, n - first);
 }
 
-// firstPositiveTime with early exits, as StagedSolve in ccd.cpp: polynomials are added as
-// they are built; the first one that is never positive in [0, 1] ends the query.
-class Staged {
- public:
-  bool add(const Polynomial& p) {
-    polys_[count_] = &p;
-    known_[count_] = !positiveJustAfterZero(p);
-    if (known_[count_]) {
-      allPositiveAtZero_ = false;
-      sets_[count_] = positiveSet(p, 1.0);
-      if (sets_[count_].empty()) return false;
-    }
-    ++count_;
-    return true;
-  }
-  double finish() {
-    if (allPositiveAtZero_) return 0.0;
-    for (int i = 0; i < count_; ++i)
-      if (!known_[i]) sets_[i] = positiveSet(*polys_[i], 1.0);
-    return firstCommonTime(sets_, count_, 1.0);
-  }
-
- private:
-  const Polynomial* polys_[4];
-  PositiveSet sets_[4];
-  bool known_[4];
-  int count_ = 0;
-  bool allPositiveAtZero_ = true;
-};
-
 // Where a disk pair overlaps and approaches, as a PositiveSet (the solver's right-neighbourhood
 // sense). The other centre is at x + t D relative to particle 1 (all normalised), radius sum R.
 // The conditions are those of ppPosition and ppApproach, R^2 - |x + tD|^2 > 0 and
@@ -165,7 +137,7 @@ struct Products {
 // Interior of the capsule: alpha in (0, 1), distance to the line below R, approaching it.
 // The reference's four conditions with the exact quintic (derivations in ccd.cpp).
 double interiorTime(const Products& k, const Polynomial& belowOne, double R) {
-  Staged solve;
+  StagedSolve solve;
   Polynomial aboveZero;  // w.e > 0
   setRelative(&aboveZero, {k.h, k.g, k.f});
   if (!solve.add(aboveZero)) return kNever;

@@ -53,10 +53,7 @@ Status EventHandler::handle(const Scene& scene, const State& start, State& state
     if (stale(scene, e)) continue;
     if (++processed > budget) return Status::error("contact events do not settle (internal error: budget exceeded)");
     changed_.clear();
-    {
-      const StepTimer timer(ctx.timing, ctx.stats->response);
-      respond(scene, e, state, ctx);
-    }
+    respond(scene, e, state, ctx);  // times itself: response, or failsafe for the zones
     if (Status s = detectChanged(scene, e.t, ctx); !s) return s;
   }
   // Finish: the end of every particle's last piece.
@@ -190,6 +187,7 @@ void EventHandler::respond(const Scene& scene, const Event& e, State& state, Ste
 
   // One impulse against the current velocities (the paths' rates over h). A particle of a zone
   // that stopped for the rest of the step is an obstacle, as a fixed particle is.
+  const StepTimer timer(ctx.timing, ctx.stats->response);
   const int i = keyParticle(e.key), other = keyOther(e.key);
   const auto v = [&](int p) -> Vec2 { return motion_.rate(p) / h; };
   const auto w = [&](int p) { return zones_.isImmobile(scene, p) ? 0.0 : 1.0 / scene.massOf(p); };
