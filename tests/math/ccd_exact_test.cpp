@@ -367,29 +367,19 @@ TEST(ExactCcdScale, NonFiniteGivesOverflow) {
   const PPInput pp{{0.0, 0.0}, {1.0, 0.0}, 0.5, {2.0, 0.0}, {0.0, 0.0}, 0.5};
   const PEInput pe{{0.5, 1.0}, {0.0, -1.0}, 0.1, {0.0, 0.0}, {0.0, 0.0}, {1.0, 0.0}, {0.0, 0.0}, 0.1};
   const PHInput ph{{0.0, 1.0}, {0.0, -1.0}, 0.1, {0.0, 0.0}, {0.0, 1.0}};
-  for (double bad : {kNaN, kInf, -kInf}) {
-    PPInput a = pp;
-    a.x1.x() = bad;
-    EXPECT_EQ(exactPP(a, nullptr), CcdOutcome::Overflow);
-    a = pp, a.d2.y() = bad;
-    EXPECT_EQ(exactPP(a, nullptr), CcdOutcome::Overflow);
-    a = pp, a.r2 = bad;
-    EXPECT_EQ(exactPP(a, nullptr), CcdOutcome::Overflow);
-    PEInput b = pe;
-    b.x3.y() = bad;
-    EXPECT_EQ(exactPE(b, nullptr), CcdOutcome::Overflow);
-    b = pe, b.d1.x() = bad;
-    EXPECT_EQ(exactPE(b, nullptr), CcdOutcome::Overflow);
-    b = pe, b.re = bad;
-    EXPECT_EQ(exactPE(b, nullptr), CcdOutcome::Overflow);
-    PHInput h = ph;
-    h.m.x() = bad;
-    EXPECT_EQ(exactPH(h, nullptr), CcdOutcome::Overflow);
-    h = ph, h.p.y() = bad;
-    EXPECT_EQ(exactPH(h, nullptr), CcdOutcome::Overflow);
-    h = ph, h.d1.y() = bad;
-    EXPECT_EQ(exactPH(h, nullptr), CcdOutcome::Overflow);
-  }
+  for (double bad : {kNaN, kInf, -kInf})
+    for (int field = 0; field < 3; ++field) {  // one input field of each query made non-finite
+      PPInput a = pp;
+      PEInput b = pe;
+      PHInput h = ph;
+      double* const aField[] = {&a.x1.x(), &a.d2.y(), &a.r2};
+      double* const bField[] = {&b.x3.y(), &b.d1.x(), &b.re};
+      double* const hField[] = {&h.m.x(), &h.p.y(), &h.d1.y()};
+      *aField[field] = *bField[field] = *hField[field] = bad;
+      EXPECT_EQ(exactPP(a, nullptr), CcdOutcome::Overflow) << "field " << field << " = " << bad;
+      EXPECT_EQ(exactPE(b, nullptr), CcdOutcome::Overflow) << "field " << field << " = " << bad;
+      EXPECT_EQ(exactPH(h, nullptr), CcdOutcome::Overflow) << "field " << field << " = " << bad;
+    }
   // Finite inputs whose difference overflows, and a normal that cannot be normalised.
   EXPECT_EQ(exactPP({{-1.5e308, 0.0}, {0.0, 0.0}, 0.5, {1.5e308, 0.0}, {0.0, 0.0}, 0.5}, nullptr),
             CcdOutcome::Overflow);
