@@ -56,6 +56,8 @@ struct Figures {
   double candidates = 0, queries = 0, collisions = 0, passes = 0, rounds = 0;  ///< summed over the run
   long failsafeSteps = 0;
   int largestZone = 0;
+  double zoneParticles = 0;  ///< particles in failsafe zones at the ends of steps, summed over the run
+  long rigidSteps = 0;       ///< steps in which some zone moved rigidly (or stopped)
   double bytesPerParticle = 0;  ///< peak resident memory grown while building and running
   double growthBytes = 0;       ///< resident memory grown from a tenth into the first run to its end
   bool ok = false;
@@ -136,6 +138,8 @@ Figures runScene(const Options& o, const std::string& kind, int n) {
       into.rounds += st.failsafeRounds;
       into.failsafeSteps += st.failsafeUsed;
       into.largestZone = std::max(into.largestZone, st.largestZone);
+      into.zoneParticles += st.zoneParticles;
+      into.rigidSteps += st.rigidZones > 0;
     }
     into.total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return true;
@@ -237,9 +241,9 @@ int main(int argc, char** argv) {
   if (o.stepTable) {
     std::printf("ms per step by phase (%s handling, %d thread%s%s%s; fastest of the repeated runs)\n", o.collision.c_str(),
                 o.threads, o.threads == 1 ? "" : "s", o.allPairs ? ", all pairs" : "", o.compat ? ", --compat" : "");
-    std::printf("%-8s %7s %6s %9s %7s %7s %7s %7s %8s %8s | %9s %9s %6s %5s %6s %6s %7s %6s\n", "scene", "N", "steps",
-                "integrate", "broad", "narrow", "respond", "failsafe", "other", "total", "cand/step", "coll/step",
-                "passes", "fs%", "rounds", "zone", "B/part", "grow/p");
+    std::printf("%-8s %7s %6s %9s %7s %7s %7s %7s %8s %8s | %9s %9s %6s %5s %6s %6s %6s %5s %7s %6s\n", "scene", "N",
+                "steps", "integrate", "broad", "narrow", "respond", "failsafe", "other", "total", "cand/step",
+                "coll/step", "passes", "fs%", "rounds", "zone", "inzn%", "rgd%", "B/part", "grow/p");
     for (const std::string& kind : o.scenes) {
       for (int n : o.sizes) {
         const Figures f = inChild(o, kind, n);
@@ -250,11 +254,13 @@ int main(int argc, char** argv) {
         const double per = 1000.0 / static_cast<double>(f.steps);
         const double other = f.total - f.integrate - f.broad - f.narrow - f.response - f.failsafe;
         const double steps = static_cast<double>(f.steps);
-        std::printf("%-8s %7d %6ld %9.3f %7.3f %7.3f %7.3f %8.3f %8.3f %8.3f | %9.0f %9.1f %6.2f %5.1f %6.1f %6d %7.0f %6.1f\n",
+        std::printf("%-8s %7d %6ld %9.3f %7.3f %7.3f %7.3f %8.3f %8.3f %8.3f | %9.0f %9.1f %6.2f %5.1f %6.1f %6d %6.1f "
+                    "%5.1f %7.0f %6.1f\n",
                     kind.c_str(), f.particles, f.steps, f.integrate * per, f.broad * per, f.narrow * per,
                     f.response * per, f.failsafe * per, other * per, f.total * per, f.candidates / steps,
                     f.collisions / steps, f.passes / steps, 100.0 * static_cast<double>(f.failsafeSteps) / steps,
                     f.failsafeSteps ? f.rounds / static_cast<double>(f.failsafeSteps) : 0.0, f.largestZone,
+                    100.0 * f.zoneParticles / (steps * f.particles), 100.0 * static_cast<double>(f.rigidSteps) / steps,
                     f.bytesPerParticle, f.growthBytes / f.particles);
         std::fflush(stdout);
         if (csv) {

@@ -22,8 +22,8 @@ struct StepStats {
   int failsafeRounds = 0;    ///< hybrid: rigid moves of the failsafe (each followed by a detection)
   int zones = 0;             ///< hybrid: impact zones at the end of the failsafe
   int largestZone = 0;       ///< hybrid: particles in the largest zone
-  int zoneParticles = 0;     ///< default mode: particles in failsafe zones at the end of the step
-  int rigidZones = 0;        ///< default mode: zones that fell back to rigid motion
+  int zoneParticles = 0;     ///< particles in failsafe zones at the end of the step
+  int rigidZones = 0;        ///< zones that moved rigidly (or stopped): all of --compat's, the default mode's last resort
 
   void clear() { *this = StepStats{}; }
 };

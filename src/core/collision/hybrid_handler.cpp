@@ -31,6 +31,8 @@ Status HybridHandler::handle(const Scene& scene, const State& start, State& stat
     failsafe(scene, start, state, ctx, replaced);
     ctx.stats->failsafeUsed = true;
     zones_.sizes(ctx.stats->zones, ctx.stats->largestZone);
+    ctx.stats->zoneParticles = static_cast<int>(zones_.members().size());
+    ctx.stats->rigidZones = ctx.stats->zones;  // the course's zones are all rigid
   }
   return Status::ok();
 }
