@@ -147,8 +147,10 @@ def facts(data_dir, rep):
         f["slot_shots"] = int(sd_rows[0]["shots"])
         f["slot_default_escaped"] = " and ".join(str(int(r["escaped"])) for r in sd_rows) \
             if sd_rows[0]["escaped"] != sd_rows[1]["escaped"] else str(int(sd_rows[0]["escaped"]))
-        f["slot_loss_ct"] = pct(1 - sd_rows[0]["energy_end"])
-        f["slot_loss_hybrid"] = pct(1 - sd_rows[1]["energy_end"])
+        loss = [1 - r["energy_end"] for r in sd_rows]
+        f["slot_loss"] = (f"which removes {pct(loss[0])} (continuous-time) and {pct(loss[1])} (hybrid) of the kinetic "
+                          "energy that COR 1 would keep: the price of never tunnelling" if min(loss) > 1e-9 else
+                          f"which kept the kinetic energy to {fmt(max(abs(x) for x in loss), 1)}")
         f["slot_zones"] = f"{pct(sd_rows[0]['zone_fraction_max'])} and {pct(sd_rows[1]['zone_fraction_max'])}"
         per_step = max(r["contacts"] for r in series if r["problem"] == "slot" and r["mode"] == "default")
         f["slot_contacts"] = fmt(per_step / sd_rows[0]["shots"], 3)
@@ -176,8 +178,11 @@ def facts(data_dir, rep):
         f["pile_disks"] = int(d["particles"])
         f["pile_zone_mean"] = " and ".join(pct(r["zone_fraction_mean"]) for r in pdr)
         f["pile_zone_max"] = " and ".join(pct(r["zone_fraction_max"]) for r in pdr)
-        f["pile_rigid"] = " and ".join(f"{int(r['rigid_zone_steps'])}" for r in pdr)
         f["pile_steps"] = int(d["steps"])
+        f["pile_rigid"] = ("no zone had to fall back to rigid motion in any of the "
+                           f"{int(d['steps'])} steps" if all(r["rigid_zone_steps"] == 0 for r in pdr) else
+                           "a zone fell back to rigid motion (it touched nothing) in " +
+                           " and ".join(f"{int(r['rigid_zone_steps'])}" for r in pdr) + f" of the {int(d['steps'])} steps")
         f["pile_default_height"] = " and ".join(fmt(r["height_end"], 3) for r in pdr)
         f["pile_lattice"] = fmt(d["height_packed"], 3)
         f["pile_frozen_height"] = fmt(d["height_frozen"], 3)

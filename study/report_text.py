@@ -1,7 +1,9 @@
 """The words of docs/study.md around the generated tables and charts (report.py fills them in).
 
-What is said here was read off the charts of this study on the project's machine; the tables
-report.py puts between the paragraphs carry the numbers of the latest run.
+Every number in the prose is a placeholder that report.py (and report_contacts.py) fill from this
+run's CSV files, and every sentence whose truth depends on a measurement (exact or not, bounced
+or not, settled or frozen, gained or not) is chosen there by the measured outcome; what stays
+literal here is the set-up of each experiment and the physics behind it.
 """
 
 STABILITY_THEORY = {
@@ -11,6 +13,30 @@ STABILITY_THEORY = {
     "implicit-euler": "stable for every dt: \\|1/(1 − iω dt)\\| < 1",
     "linearized-implicit-euler": "stable for every dt (the same as implicit Euler on a linear spring)",
 }
+
+MODES = """\
+## The default mode and --compat
+
+Sections 1 to 5 run the default mode, the one every scene gets without `--compat`; section 6 runs
+the multi-contact problems in both. Without `--compat`, `continuous-time` and `hybrid` handle
+contacts as README.md ("Contacts in the default mode") promises, and this run measured:
+
+- **Time order.** Within a step, contacts are resolved one at a time in the order they happen,
+  each with one impulse against the current velocities, and the particles fly on from the contact
+  time: {promise_order}
+- **No energy gained with COR ≤ 1.** Impulses that meet at one instant are applied one after
+  another, never summed from stale velocities, and the failsafe (inelastic projection of a zone's
+  velocities) can only take energy away: {promise_energy}
+- **No tunnelling.** Every candidate pair is queried over the whole step, again after every
+  impulse: {promise_tunnel}
+- **Momentum and angular momentum** change only by impulses along the line through the contact:
+  {promise_momentum}
+- **Capsules and units.** Edges are capsules at their ends too, and a scene's collisions do not
+  depend on its units; the study does not measure these (`tests/core/` does, README.md says how).
+
+**What `--compat` keeps**: the course's formulation, bit for bit (the trajectories the course's
+grader compares), flaws included. Section 6 measures them: {compat_measured}
+"""
 
 # The billiard-break bullets, chosen by report.py from the data: whether the hybrid without its
 # penalty layer (k = 0) still gains energy tells the course's summed impulses (the --compat
@@ -46,8 +72,9 @@ CONTACTS_INTRO = """\
 ## 6. Multi-contact problems: the default mode next to --compat
 
 Six scenes where several contacts meet in one step, each run with the default mode (contacts in
-time order, sequential impulses, the inelastic-projection failsafe with rigid zones as the last
-resort) and with `--compat` (the course's formulation: impulses of a pass summed, continuous-time
+time order, sequential impulses, the inelastic-projection failsafe; as its last resort a contact
+still closing after its zone was solved again and again stops its own particles for the rest of
+the step, and a zone touching nothing moves rigidly) and with `--compat` (the course's formulation: impulses of a pass summed, continuous-time
 in one pass, rigid impact zones that freeze against walls), for `continuous-time` and `hybrid`
 (the hybrid without its penalty layer, k = 0, so that only contact handling differs). Symplectic
 Euler throughout. The charts show energy (kinetic plus gravity's potential, over its start),
@@ -84,13 +111,12 @@ CONTACTS_WORDS = """\
   {slot_shots} shots, with up to {slot_contacts} contacts per step and shot (the busiest step,
   averaged over the shots). The contacts past a
   particle's quota of impulse events go to the inelastic failsafe (at most {slot_zones} of the
-  disks in zones), which removes {slot_loss_ct} (continuous-time) and {slot_loss_hybrid} (hybrid)
-  of the kinetic energy that COR 1 would keep: the price of never tunnelling. `--compat`'s
+  disks in zones), {slot_loss}. `--compat`'s
   continuous-time lets {slot_compat_ct} through; its hybrid {slot_compat_hybrid}.
 - **Newton's cradle**: {cradle_words}
 - **Pile in a V** ({pile_disks} disks): in the default mode {pile_zone_mean} of the disks are in
-  failsafe zones on average (continuous-time, hybrid; at most {pile_zone_max}), and the rigid last
-  resort ran in {pile_rigid} of the {pile_steps} steps. {pile_flows}: its mean height ends at
+  failsafe zones on average (continuous-time, hybrid; at most {pile_zone_max}), and
+  {pile_rigid}. {pile_flows}: its mean height ends at
   {pile_default_height} m, against {pile_lattice} m for the lattice filling of the V and
   {pile_frozen_height} m for the column stopped at its first contact (packing
   {pile_default_packing}; {pile_default_flow}). `--compat`'s hybrid {pile_compat_hybrid}; its
@@ -124,11 +150,13 @@ METHODS = """\
 - **Integrators** (accuracy and stability): explicit Euler, symplectic Euler, implicit Euler
   (Newton's method until the update is below 1e-9, at most 100 iterations) and linearized implicit
   Euler (one Newton step), as in the scene format.
-- **Collision methods** (with symplectic Euler; free flight is exact for every integrator):
-  `simple` (discrete, at the end of the step), `continuous-time` (every pair along its motion in
-  the step, one pass), `hybrid` with its defaults (maxiters 10 impulse passes, then rigid impact
-  zones, plus a penalty layer k = 10, thickness 0.1), `hybrid k=0` (the same without the penalty
-  layer's strength), and `penalty` at k = 1e2 (the default), 1e4 and 1e6 (thickness 0.01).
+- **Collision methods** (with symplectic Euler, in the default mode): `simple` (discrete, at the
+  end of the step), `continuous-time` (contacts in time order within the step, one impulse each;
+  a particle that has used up its quota of impulse events in a step hands its contacts to the
+  failsafe's impact zones), `hybrid` with its defaults (the same with a quota of maxiters = 10
+  events per particle, plus a penalty layer k = 10, thickness 0.1), `hybrid k=0` (the same
+  without the penalty layer's strength), and `penalty` at k = 1e2 (the default), 1e4 and 1e6
+  (thickness 0.01).
 - **Unstable** means: the simulator reported a non-finite state (its error names the step and the
   particle), an implicit solve failed, or the mechanical energy moved by more than **1e6 times** its
   starting scale (max of |E0|, kinetic and |potential|). A run is stopped there and reported, never
@@ -175,16 +203,8 @@ ACCURACY_WORDS = """\
   100 iterations near the close approach and the simulator reports it. Linearized implicit Euler runs
   on at those steps and returns nonsense (separation errors of tens to hundreds of metres, energy
   gains of thousands of times), without any sign of trouble.
-- **Collisions**: first order at best, and `continuous-time` is no more than a few times more
-  accurate than `simple` where `simple` does not miss the contact (on the floor bounces they are
-  equal): the continuous-time response moves a particle as if its new velocity had held for the
-  whole step (the reference's rule: "a velocity change Δv also moves the
-  position by h·Δv"), so finding the exact contact time does not buy accuracy in position. What it
-  buys is never missing a contact (chart 3) and no overlap at step ends.
-- **The hybrid handler's default penalty layer (k = 10, thickness 0.1) is an error of its own**:
-  it pushes disks apart before they touch, so on the two disks, the COR 0.5 bounce and the cradle
-  the hybrid's error stops shrinking with dt (order ≈ 0). With k = 0 the hybrid is as accurate as
-  continuous-time on every problem but one:
+{collision_words}
+{layer_words}
 {billiard_words}
 - **Penalty ignores COR** (it is a conservative spring: every floor bounce is elastic) and a soft
   one lets disks through: at k = 1e2 (the default) the falling disk passes through the floor and the
@@ -210,35 +230,31 @@ choice when the step cannot be made small, at the price of heavy numerical dampi
 ROBUSTNESS_WORDS = """\
 ### What it says
 
-- **`simple` tunnels** as soon as one step carries the disk across the contact band (speed·dt
-  above about 0.06 m, the disk's plus the edge's diameter): the red triangle above the dashed line.
-  It never got stuck with COR 1.
-- **`continuous-time` and `hybrid` bounced in every cell**, up to 1000 m/s at dt = 0.1 s (a step of
-  100 m against a 0.03 m edge).
+- **`simple` tunnels** as soon as one step carries the disk across the contact band (the first
+  miss at speed·dt = {simple_band} m; the band is the disk's plus the edge's diameter, 0.06 m): the
+  red triangle above the dashed line. {simple_stuck}
+- {ccd_robust}
 - **`penalty` tunnels whenever the disk is fast enough to compress the penalty spring by the
   thickness plus the radii**: by energy balance (second chart) the compression is v·√(m/k), so it
   goes through above v = (r_disk + r_edge + thickness)·√(k/m) = 0.4, 4 and 40 m/s for k = 1e2,
-  1e4, 1e6, whatever the step; a large step only makes it worse (it skips the spring), and k = 1e6
-  with dt of 0.05 s and more is unstable outright for slow disks. A disk that does bounce sinks in by v·√(m/k) − thickness,
-  up to the whole radii sum just below the tunnelling speed.
+  1e4, 1e6, whatever the step; a large step only makes it worse (it skips the spring){penalty_unstable}.
+  A disk that does bounce sinks in by v·√(m/k) − thickness, up to the whole radii sum just below
+  the tunnelling speed.
+"""
+
+HYBRID_INTRO = """\
+{box_disks} disks dropped into a box (three half-planes) under gravity, COR 0.5, dt = {box_dt} s,
+for maxiters from {box_lo} to {box_hi}, and the other methods on the same pile for comparison. "In
+a zone" counts the disks the failsafe moved (the study compares each step's end with the
+handler's mid-step state); zone counts are the handler's own StepStats.
 """
 
 HYBRID_WORDS = """\
 ### What it says
 
-On a settling pile the impulse passes almost never resolve everything: with the default
-maxiters = 10 the failsafe runs in {pile_failsafe} of the steps, and a failsafe step puts
-{pile_zone} disks in impact zones on average. More passes buy little until about 50, and each pass is another all-pairs
-continuous-time detection, so the cost grows with maxiters: the narrow phase dominates from
-maxiters 10 on, the failsafe below that. The hybrid handler is the only method that keeps the pile
-free of overlap at every step end; `simple` and `continuous-time` let disks sink into each other by
-more than a radius (the pile's mean height drops below a packed pile's), while the hybrid costs
-{pile_hybrid_over_simple} times as much per step as `simple` and {pile_hybrid_over_ct} times as much as
-`continuous-time`. Every zone in the pile touches the floor or a wall, and such a zone is held still (positions
-kept, velocities set to 0), so the hybrid pile does not settle: it freezes where it stands (its
-kinetic energy at the end is zero or nearly, its mean height stays near the packed value). Penalty
-k = 1e4 is the cheap compromise here (shallow overlaps, some jitter); k = 1e2 lets the pile fall
-through the floor and k = 1e6 explodes at this dt.
+{pile_maxiters_words}
+
+{pile_outcome_words} {pile_penalty_words}
 """
 
 PROFILE_WORDS = """\
@@ -255,7 +271,7 @@ work that the handler does not itemise, such as all of `simple`'s).
   {implicit_cost} times more on the same scene**, almost all of it in assembling and solving the
   linear system (once for linearized implicit Euler, once per Newton iteration for implicit Euler).
 {detection_words} `continuous-time` costs {ct_over_simple} times what `simple` does on the
-  billiard break; on the pile the hybrid costs {pile_hybrid_over_simple} times `simple`.
+  billiard break; on the pile the hybrid costs {pile_hybrid_over_simple} times `simple`{pile_profile_words}.
 - The penalty force is {penalty_share} of a penalty scene's step (billiard break, pile).
 """
 
@@ -267,16 +283,11 @@ PICK = """\
   and angular momentum. Take implicit Euler only when the stiffness forces a step above that
   limit, and expect it to damp the motion and to cost {implicit_cost} times more per step.
 - **Never explicit Euler** for anything that oscillates or orbits: it is never stable.
-- **Fast objects or thin obstacles**: continuous-time (or hybrid). `simple` misses contacts once
-  speed·dt exceeds the thinnest contact band; penalty lets anything through above
-  (radii + thickness)·√(k/m).
-- **Dense contact (piles, stacks)**: hybrid is the only method without interpenetration, at
-  {pile_hybrid_over_ct} times the cost of continuous-time and {pile_hybrid_over_simple} times
-  simple's; expect frozen piles against fixed walls and floors, and energy gains
-  on simultaneous impacts. Keep maxiters at the default or lower: more passes cost more and rarely
-  avoid the failsafe.
+{fast_pick}
+- **Dense contact (piles, stacks)**: {dense_pick}
 - **Billiards-like scenes (many separate two-body impacts)**: `simple` with a small step, or
-  `continuous-time` when the step is large or objects fast: both keep momentum and energy.
+  `continuous-time` when the step is large or objects fast: {billiards_keep}.
+{compat_pick_line}
 - **Penalty**: only with a stiffness chosen for the fastest impact (v < (radii + thickness)·√(k/m))
   and a step below 2·√(m/k); it ignores COR.
 """
@@ -284,11 +295,7 @@ PICK = """\
 ODDITIES = """\
 ## Things in the simulator that look wrong or cost more than they should
 
-{billiard_oddity}- The hybrid's default penalty layer (thickness 0.1, as thick as a typical radius) acts on
-  neighbours that are not touching, and keeps the hybrid's error from shrinking with dt.
-- Zones touching a half-plane or a fixed particle are frozen (positions kept, velocity 0: the
-  reference's rule), so piles on a floor stop moving instead of settling.
-- Implicit Euler fails on the orbit {orbit_failure}: Newton does not converge in 100
+{billiard_oddity}{layer_oddity}{compat_oddity}- Implicit Euler fails on the orbit {orbit_failure}: Newton does not converge in 100
   iterations. Linearized implicit Euler returns large errors there, silently.
 {oddity_broad}{oddity_stats}"""
 
@@ -300,6 +307,7 @@ def document(sections, facts, elapsed):
                 "command, build included, prints its own total). ")
     parts = [
         INTRO.format(elapsed=when),
+        MODES.format(**facts),
         METHODS,
         PROBLEMS,
         "## 1. Accuracy against cost\n\nOne chart per problem: the error (log) against the wall time per "
@@ -321,11 +329,7 @@ def document(sections, facts, elapsed):
         "deep the penalty methods let it sink.",
         sections["robustness"],
         ROBUSTNESS_WORDS.format(**facts),
-        "## 4. The hybrid handler's cost on a dense pile\n\nForty disks dropped into a box (three "
-        "half-planes) under gravity, COR 0.5, dt = 0.002 s, for maxiters from 0 to 100, and the other "
-        "methods on the same pile for comparison. \"In a zone\" counts the disks the failsafe moved (the "
-        "study compares each step's end with the handler's mid-step state); zone counts and passes are "
-        "the handler's own StepStats.",
+        "## 4. The hybrid handler's cost on a dense pile\n\n" + HYBRID_INTRO.format(**facts),
         sections["hybrid"],
         HYBRID_WORDS.format(**facts),
         "## 5. Where the time goes, per scene",
