@@ -104,6 +104,31 @@ TEST(Cli, AnEnergyBlowUpStopsTheRunWithExitOne) {
   std::filesystem::remove(scene);
 }
 
+// Finite coordinates at +-9e307 (their difference overflows) used to crash every collision
+// handler in the broad phase (SIGSEGV). Now: no crash in either mode; the default mode's exact
+// query names the pair it cannot represent and exits 1, --compat's reference query finds the
+// overflowing polynomials never positive (no collision, as the course's) and finishes.
+TEST(Cli, HugeFiniteCoordinatesDoNotCrashAnyHandler) {
+  const std::string scene =
+      std::filesystem::temp_directory_path() / ("fosssim-cli-huge-" + std::to_string(getpid()) + ".xml");
+  for (const char* type : {"simple", "continuous-time", "hybrid", "penalty"}) {
+    std::ofstream(scene) << "<scene><duration time=\"0.02\"/><integrator type=\"symplectic-euler\" dt=\"0.01\"/>"
+                            "<collision type=\"" << type << "\"/>"
+                            "<particle m=\"1\" px=\"9e307\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>"
+                            "<particle m=\"1\" px=\"-9e307\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>"
+                            "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/></scene>\n";
+    for (const char* mode : {"", "--compat"}) {
+      std::vector<std::string> args = {"-s", scene, "-d", "0", "-q"};
+      if (*mode) args.push_back(mode);
+      const Outcome o = runFosssim(args);
+      const bool exact = !*mode && (std::string(type) == "continuous-time" || std::string(type) == "hybrid");
+      EXPECT_TRUE(exitedWith(o, exact ? 1 : 0)) << type << " " << mode << "\n" << o;
+      if (exact) EXPECT_TRUE(contains(o.err, "particle-particle pair (particle 0, particle 1) cannot be tested")) << o;
+    }
+  }
+  std::filesystem::remove(scene);
+}
+
 /// tests/data/bad/EXPECTED: file, then fragments of the message, tab-separated.
 std::map<std::string, std::vector<std::string>> expectations() {
   std::map<std::string, std::vector<std::string>> table;

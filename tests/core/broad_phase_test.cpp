@@ -360,5 +360,24 @@ TEST(BroadPhase, NonFiniteStatesCheckEveryPair) {
   EXPECT_EQ(row.size(), 26u);  // particles 4..29
 }
 
+// Finite but huge coordinates (+-9e307: their difference overflows) or radii make no grid either
+// (the issue: the cell arithmetic overflowed, NaN was cast to int, SIGSEGV): every pair is a
+// candidate, as for a non-finite state; and a whole step with every handler runs without a crash.
+TEST(BroadPhase, CoordinatesBeyondTheGridCheckEveryPair) {
+  std::mt19937 rng(18);
+  for (const double huge : {9e307, -9e307, 1e301}) {
+    Motion m = randomMotion(rng, 30, 0.0);
+    m.qs[4] = m.qe[4] = huge;
+    PairCandidates candidates;
+    candidates.build(m.scene, m.qs, m.qe);
+    EXPECT_TRUE(candidates.allPairs()) << huge;
+  }
+  Motion m = randomMotion(rng, 30, 0.0);
+  m.scene.radius[7] = 1e305;
+  PairCandidates candidates;
+  candidates.build(m.scene, m.qs, m.qe);
+  EXPECT_TRUE(candidates.allPairs());
+}
+
 }  // namespace
 }  // namespace fosssim

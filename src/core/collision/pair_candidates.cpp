@@ -21,11 +21,18 @@ bool contains(const Box& outer, const Box& inner) {
   return outer.x0 <= inner.x0 && outer.y0 <= inner.y0 && inner.x1 <= outer.x1 && inner.y1 <= outer.y1;
 }
 
-bool finiteRadii(const Scene& scene) {
+/// Coordinates and radii beyond this magnitude make no grid: the difference of two coordinates, a
+/// box's extent or a cell index could overflow (two particles at +-9e307 are 1.8e308 apart, which
+/// is infinite). Such a scene is treated as a non-finite one: every pair is a candidate, and the
+/// narrow phase decides (or reports the pair it cannot represent). 1e300 leaves room for the
+/// margins and for thousands of cells.
+constexpr double kLargestGridCoordinate = 1e300;
+
+bool gridRadii(const Scene& scene) {
   for (double r : scene.radius)
-    if (!std::isfinite(r)) return false;
+    if (!(std::fabs(r) <= kLargestGridCoordinate)) return false;
   for (const Edge& e : scene.edges)
-    if (!std::isfinite(e.radius)) return false;
+    if (!(std::fabs(e.radius) <= kLargestGridCoordinate)) return false;
   return true;
 }
 
@@ -62,7 +69,7 @@ void PairCandidates::build(const Scene& scene, const VecX& qs, const VecX& qe, d
   qe_ = &qe;
   extra_ = extra;
   scale_ = coordinateScale(scene, qs, qe);
-  allPairs_ = !std::isfinite(scale_) || !std::isfinite(extra) || !finiteRadii(scene);
+  allPairs_ = !(scale_ <= kLargestGridCoordinate) || !(std::fabs(extra) <= kLargestGridCoordinate) || !gridRadii(scene);
   staleParticles_.clear();
   staleEdges_.clear();
   if (allPairs_) return;
