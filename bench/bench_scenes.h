@@ -1,8 +1,8 @@
 // Scalable benchmark scenes, built in memory (for the benchmark) or written as scene files (for
 // the command line, via fosssim-scenegen). Every scene uses hybrid handling unless asked
 // otherwise; sizes are particle counts.
-//   rain     disks r = 0.05 on a 2.5r grid, at rest, falling into a V of two half-planes and
-//            forming a dense pile (the geometry of the Box2D comparison in the README)
+//   rain     disks r = 0.05 on a jittered 2.5r grid, at rest, falling into a V of two half-planes and
+//            forming a dense pile
 //   gas      disks with random velocities in a closed box, no gravity, elastic (a sparse gas:
 //            10% of the area covered)
 //   chains   chains of 10 particles joined by capsule edges and damped springs, falling in rows
