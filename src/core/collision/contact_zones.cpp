@@ -201,11 +201,14 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
       if (scene.isFixed(p)) continue;
       const Vec2 velocity = projector_.velocity(p), rate = h * velocity;
       if (rate == motion.rate(p)) continue;
+      const double change = (rate - motion.rate(p)).norm();
       at(v, p) += velocity - motion.rate(p) / h;
       motion.setRate(p, T, rate);
       candidates.update(p);  // its box must cover the new motion before neighbours are sought
       changed.push_back(p);
-      queue_.push_back(p);
+      // Only a real change of motion can bring new pairs near; the tails of Gauss-Seidel
+      // ripple through a whole pile and would make every solve re-examine all of it.
+      if (change > kRegrowFraction * rateScale_[root(p)]) queue_.push_back(p);
       const int r = root(p);
       rateScale_[r] = std::max(rateScale_[r], rate.norm());
     }
