@@ -29,17 +29,7 @@ int ContactProjector::addRow(const ConstraintRow& row, double warmStart) {
   row_.emplace_back();
   const int index = static_cast<int>(row_.size()) - 1;
   setRow(index, row);
-  if (warmStart > 0.0) {
-    Row& k = row_[index];
-    k.lambda = warmStart;
-    for (int m = 0; m < k.r.count; ++m) {
-      Body& b = body_[k.r.body[m]];
-      if (b.inverseMass == 0.0) continue;
-      b.v += b.inverseMass * warmStart * k.r.coef[m];
-      if (!b.changed) b.changed = true, changed_.push_back(k.r.body[m]);
-    }
-    for (int m = 0; m < k.r.count; ++m) queueRowsOf(k.r.body[m], -1);
-  }
+  if (warmStart > 0.0) apply(index, warmStart);  // from 0
   return index;
 }
 
@@ -65,6 +55,23 @@ void ContactProjector::setRow(int index, const ConstraintRow& row) {
     if (std::find(rows.begin(), rows.end(), index) == rows.end()) rows.push_back(index);
   }
   queue(index);
+}
+
+// Sets row k's multiplier to `lambda`: its movable bodies' velocities change by
+// w_b coef_b (lambda - old), and their other rows are queued (row k itself is satisfied by a
+// Gauss-Seidel update; a warm start has it queued by addRow).
+void ContactProjector::apply(int k, double lambda) {
+  Row& row = row_[k];
+  const double delta = lambda - row.lambda;
+  row.lambda = lambda;
+  for (int m = 0; m < row.r.count; ++m) {
+    Body& b = body_[row.r.body[m]];
+    if (b.inverseMass == 0.0) continue;
+    b.v += b.inverseMass * delta * row.r.coef[m];
+    if (!b.changed) b.changed = true, changed_.push_back(row.r.body[m]);
+  }
+  for (int m = 0; m < row.r.count; ++m)
+    if (body_[row.r.body[m]].inverseMass != 0.0) queueRowsOf(row.r.body[m], k);
 }
 
 void ContactProjector::queue(int k) {
@@ -98,17 +105,7 @@ bool ContactProjector::solve(double speedScale, double tolerance, long maxUpdate
       for (Row& r : row_) r.queued = false;
       return false;
     }
-    const double lambda = std::fmax(0.0, row.lambda - w / row.diag);
-    const double delta = lambda - row.lambda;
-    row.lambda = lambda;
-    for (int m = 0; m < row.r.count; ++m) {
-      Body& b = body_[row.r.body[m]];
-      if (b.inverseMass == 0.0) continue;
-      b.v += b.inverseMass * delta * row.r.coef[m];
-      if (!b.changed) b.changed = true, changed_.push_back(row.r.body[m]);
-    }
-    for (int m = 0; m < row.r.count; ++m)
-      if (body_[row.r.body[m]].inverseMass != 0.0) queueRowsOf(row.r.body[m], k);
+    apply(k, std::fmax(0.0, row.lambda - w / row.diag));
   }
   work_.clear();
   head_ = 0;

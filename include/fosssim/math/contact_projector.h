@@ -72,6 +72,7 @@ class ContactProjector {
     double lambda = 0;
     bool queued = false;
   };
+  void apply(int k, double lambda);
   void queue(int k);
   double diagonal(const ConstraintRow& r) const;  ///< A_kk of a row whose bodies are slots
   void queueRowsOf(int slot, int except);
