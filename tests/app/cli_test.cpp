@@ -123,7 +123,9 @@ TEST(Cli, HugeFiniteCoordinatesDoNotCrashAnyHandler) {
       const Outcome o = runFosssim(args);
       const bool exact = !*mode && (std::string(type) == "continuous-time" || std::string(type) == "hybrid");
       EXPECT_TRUE(exitedWith(o, exact ? 1 : 0)) << type << " " << mode << "\n" << o;
-      if (exact) EXPECT_TRUE(contains(o.err, "particle-particle pair (particle 0, particle 1) cannot be tested")) << o;
+      if (exact) {
+        EXPECT_TRUE(contains(o.err, "particle-particle pair (particle 0, particle 1) cannot be tested")) << o;
+      }
     }
   }
   std::filesystem::remove(scene);

@@ -70,8 +70,9 @@ TEST(CompatBoundary, ContactAtTheEndOfAStep) {
       EXPECT_EQ(own.step, 7);        // the exact root lies past 1 as well
       EXPECT_EQ(reference.step, 7);  // rpoly's root lies past 1: the reference waits a step
       EXPECT_LT(own.time, 1e-12);    // an ulp of overlap at the start of step 7
-      if (std::string(type) == "continuous-time")  // the reference's hybrid impulse list stays empty
+      if (std::string(type) == "continuous-time") {  // the reference's hybrid impulse list stays empty
         EXPECT_EQ(reference.time, 1.0408340855860843e-15);
+      }
     }
   }
 }
