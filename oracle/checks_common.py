@@ -94,12 +94,16 @@ def forces(sc, x, v):
     return f
 
 
-def explicit_prediction(sc, rec):
-    """The integrator's step from `rec` with no collision response (explicit or symplectic Euler)."""
+def explicit_prediction(sc, rec, with_penalty=False):
+    """The integrator's step from `rec` with no collision response (explicit or symplectic Euler);
+    `with_penalty` adds the hybrid's penalty force to the scene's forces."""
     h = sc.dt
     x = [rec.pos(i) for i in range(sc.n)]
     v = [rec.vel(i) for i in range(sc.n)]
     f = forces(sc, x, v)
+    if with_penalty:
+        fp = penalty_forces(sc, x)
+        f = [[f[i][0] + fp[i][0], f[i][1] + fp[i][1]] for i in range(sc.n)]
     xs, vs = [], []
     for i in range(sc.n):
         if sc.fixed[i]:
@@ -264,26 +268,7 @@ def penalty_forces(sc, x):
 def predicted_motion(sc, rec):
     """The integrator's step from `rec` before collision handling (explicit or symplectic Euler,
     plus the hybrid's penalty force): end positions and velocities."""
-    h = sc.dt
-    x = [rec.pos(i) for i in range(sc.n)]
-    v = [rec.vel(i) for i in range(sc.n)]
-    f = forces(sc, x, v)
-    if sc.collision == 'hybrid':
-        fp = penalty_forces(sc, x)
-        f = [[f[i][0] + fp[i][0], f[i][1] + fp[i][1]] for i in range(sc.n)]
-    xs, vs = [], []
-    for i in range(sc.n):
-        if sc.fixed[i]:
-            xs.append(x[i]); vs.append((0.0, 0.0))
-            continue
-        vn = (v[i][0] + h * f[i][0] / sc.m[i], v[i][1] + h * f[i][1] / sc.m[i])
-        if sc.integrator == 'explicit-euler':
-            xn = (x[i][0] + h * v[i][0], x[i][1] + h * v[i][1])
-        else:
-            assert sc.integrator == 'symplectic-euler', sc.integrator
-            xn = (x[i][0] + h * vn[0], x[i][1] + h * vn[1])
-        xs.append(xn); vs.append(vn)
-    return xs, vs
+    return explicit_prediction(sc, rec, with_penalty=(sc.collision == 'hybrid'))
 
 
 def _pmul(a, b):
