@@ -82,25 +82,39 @@ TEST(Cli, AGoodSceneRunsHeadless) {
   EXPECT_FALSE(contains(o.err, "error")) << o;
 }
 
+/// A scene written to a temporary file of this process (removed by the caller).
+std::string tempScene(const std::string& name, const std::string& text) {
+  const std::string path =
+      std::filesystem::temp_directory_path() / ("fosssim-cli-" + name + "-" + std::to_string(getpid()) + ".xml");
+  std::ofstream(path) << text;
+  return path;
+}
+
+/// Runs a scene headless in the default mode and under --compat; calls check(outcome, compat).
+template <class Check>
+void runBothModes(const std::string& scene, Check&& check) {
+  for (const bool compat : {false, true}) {
+    std::vector<std::string> args = {"-s", scene, "-d", "0", "-q"};
+    if (compat) args.push_back("--compat");
+    check(runFosssim(args), compat);
+  }
+}
+
 // A run whose energy blows up (a ball falling into a penalty layer of stiffness 1e200) stops at
 // the step it happens with exit 1 and a message naming step, particle, force and what to change.
 TEST(Cli, AnEnergyBlowUpStopsTheRunWithExitOne) {
-  const std::string scene =
-      std::filesystem::temp_directory_path() / ("fosssim-cli-blowup-" + std::to_string(getpid()) + ".xml");
-  std::ofstream(scene) << "<scene><duration time=\"2\"/><integrator type=\"symplectic-euler\" dt=\"0.01\"/>"
-                          "<collision type=\"penalty\" k=\"1e200\" thickness=\"0.01\"/>"
-                          "<particle m=\"1\" px=\"0\" py=\"1\" vx=\"0\" vy=\"0\" fixed=\"0\" radius=\"0.1\"/>"
-                          "<halfplane px=\"0\" py=\"0\" nx=\"0\" ny=\"1\"/>"
-                          "<simplegravity fx=\"0\" fy=\"-9.81\"/></scene>\n";
-  for (const char* mode : {"", "--compat"}) {
-    std::vector<std::string> args = {"-s", scene, "-d", "0", "-q"};
-    if (*mode) args.push_back(mode);
-    const Outcome o = runFosssim(args);
+  const std::string scene = tempScene("blowup",
+                                      "<scene><duration time=\"2\"/><integrator type=\"symplectic-euler\" dt=\"0.01\"/>"
+                                      "<collision type=\"penalty\" k=\"1e200\" thickness=\"0.01\"/>"
+                                      "<particle m=\"1\" px=\"0\" py=\"1\" vx=\"0\" vy=\"0\" fixed=\"0\" radius=\"0.1\"/>"
+                                      "<halfplane px=\"0\" py=\"0\" nx=\"0\" ny=\"1\"/>"
+                                      "<simplegravity fx=\"0\" fy=\"-9.81\"/></scene>\n");
+  runBothModes(scene, [](const Outcome& o, bool) {
     EXPECT_TRUE(exitedWith(o, 1)) << o;
     for (const char* part : {"FOSSSim: error: step 4", "energy blow-up", "particle 0", "collision penalty",
                              "smaller time step", "smaller stiffness k"})
       EXPECT_TRUE(contains(o.err, part)) << "missing \"" << part << "\"\n" << o;
-  }
+  });
   std::filesystem::remove(scene);
 }
 
@@ -109,26 +123,22 @@ TEST(Cli, AnEnergyBlowUpStopsTheRunWithExitOne) {
 // query names the pair it cannot represent and exits 1, --compat's reference query finds the
 // overflowing polynomials never positive (no collision, as the course's) and finishes.
 TEST(Cli, HugeFiniteCoordinatesDoNotCrashAnyHandler) {
-  const std::string scene =
-      std::filesystem::temp_directory_path() / ("fosssim-cli-huge-" + std::to_string(getpid()) + ".xml");
-  for (const char* type : {"simple", "continuous-time", "hybrid", "penalty"}) {
-    std::ofstream(scene) << "<scene><duration time=\"0.02\"/><integrator type=\"symplectic-euler\" dt=\"0.01\"/>"
-                            "<collision type=\"" << type << "\"/>"
-                            "<particle m=\"1\" px=\"9e307\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>"
-                            "<particle m=\"1\" px=\"-9e307\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>"
-                            "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/></scene>\n";
-    for (const char* mode : {"", "--compat"}) {
-      std::vector<std::string> args = {"-s", scene, "-d", "0", "-q"};
-      if (*mode) args.push_back(mode);
-      const Outcome o = runFosssim(args);
-      const bool exact = !*mode && (std::string(type) == "continuous-time" || std::string(type) == "hybrid");
-      EXPECT_TRUE(exitedWith(o, exact ? 1 : 0)) << type << " " << mode << "\n" << o;
+  for (const std::string type : {"simple", "continuous-time", "hybrid", "penalty"}) {
+    const std::string scene =
+        tempScene("huge", "<scene><duration time=\"0.02\"/><integrator type=\"symplectic-euler\" dt=\"0.01\"/>"
+                          "<collision type=\"" + type + "\"/>"
+                          "<particle m=\"1\" px=\"9e307\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>"
+                          "<particle m=\"1\" px=\"-9e307\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>"
+                          "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/></scene>\n");
+    runBothModes(scene, [&](const Outcome& o, bool compat) {
+      const bool exact = !compat && (type == "continuous-time" || type == "hybrid");
+      EXPECT_TRUE(exitedWith(o, exact ? 1 : 0)) << type << (compat ? " --compat" : "") << "\n" << o;
       if (exact) {
         EXPECT_TRUE(contains(o.err, "particle-particle pair (particle 0, particle 1) cannot be tested")) << o;
       }
-    }
+    });
+    std::filesystem::remove(scene);
   }
-  std::filesystem::remove(scene);
 }
 
 /// tests/data/bad/EXPECTED: file, then fragments of the message, tab-separated.

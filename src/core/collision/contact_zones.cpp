@@ -22,7 +22,7 @@ void ContactZones::reset(int n) {
   if (static_cast<int>(parent_.size()) != n) {
     parent_.assign(n, -1);
     members_.assign(n, {});
-    projections_.assign(n, 0);
+    metAgain_.assign(n, 0);
     solves_.assign(n, 0);
     rigid_.assign(n, 0);
     immovable_.assign(n, 0);
@@ -48,7 +48,7 @@ int ContactZones::join(int p) {
   if (parent_[p] >= 0) return root(p);
   parent_[p] = p;
   members_[p].assign(1, p);
-  projections_[p] = 0;
+  metAgain_[p] = 0;
   solves_[p] = 0;
   rigid_[p] = 0;
   immovable_[p] = 0;
@@ -65,7 +65,7 @@ int ContactZones::unite(int a, int b) {
   parent_[b] = a;
   members_[a].insert(members_[a].end(), members_[b].begin(), members_[b].end());
   members_[b].clear();
-  projections_[a] = std::max(projections_[a], projections_[b]);
+  metAgain_[a] = std::max(metAgain_[a], metAgain_[b]);
   solves_[a] = std::max(solves_[a], solves_[b]);
   rigid_[a] = rigid_[a] || rigid_[b];
   immovable_[a] = immovable_[a] || immovable_[b];
@@ -138,7 +138,7 @@ int ContactZones::absorb(const Scene& scene, const StepMotion& motion, const Pai
   if (zone < 0) return -1;  // every particle of the pair is fixed
   // A contact that already has rows and approaches again is met again: a jam if it repeats. Its
   // fresh rows (normals of now) join the old ones.
-  if (rowOf_.count(key) && ++projections_[root(zone)] > kMaxZoneProjections && immovable_[root(zone)] && !rigidOnly_) {
+  if (rowOf_.count(key) && ++metAgain_[root(zone)] > kMaxZoneProjections && immovable_[root(zone)] && !rigidOnly_) {
     // A jam against an obstacle: the contact keeps closing although it was solved for again and
     // again. Its particles stop for the rest of the step (obstacles from now on), not the zone.
     for (int k = 0; k < pair.count; ++k)
@@ -180,7 +180,7 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
                            double h, VecX& v, std::vector<int>& changed, StepStats& stats) {
   for (;;) {
     zone = root(zone);
-    if (!rigid_[zone] && !rigidOnly_ && (immovable_[zone] || projections_[zone] <= kMaxZoneProjections)) {
+    if (!rigid_[zone] && !rigidOnly_ && (immovable_[zone] || metAgain_[zone] <= kMaxZoneProjections)) {
       ++stats.failsafeRounds;
       // A solve that runs out of its budget leaves safe velocities (no energy gained) that may
       // still let some contact close: that contact comes back as an event, counted as met again.
@@ -189,7 +189,7 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
       const int fresh = solves_[zone]++ == 0 ? projector_.rows() : projector_.rows() - solvedRows_;
       const long budget = kZoneUpdatesPerRow * std::max(fresh, 8);
       solvedRows_ = projector_.rows();
-      if (!projector_.solve(rateScale_[zone] / h, kZoneProjectionTolerance, budget)) ++projections_[zone];
+      if (!projector_.solve(rateScale_[zone] / h, kZoneProjectionTolerance, budget)) ++metAgain_[zone];
     } else {
       rigid_[zone] = 1;
     }
@@ -238,9 +238,8 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
   const auto rate = [&](int p) { return motion.rate(p); };
   if (closingSpeed(scene, key, n, alpha, rate, scale) <= kRestingClosingFraction * scale) {
     const auto position = [&](int p, double t) { return motion.at(p, t); };
-    double deepest = 0, length = 0;
-    const double td = deepestTime(scene, key, position, T, 1.0, deepest);
-    if (pairDeepening(scene, key, position, T, 1.0, length) > kDepthTolerance * length)
+    double length = 0, td = 1.0;
+    if (pairDeepening(scene, key, position, T, 1.0, length, &td) > kDepthTolerance * length)
       row = contactRow(scene, key, [&](int p) { return motion.at(p, td); }, n);
   }
   if (n == Vec2::Zero()) return false;  // coincident centres: no direction to keep apart along

@@ -34,14 +34,16 @@
 
 namespace fosssim {
 
-/// Contacts of one zone met again in one step after it was solved for them, before it moves
-/// rigidly instead: a zone whose own contacts keep approaching after this many solves is a jam
-/// (a wedge, a column being crushed) that a rigid motion settles for the rest of the step.
+/// Times a zone's contacts may come back in one step after it was solved for them (or its solve
+/// ran out of budget) before the last resort: a zone whose own contacts keep approaching is a jam
+/// (a wedge, a column being crushed). Against an obstacle the contact that comes back again stops
+/// its own particles; a zone touching nothing moves rigidly for the rest of the step.
 constexpr int kMaxZoneProjections = 8;
 
-/// The projection's tolerance, relative to the zone's largest speed: tighter than the solver's
-/// default, because what it leaves closing deepens the zone's slowest contacts over the rest of
-/// the step, and verification counts deepening beyond kDepthTolerance (1e-12) of the lengths.
+/// The projection's tolerance, relative to the zone's largest speed (the solver's default): what
+/// it leaves closing deepens the zone's slowest contacts over the rest of the step by about this
+/// fraction of a step's motion, below the deepening --verify counts (kDepthTolerance, 1e-10 of
+/// the lengths) for any motion per step up to the scene's size.
 constexpr double kZoneProjectionTolerance = 1e-10;
 
 /// Closing speeds inside one zone up to this fraction of the zone's largest rate are left over
@@ -128,7 +130,7 @@ class ContactZones {
   bool rigidOnly_ = false;
   std::vector<int> parent_;                ///< N: union-find parent, -1 when in no zone
   std::vector<std::vector<int>> members_;  ///< per root: its particles
-  std::vector<int> projections_;           ///< per root: contacts met again after a solve
+  std::vector<int> metAgain_;              ///< per root: contacts back after a solve, failed solves
   std::vector<int> solves_;                ///< per root: solves in this step
   std::vector<char> rigid_;                ///< per root: moving rigidly for the rest of the step
   std::vector<char> immovable_;            ///< per root: a fixed particle or a half-plane among its rows

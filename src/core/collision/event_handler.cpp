@@ -41,10 +41,11 @@ Status EventHandler::handle(const Scene& scene, const State& start, State& state
   }
   // Detect.
   if (Status s = detectAll(scene, ctx); !s) return s;
-  // Respond, in time order. Every event either is dropped (stale, resolved), or bends at least
-  // one movable particle's path: an impulse costs that particle one of its quota, and a zone
-  // solve is bounded by kMaxZoneProjections per zone, then rigid zones absorb particles, N at
-  // most. So the loop ends; the budget below only guards that reasoning.
+  // Respond, in time order. Every event is dropped (stale, resolved), costs a particle one of its
+  // quota of impulses, adds a contact's rows to a zone (bounded by the candidate pairs), or brings
+  // one back; past kMaxZoneProjections of those a jam stops particles or a zone moves rigidly,
+  // which also happens at most once per particle. So the loop ends; the budget below only guards
+  // that reasoning.
   const long budget = static_cast<long>(eventsPerParticle_ + kMaxZoneProjections + 2) * (n + 1) * 4 + 1000;
   long processed = 0;
   while (!heap_.empty()) {

@@ -130,11 +130,14 @@ double deepestTime(const Scene& scene, uint64_t key, Position&& position, double
 }
 
 /// How much pair `key` deepens its overlap between t and tb beyond the overlap at t (or beyond
-/// touching); `length` receives the pair's length scale (coordinates and radii) at t.
+/// touching); `length` receives the pair's length scale (coordinates and radii) at t, and `when`
+/// (optional) the time of the deepest overlap.
 template <class Position>
-double pairDeepening(const Scene& scene, uint64_t key, Position&& position, double t, double tb, double& length) {
+double pairDeepening(const Scene& scene, uint64_t key, Position&& position, double t, double tb, double& length,
+                     double* when = nullptr) {
   double deepest = 0;
-  deepestTime(scene, key, position, t, tb, deepest);
+  const double td = deepestTime(scene, key, position, t, tb, deepest);
+  if (when) *when = td;
   const PairParticles pair = pairParticles(scene, key);
   length = 0;
   for (int k = 0; k < pair.count; ++k) length += position(pair.p[k], t).norm() + scene.radius[pair.p[k]];
