@@ -107,6 +107,12 @@ bool parseOptions(int argc, char** argv, Options& o, std::string& error) {
     else if (a == "-q") o.quiet = true;
     else if (a == "--compat") o.compat = true;
     else if (a == "--verify") o.verify = true;
+    else if (a == "--title-card") o.titleCard = true;
+    else if (a == "--keep-open") o.keepOpen = true;
+    else if (a == "--strict") o.strict = true;
+    else if (a == "--check") o.check = true;
+    else if (a == "--compact") o.compact = true;
+    else if (a == "--version") o.version = true;
     else if (a == "--frame-every") ok = positive(o.frameEvery);
     else if (a == "--threads") ok = positive(o.threads);
     else if (a == "--png-dir") ok = value(o.pngDir);
@@ -130,7 +136,7 @@ bool parseOptions(int argc, char** argv, Options& o, std::string& error) {
     }
     if (!ok) return false;
   }
-  if (o.help) return true;
+  if (o.help || o.version) return true;
   if (o.scene.empty()) {
     error = "no scene file given: use -s scene.xml (FOSSSim -h lists the options)";
     return false;

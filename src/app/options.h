@@ -23,6 +23,12 @@ struct Options {
   std::string pngDir = "pngs";  ///< --png-dir: where -g writes
   std::string movie;        ///< --movie out.mp4: frames piped into ffmpeg
   double fps = 30;          ///< --fps for --movie
+  bool titleCard = false;   ///< --title-card: the movie opens with the scene's description
+  bool keepOpen = false;    ///< --keep-open: the window stays open when the scene ends
+  bool strict = false;      ///< --strict: warnings about the scene file are errors
+  bool check = false;       ///< --check: load and check the scene, run nothing
+  bool compact = false;     ///< --compact: -o without the collision log (positions and velocities)
+  bool version = false;     ///< --version
   bool help = false;        ///< -h / --help
 };
 
