@@ -41,6 +41,9 @@ const std::string& scratchPath() {
     const char* dir = std::getenv("TMPDIR");
     return std::string(dir && *dir ? dir : "/tmp") + "/fosssim-fuzz-trajectory-" + std::to_string(getpid()) + ".bin";
   }();
+  // The file is rewritten for every input; it goes when the process ends (fuzzer or test).
+  static const bool cleanup = [] { return std::atexit([] { std::remove(path.c_str()); }) == 0; }();
+  (void)cleanup;
   return path;
 }
 

@@ -6,8 +6,8 @@
 //     within the penalty force's reach is a candidate (static boxes);
 //   * the incremental detections (after some particles move) equal fresh full detections;
 //   * the candidates stay complete after update().
-#include "../../src/core/collision/collision_search.h"
-#include "../../src/core/collision/pair_candidates.h"
+#include "core/collision/collision_search.h"
+#include "core/collision/pair_candidates.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 #include "fosssim/core/simulator.h"
 #include "test_scenes.h"
 
-#include "../../src/core/energy_watch.h"
+#include "core/energy_watch.h"
 
 #include <gtest/gtest.h>
 
