@@ -1,6 +1,8 @@
 // The study's experiments, each writing one CSV file into the output directory:
 //   accuracy.csv    error and cost of every method over a sweep of dt, per accuracy problem
 //   stability.csv   the largest stable dt of every integrator against spring stiffness
+//   damped_stability.csv
+//                   the largest stable dt of every integrator on a damped spring, against damping
 //   robustness.csv  outcome of a fast disk against a thin edge, per collision method, speed and dt
 //   hybrid.csv      the hybrid handler's failsafe use, zone sizes and cost against maxiters
 //   profile.csv     per scene: the parts of the simulator it uses and what each costs per step
@@ -37,6 +39,8 @@ AccuracyCell measureAccuracy(const Problem& problem, const Method& method, doubl
 
 Status runAccuracy(const StudyOptions& options);
 Status runStability(const StudyOptions& options);
+/// damped_stability.csv (damped_stability.h); runStability calls it.
+Status runDampedStability(const StudyOptions& options);
 Status runRobustness(const StudyOptions& options);
 Status runHybridCost(const StudyOptions& options);
 Status runProfile(const StudyOptions& options);

@@ -114,7 +114,7 @@ Status runStability(const StudyOptions& options) {
       if (options.log) *options.log << "\n";
     }
   }
-  return Status::ok();
+  return runDampedStability(options);
 }
 
 }  // namespace fosssim::study
