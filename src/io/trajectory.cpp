@@ -1,3 +1,4 @@
+// The reading half of trajectory files (the writer is in trajectory_writer.cpp).
 #include "fosssim/io/trajectory.h"
 
 #include "input_path.h"
@@ -10,59 +11,7 @@ namespace {
 
 static_assert(sizeof(double) == 8 && sizeof(std::int32_t) == 4, "the file format needs 8-byte doubles");
 
-// The format is little-endian; so are the machines we build for. A big-endian port would swap here.
-template <class T>
-void put(std::string& buffer, T value) {
-  char bytes[sizeof(T)];
-  std::memcpy(bytes, &value, sizeof(T));
-  buffer.append(bytes, sizeof(T));
-}
-
 }  // namespace
-
-Status TrajectoryWriter::open(const std::string& path, RecordLayout layout, std::unique_ptr<TrajectoryWriter>& out) {
-  std::unique_ptr<TrajectoryWriter> w(new TrajectoryWriter());
-  w->path_ = path;
-  w->layout_ = layout;
-  w->out_.open(path, std::ios::binary | std::ios::trunc);
-  if (!w->out_) return Status::error(path + ": cannot create the trajectory file (" + std::strerror(errno) + ")");
-  out = std::move(w);
-  return Status::ok();
-}
-
-Status TrajectoryWriter::write(const State& state, const CollisionLog& log) {
-  buffer_.clear();
-  buffer_.append(reinterpret_cast<const char*>(state.x.data()), state.x.size() * sizeof(double));
-  buffer_.append(reinterpret_cast<const char*>(state.v.data()), state.v.size() * sizeof(double));
-  if (layout_.impulses) {
-    put<std::int32_t>(buffer_, static_cast<std::int32_t>(log.impulses.size()));
-    for (const Impulse& im : log.impulses) {
-      put<std::int32_t>(buffer_, static_cast<std::int32_t>(im.kind));
-      put<std::int32_t>(buffer_, im.i);
-      put<std::int32_t>(buffer_, im.j);
-      put(buffer_, im.n.x());
-      put(buffer_, im.n.y());
-      put(buffer_, im.time);
-    }
-  }
-  if (layout_.polynomials) {
-    const PolynomialLog& polys = log.polynomials;
-    put<std::int32_t>(buffer_, polys.size());
-    for (int k = 0; k < polys.size(); ++k) {
-      put<std::int32_t>(buffer_, polys.length(k));
-      buffer_.append(reinterpret_cast<const char*>(polys.coefficients(k)), polys.length(k) * sizeof(double));
-    }
-  }
-  out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
-  if (!out_) return Status::error(path_ + ": cannot write the trajectory file (" + std::strerror(errno) + ")");
-  return Status::ok();
-}
-
-Status TrajectoryWriter::close() {
-  out_.close();
-  if (!out_) return Status::error(path_ + ": cannot finish writing the trajectory file");
-  return Status::ok();
-}
 
 Status TrajectoryReader::open(const std::string& path, int numParticles, RecordLayout layout,
                               std::unique_ptr<TrajectoryReader>& out) {

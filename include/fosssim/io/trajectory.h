@@ -23,18 +23,36 @@ struct TrajectoryRecord {
   CollisionLog log;
 };
 
+/// Writes records straight to the file (one write() per append, no buffer in this process): what
+/// append() accepted is in the file even if the process dies next. Implemented in
+/// trajectory_writer.cpp.
 class TrajectoryWriter {
  public:
   /// Creates (truncates) the file.
   static Status open(const std::string& path, RecordLayout layout, std::unique_ptr<TrajectoryWriter>& out);
+  ~TrajectoryWriter();
+  TrajectoryWriter(const TrajectoryWriter&) = delete;
+  TrajectoryWriter& operator=(const TrajectoryWriter&) = delete;
+
+  /// Appends the bytes of one record to `record`. A record never holds a non-finite number: then
+  /// it fails naming the first one, and `record` is left as it was.
+  Status encode(const State& state, const CollisionLog& log, std::string& record) const;
+  /// Writes whole records (from encode). On failure the file is cut back to the records written
+  /// before, so it never ends inside a record.
+  Status append(const std::string& records);
+  /// encode, then append.
   Status write(const State& state, const CollisionLog& log);
   Status close();
+  /// Bytes of the complete records in the file.
+  std::uint64_t bytesWritten() const { return size_; }
+  const std::string& path() const { return path_; }
 
  private:
   TrajectoryWriter() = default;
   std::string path_;
   RecordLayout layout_;
-  std::ofstream out_;
+  int fd_ = -1;
+  std::uint64_t size_ = 0;
   std::string buffer_;
 };
 
