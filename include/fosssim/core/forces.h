@@ -21,6 +21,11 @@ class SpringForce final : public Force {
   bool hasPotential() const override { return b_ == 0.0; }
   bool mayAddEnergy() const override { return b_ < 0.0; }  ///< damping with b >= 0 only removes energy
   double stiffness() const override { return k_; }
+  // The parameters, for writers and bindings.
+  int i() const { return i_; }
+  int j() const { return j_; }
+  double restLength() const { return l0_; }
+  double damping() const { return b_; }
 
  private:
   int i_, j_;
@@ -35,6 +40,7 @@ class SimpleGravityForce final : public Force {
   double energy(const Scene&, const VecX& x, const VecX& v) const override;
   void addGradient(const Scene&, const VecX& x, const VecX& v, VecX& gradE) const override;
   bool hasPotential() const override { return true; }
+  const Vec2& acceleration() const { return g_; }
 
  private:
   Vec2 g_;
@@ -48,6 +54,7 @@ class ConstantForce final : public Force {
   double energy(const Scene&, const VecX& x, const VecX& v) const override;
   void addGradient(const Scene&, const VecX& x, const VecX& v, VecX& gradE) const override;
   bool hasPotential() const override { return true; }
+  const Vec2& force() const { return f_; }
 
  private:
   Vec2 f_;
@@ -62,6 +69,9 @@ class GravitationalForce final : public Force {
   void addGradient(const Scene&, const VecX& x, const VecX& v, VecX& gradE) const override;
   void addJacobianX(const Scene&, const VecX& x, const VecX& v, Triplets& out) const override;
   bool hasPotential() const override { return true; }
+  int i() const { return i_; }
+  int j() const { return j_; }
+  double G() const { return G_; }
 
  private:
   int i_, j_;
@@ -76,6 +86,7 @@ class DragDampingForce final : public Force {
   void addGradient(const Scene&, const VecX& x, const VecX& v, VecX& gradE) const override;
   void addJacobianV(const Scene&, const VecX& x, const VecX& v, Triplets& out) const override;
   bool mayAddEnergy() const override { return b_ < 0.0; }  ///< -b v with b >= 0 only removes energy
+  double damping() const { return b_; }
 
  private:
   double b_;
@@ -90,6 +101,10 @@ class VortexForce final : public Force {
   const char* keyword() const override { return "vortexforce"; }
   void addGradient(const Scene&, const VecX& x, const VecX& v, VecX& gradE) const override;
   bool hasJacobians() const override { return false; }
+  int i() const { return i_; }
+  int j() const { return j_; }
+  double kbs() const { return kbs_; }
+  double kvc() const { return kvc_; }
 
  private:
   int i_, j_;
