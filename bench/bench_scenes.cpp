@@ -3,8 +3,11 @@
 #include "fosssim/core/collision_handler.h"
 #include "fosssim/core/forces.h"
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
-#include <iomanip>
+#include <cstdio>
+#include <cstdlib>
 #include <ostream>
 #include <random>
 
@@ -188,29 +191,73 @@ bool makeScene(const std::string& kind, int n, const std::string& collision, uns
   return true;
 }
 
+std::vector<std::string> collisionTypes() {
+  std::vector<std::string> types;
+  for (const CollisionEntry& entry : collisionTable()) types.push_back(entry.keyword);
+  return types;
+}
+
+namespace {
+
+/// The shortest decimal that reads back as exactly `x` (0.05, not 0.050000000000000003).
+std::string num(double x) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, x).ptr;
+  return std::string(text, end);
+}
+
+/// A viewport that frames the scene: the particles' discs and the half-planes' anchor points (the
+/// floor, the walls, the V's tip), with a margin; half-height from the larger side, so that a
+/// square picture (the default) shows it all.
+std::string viewport(const BenchScene& s) {
+  const Scene& scene = s.scene;
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  const auto include = [&](double x, double y, double r) {
+    lo[0] = std::min(lo[0], x - r);
+    lo[1] = std::min(lo[1], y - r);
+    hi[0] = std::max(hi[0], x + r);
+    hi[1] = std::max(hi[1], y + r);
+  };
+  for (int p = 0; p < scene.numParticles(); ++p) include(s.state.x[2 * p], s.state.x[2 * p + 1], scene.radius[p]);
+  for (const HalfPlane& h : scene.halfplanes) include(h.point.x(), h.point.y(), 0);
+  if (!(lo[0] <= hi[0])) return "";
+  const double size = 0.55 * std::max({hi[0] - lo[0], hi[1] - lo[1], 1e-3});
+  // Rounded to 4 significant digits: a camera needs no more, and the file stays readable.
+  const auto round = [](double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", x);
+    return std::strtod(text, nullptr);
+  };
+  return "  <viewport cx=\"" + num(round(0.5 * (lo[0] + hi[0]))) + "\" cy=\"" + num(round(0.5 * (lo[1] + hi[1]))) +
+         "\" size=\"" + num(round(size)) + "\"/>\n";
+}
+
+}  // namespace
+
 void writeSceneFile(const BenchScene& s, std::ostream& out) {
   const Scene& scene = s.scene;
-  out << std::setprecision(17);
   out << "<scene>\n  <description text=\"" << s.description << " (fosssim-scenegen)\"/>\n";
-  out << "  <duration time=\"" << scene.duration << "\"/>\n";
-  out << "  <integrator type=\"" << scene.integrator << "\" dt=\"" << scene.dt << "\"/>\n";
-  out << "  <collision type=\"" << scene.collision.type << "\" COR=\"" << scene.collision.cor << "\"";
+  out << "  <duration time=\"" << num(scene.duration) << "\"/>\n";
+  out << "  <integrator type=\"" << scene.integrator << "\" dt=\"" << num(scene.dt) << "\"/>\n";
+  out << "  <collision type=\"" << scene.collision.type << "\" COR=\"" << num(scene.collision.cor) << "\"";
   if (scene.collision.type == "hybrid") out << " maxiters=\"" << scene.collision.maxIterations << "\"";
   if (scene.collision.penaltyThickness > 0)
-    out << " k=\"" << scene.collision.penaltyK << "\" thickness=\"" << scene.collision.penaltyThickness << "\"";
-  out << "/>\n";
+    out << " k=\"" << num(scene.collision.penaltyK) << "\" thickness=\"" << num(scene.collision.penaltyThickness)
+        << "\"";
+  out << "/>\n" << viewport(s);
   for (int p = 0; p < scene.numParticles(); ++p)
-    out << "  <particle m=\"" << scene.massOf(p) << "\" px=\"" << s.state.x[2 * p] << "\" py=\"" << s.state.x[2 * p + 1]
-        << "\" vx=\"" << s.state.v[2 * p] << "\" vy=\"" << s.state.v[2 * p + 1] << "\" fixed=\"" << (scene.isFixed(p) ? 1 : 0)
-        << "\" radius=\"" << scene.radius[p] << "\"/>\n";
+    out << "  <particle m=\"" << num(scene.massOf(p)) << "\" px=\"" << num(s.state.x[2 * p]) << "\" py=\""
+        << num(s.state.x[2 * p + 1]) << "\" vx=\"" << num(s.state.v[2 * p]) << "\" vy=\"" << num(s.state.v[2 * p + 1])
+        << "\" fixed=\"" << (scene.isFixed(p) ? 1 : 0) << "\" radius=\"" << num(scene.radius[p]) << "\"/>\n";
   for (const Edge& e : scene.edges)
-    out << "  <edge i=\"" << e.i << "\" j=\"" << e.j << "\" radius=\"" << e.radius << "\"/>\n";
+    out << "  <edge i=\"" << e.i << "\" j=\"" << e.j << "\" radius=\"" << num(e.radius) << "\"/>\n";
   for (const HalfPlane& h : scene.halfplanes)
-    out << "  <halfplane px=\"" << h.point.x() << "\" py=\"" << h.point.y() << "\" nx=\"" << h.normal.x() << "\" ny=\""
-        << h.normal.y() << "\"/>\n";
+    out << "  <halfplane px=\"" << num(h.point.x()) << "\" py=\"" << num(h.point.y()) << "\" nx=\"" << num(h.normal.x())
+        << "\" ny=\"" << num(h.normal.y()) << "\"/>\n";
   for (const BenchScene::Spring& sp : s.springs)
-    out << "  <springforce edge=\"" << sp.edge << "\" k=\"" << sp.k << "\" l0=\"" << sp.l0 << "\" b=\"" << sp.b << "\"/>\n";
-  if (s.gravity != 0) out << "  <simplegravity fx=\"0\" fy=\"" << s.gravity << "\"/>\n";
+    out << "  <springforce edge=\"" << sp.edge << "\" k=\"" << num(sp.k) << "\" l0=\"" << num(sp.l0) << "\" b=\""
+        << num(sp.b) << "\"/>\n";
+  if (s.gravity != 0) out << "  <simplegravity fx=\"0\" fy=\"" << num(s.gravity) << "\"/>\n";
   out << "</scene>\n";
 }
 

@@ -38,6 +38,9 @@ struct BenchScene {
 /// The scene kinds, in the order the benchmark shows them.
 const std::vector<std::string>& sceneKinds();
 
+/// The collision types a scene can be made with (the keywords of the collision table).
+std::vector<std::string> collisionTypes();
+
 /// Builds `kind` with about n particles (exactly n for rain and gas). `collision` is the
 /// <collision type>; the seed fixes the random velocities and jitter. Unknown kind: false.
 bool makeScene(const std::string& kind, int n, const std::string& collision, unsigned seed, BenchScene& out);

@@ -3,7 +3,7 @@
 //
 //   fosssim-bench [--sizes 1000,10000,100000] [--scenes rain,gas,chains,bullets] [--collision hybrid]
 //                 [--steps K] [--repeats R] [--all-pairs] [--compat] [--threads T] [--csv FILE] [--no-queries]
-//                 [--no-steps] [--alternatives]
+//                 [--no-steps] [--alternatives]      (fosssim-bench -h says what each does)
 // --alternatives also times the broad-phase designs that were measured before choosing one
 // (broad_phase_alternatives.h) on the rain, gas and bullets scenes.
 //
@@ -16,17 +16,19 @@
 #include "broad_phase_alternatives.h"
 #include "query_rates.h"
 
+#include "cli_values.h"
 #include "fosssim/core/simulator.h"
 
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -188,39 +190,39 @@ Figures inChild(const Options& o, const std::string& kind, int n) {
   return f;
 }
 
-std::vector<std::string> split(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream in(s);
-  for (std::string item; std::getline(in, item, ',');)
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
-
-bool parse(int argc, char** argv, Options& o) {
-  for (int k = 1; k < argc; ++k) {
-    const std::string a = argv[k];
-    auto value = [&]() -> std::string { return k + 1 < argc ? argv[++k] : ""; };
-    if (a == "--sizes") {
-      o.sizes.clear();
-      for (const std::string& s : split(value())) o.sizes.push_back(static_cast<int>(std::stod(s)));
-    } else if (a == "--scenes") o.scenes = split(value());
-    else if (a == "--collision") o.collision = value();
-    else if (a == "--steps") o.steps = std::stol(value());
-    else if (a == "--repeats") o.repeats = std::stoi(value());
-    else if (a == "--threads") o.threads = std::stoi(value());
-    else if (a == "--all-pairs") o.allPairs = true;
-    else if (a == "--compat") o.compat = true;
-    else if (a == "--csv") o.csv = value();
-    else if (a == "--no-queries") o.queries = false;
-    else if (a == "--no-steps") o.stepTable = false;
-    else if (a == "--alternatives") o.alternatives = true;
-    else {
-      std::fprintf(stderr, "fosssim-bench: unknown argument %s (see the comment at the top of bench/fosssim_bench.cpp)\n",
-                   a.c_str());
-      return false;
-    }
-  }
-  return true;
+void define(CLI::App& app, Options& o) {
+  app.description(
+      "Milliseconds per step by phase on the scalable scenes, and narrow-phase queries per second, on one core.\n"
+      "Every scene and size runs in a child process of its own; figures are those of the fastest repeat.");
+  app.add_option("--sizes", o.sizes, "particle counts, comma-separated, each 1 to 10^7 (default 1000,10000,100000)")
+      ->option_text("N,N,...")
+      ->delimiter(',')
+      ->check(cli::integerIn(1, 10000000));
+  app.add_option("--scenes", o.scenes, "scenes, comma-separated, of " + cli::listed(sceneKinds()) + " (default all)")
+      ->option_text("NAME,...")
+      ->delimiter(',')
+      ->check(cli::oneOf("scene", sceneKinds()));
+  app.add_option("--collision", o.collision,
+                 "collision handling of every scene, one of " + cli::listed(collisionTypes()) + " (default hybrid)")
+      ->option_text("TYPE")
+      ->check(cli::oneOf("collision type", collisionTypes()));
+  app.add_option("--steps", o.steps, "steps per run, 1 to 10^9 (default: each scene's own length)")
+      ->option_text("K")
+      ->check(cli::integerIn(1, 1000000000));
+  app.add_option("--repeats", o.repeats,
+                 "timed runs per scene and size, 1 to 1000 (default 3 below 10^5 particles, 1 from there)")
+      ->option_text("R")
+      ->check(cli::integerIn(1, 1000));
+  app.add_option("--threads", o.threads, "threads for collision detection, 1 to 1024 (default 1)")
+      ->option_text("T")
+      ->check(cli::integerIn(1, 1024));
+  app.add_flag("--all-pairs", o.allPairs, "test every pair (no broad phase)");
+  app.add_flag("--compat", o.compat, "the course's formulation instead of the default mode");
+  app.add_option("--csv", o.csv, "also write the figures to this CSV file")->option_text("FILE");
+  app.add_flag_callback("--no-queries", [&o] { o.queries = false; }, "skip the narrow-phase query rates");
+  app.add_flag_callback("--no-steps", [&o] { o.stepTable = false; }, "skip the ms-per-step table");
+  app.add_flag("--alternatives", o.alternatives,
+               "also time the broad-phase designs measured before choosing one (rain, gas, bullets)");
 }
 
 }  // namespace
@@ -229,10 +231,16 @@ bool parse(int argc, char** argv, Options& o) {
 int main(int argc, char** argv) {
   using namespace fosssim::bench;
   Options o;
-  if (!parse(argc, argv, o)) return 2;
+  CLI::App app("", "fosssim-bench");
+  define(app, o);
+  if (const int status = fosssim::cli::parseCommandLine(app, argc, argv); status >= 0) return status;
   std::ofstream csv;
   if (!o.csv.empty()) {
     csv.open(o.csv);
+    if (!csv) {
+      std::fprintf(stderr, "fosssim-bench: cannot write %s: %s\n", o.csv.c_str(), std::strerror(errno));
+      return 1;
+    }
     csv << "section,scene,n,particles,edges,steps,integrate_ms,broad_ms,narrow_ms,response_ms,failsafe_ms,other_ms,"
            "total_ms,candidates_per_step,queries_per_step,collisions_per_step,passes_per_step,failsafe_steps,rounds_per_failsafe,"
            "largest_zone,bytes_per_particle,rss_growth_bytes,threads,queries_per_second,hit_rate\n";

@@ -52,6 +52,11 @@ int run(int argc, char** argv) {
     std::fputs(usage().c_str(), stdout);
     return kExitOk;
   }
+  if (options.version) {
+    std::printf("%s\n", versionText().c_str());
+    return kExitOk;
+  }
+  for (const auto& w : options.warnings) std::fprintf(stderr, "FOSSSim: warning: %s\n", w.c_str());
 
   SceneFile file;
   if (Status s = loadScene(options.scene, file); !s) return fail(s.message());

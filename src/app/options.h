@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace fosssim::app {
 
@@ -22,7 +23,7 @@ struct Options {
   int frameEvery = 1;       ///< --frame-every K: write only every K-th frame
   std::string pngDir = "pngs";  ///< --png-dir: where -g writes
   std::string movie;        ///< --movie out.mp4: frames piped into ffmpeg
-  double fps = 30;          ///< --fps for --movie
+  double fps = 0;           ///< --fps for --movie; 0: real time, 1 / (dt * frameEvery) (raster_frames.h)
   bool titleCard = false;   ///< --title-card: the movie opens with the scene's description
   bool keepOpen = false;    ///< --keep-open: the window stays open when the scene ends
   bool strict = false;      ///< --strict: warnings about the scene file are errors
@@ -30,12 +31,23 @@ struct Options {
   bool compact = false;     ///< --compact: -o without the collision log (positions and velocities)
   bool version = false;     ///< --version
   bool help = false;        ///< -h / --help
+  /// Options given that have no effect here (e.g. --frame-size with nothing to draw): main prints
+  /// them as warnings. Options that would be silently ignored in a way a user would not expect are
+  /// errors instead (parseOptions fails).
+  std::vector<std::string> warnings;
 };
 
-/// Parses argv. On error returns false and sets `error` to a one-line message.
+/// Parses argv (CLI11). On error returns false and sets `error` to a one-line message naming the
+/// option and what is wrong: an unknown option, a bad value, an option given twice, or options
+/// that cannot work together (e.g. -i with -g 1, --fps without --movie).
 bool parseOptions(int argc, char** argv, Options& options, std::string& error);
 
-/// The usage text of -h.
+/// The usage text of -h, generated from the option definitions and the collision and integrator
+/// tables' summaries.
 std::string usage();
+
+/// What --version prints: "FOSSSim <version>", and the git commit the build was configured at
+/// when it was known.
+std::string versionText();
 
 }  // namespace fosssim::app
