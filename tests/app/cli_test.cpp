@@ -3,9 +3,15 @@
 // crash or a hang). Exit codes: 0 ok, 1 bad input or failed run or grade, 2 bad command line.
 #include "run_fosssim.h"
 
+#include "fosssim/core/collision_handler.h"
+#include "fosssim/core/integrator.h"
+
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <sstream>
 
 namespace fosssim::testing {
@@ -21,6 +27,9 @@ std::string goodScene() {
                         "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"1\" vy=\"0\" fixed=\"0\"/></scene>\n";
     return p;
   }();
+  // Shared by every test of this executable, so it goes when the executable ends.
+  static const bool cleanup = std::atexit([] { std::remove(path.c_str()); }) == 0;
+  (void)cleanup;
   return path;
 }
 
@@ -74,6 +83,112 @@ TEST(Cli, OptionsWithoutTheirValue) {
     expectUsageError({option}, std::string("option ") + option + " needs a value");
   // An empty file name is no file name.
   for (const char* option : {"-o", "-i", "-m"}) expectUsageError({"-s", goodScene(), "-d", "0", option, ""}, option);
+}
+
+TEST(Cli, AnOptionGivenTwiceIsAUsageError) {
+  // The reference took the last -s; a user who gives two scenes meant one of them.
+  expectUsageError({"-s", goodScene(), "-s", "other.xml", "-d", "0"}, "option -s given 2 times");
+  expectUsageError({"-s", goodScene(), "-s", "other.xml"}, "\"other.xml\"");
+  expectUsageError({"-s", goodScene(), "-d", "0", "-d", "1"}, "option -d given 2 times");
+  expectUsageError({"-s", goodScene(), "--threads", "2", "--threads=3"}, "option --threads given 2 times");
+}
+
+// -i grades and writes nothing: every option that would write or show something is refused by
+// name, before anything is created.
+TEST(Cli, GradingRefusesWhatItWouldIgnore) {
+  const std::string dir = std::filesystem::temp_directory_path() / ("fosssim-cli-svg-" + std::to_string(getpid()));
+  const std::vector<std::vector<std::string>> refused = {
+      {"-g", "1"}, {"-m", dir}, {"--movie", dir + ".mp4"}, {"--verify"}, {"--compact"}, {"--keep-open"}, {"--check"}};
+  for (const auto& extra : refused) {
+    std::vector<std::string> args = {"-s", goodScene(), "-i", "b.bin"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    expectUsageError(args, extra[0] == "--check" ? "--check runs nothing, so it cannot grade"
+                                                 : extra[0] + (extra[0] == "-g" ? " 1" : "") + " cannot be used with it");
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir));
+  // What grading does use is accepted (the grade itself fails: b.bin does not exist).
+  const Outcome o = runFosssim({"-s", goodScene(), "-i", "b.bin", "--compat", "--threads", "2", "-q", "-g", "0"});
+  EXPECT_TRUE(exitedWith(o, 1)) << o;
+}
+
+// Options that only shape another output are errors without it (a user who forgot -g 1 gets no
+// PNGs and would not know why); the message names what is missing.
+TEST(Cli, OptionsWithoutTheOutputTheyShapeAreUsageErrors) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--png-dir", "frames"}, "-g 1 is not given"},
+      {{"-g", "0", "--png-dir", "frames"}, "-g 1 is not given"},
+      {{"--fps", "25"}, "no --movie is given"},
+      {{"--frame-every", "2"}, "-g 1, -m and --movie, and none of them is given"},
+      {{"--title-card"}, "no --movie is given"},
+      {{"--compact"}, "no -o is given"},
+      {{"--keep-open"}, "-d 0 opens none"},
+      {{"--check", "-o", "out.bin"}, "-o cannot be used with it"},
+  };
+  for (const auto& [extra, fragment] : cases) {
+    std::vector<std::string> args = {"-s", goodScene(), "-d", "0"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    expectUsageError(args, fragment);
+    expectUsageError(args, extra[0] == "-g" ? "--png-dir" : extra[0]);
+  }
+  EXPECT_FALSE(std::filesystem::exists("frames"));
+}
+
+// A frame size with nothing to draw is harmless: a warning, and the run goes on.
+TEST(Cli, AFrameSizeWithNothingToDrawOnlyWarns) {
+  const Outcome o = runFosssim({"-s", goodScene(), "-d", "0", "-q", "--frame-size", "64x48"});
+  EXPECT_TRUE(exitedWith(o, 0)) << o;
+  EXPECT_TRUE(contains(o.err, "FOSSSim: warning: --frame-size has no effect")) << o;
+}
+
+TEST(Cli, ValuesAfterAnEqualsSign) {
+  const Outcome o = runFosssim({"-s", goodScene(), "-d", "0", "-q", "--threads=2"});
+  EXPECT_TRUE(exitedWith(o, 0)) << o;
+  expectUsageError({"-s", goodScene(), "--threads=0"}, "option --threads takes an integer from 1 to");
+  expectUsageError({"-s", goodScene(), "--threads="}, "option --threads needs a value");
+  expectUsageError({"-s", goodScene(), "--fps=fast", "--movie", "m.mp4"}, "option --fps takes a frame rate");
+  // Flags take no value: "--compat=0" would read as "not compat" to some and be ignored by others.
+  expectUsageError({"-s", goodScene(), "--compat=0"}, "option --compat takes no value");
+}
+
+TEST(Cli, NearMissesAreSuggested) {
+  expectUsageError({"-s", goodScene(), "--thread", "2"}, "unknown option \"--thread\" (did you mean --threads?)");
+  expectUsageError({"-s", goodScene(), "--verfy"}, "did you mean --verify?");
+  expectUsageError({"-s", goodScene(), "-D", "0"}, "did you mean -d?");
+}
+
+TEST(Cli, VersionPrintsTheProgramAndItsVersion) {
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"--version"}, std::vector<std::string>{"-s", goodScene(), "--version"}}) {
+    const Outcome o = runFosssim(args);
+    EXPECT_TRUE(exitedWith(o, 0)) << o;
+    // "FOSSSim <major>.<minor>", then the commit where the build knew it; one line.
+    EXPECT_TRUE(std::regex_match(o.out, std::regex("FOSSSim [0-9]+\\.[0-9]+[^\n]*\n"))) << o;
+    EXPECT_EQ(o.err, "") << o;
+  }
+}
+
+/// `text` with every run of white space made one space (-h wraps its lines).
+std::string words(const std::string& text) {
+  std::istringstream in(text);
+  std::string out, word;
+  while (in >> word) out += (out.empty() ? "" : " ") + word;
+  return out;
+}
+
+// -h lists every collision type and integrator of the scene format with its table's summary, and
+// every option.
+TEST(Cli, HelpListsTheKeywordTablesAndEveryOption) {
+  const Outcome o = runFosssim({"-h"});
+  ASSERT_TRUE(exitedWith(o, 0)) << o;
+  const std::string help = words(o.out);
+  for (const CollisionEntry& e : collisionTable())
+    EXPECT_TRUE(contains(help, std::string(e.keyword) + " " + words(e.summary))) << e.keyword;
+  for (const IntegratorEntry& e : integratorTable())
+    EXPECT_TRUE(contains(help, std::string(e.keyword) + " " + words(e.summary))) << e.keyword;
+  for (const char* option : {"--compat", "--verify", "--threads N", "--strict", "--check", "--compact",
+                             "--frame-size WxH", "--frame-every K", "--png-dir DIR", "--movie FILE.mp4", "--fps N",
+                             "--title-card", "--keep-open", "-q", "-h, --help", "--version"})
+    EXPECT_TRUE(contains(o.out, option)) << option;
 }
 
 TEST(Cli, AGoodSceneRunsHeadless) {

@@ -48,8 +48,9 @@ inline SceneFile parsed(const char* text) {
 struct TempDir {
   std::string path;
   TempDir() {
-    char pattern[] = "/tmp/fosssim_render_XXXXXX";
-    const char* made = mkdtemp(pattern);
+    // Under TMPDIR when set (temp_directory_path reads it), as every test's scratch files.
+    std::string pattern = (std::filesystem::temp_directory_path() / "fosssim_render_XXXXXX").string();
+    const char* made = mkdtemp(pattern.data());
     path = made ? made : "";
   }
   ~TempDir() {
