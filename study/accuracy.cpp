@@ -19,8 +19,12 @@ AccuracyCell measureAccuracy(const Problem& problem, const Method& method, doubl
   }
   std::unique_ptr<Measurement> measure = problem.measure();
   cell.run = runScene(file, RunOptions{}, [&](const Scene& scene, const State& s) { measure->step(scene, s); });
+  const Metrics over = measure->overRun();  // also for a run that failed part way
+  if (cell.run.ok()) cell.metrics = measure->finish(file.scene, file.initial, cell.run);
+  cell.metrics.energyMax = over.energyMax;
+  cell.metrics.energyRms = over.energyRms;
+  cell.metrics.minSeparation = over.minSeparation;
   if (!cell.run.ok()) return cell;
-  cell.metrics = measure->finish(file.scene, file.initial, cell.run);
   if (timed) cell.wallSeconds = timeRun(file, cell.run.steps, options.timingRepeats, options.timingBudget);
   return cell;
 }
@@ -32,7 +36,8 @@ Status runAccuracy(const StudyOptions& options) {
                            "steps", "outcome", "sim_time", "wall_s", "wall_per_sim_s", "us_per_step", "error",
                            "position_error", "velocity_error", "energy_error", "momentum_error", "angmom_error",
                            "period_error", "contact_time_error", "collisions", "overlap_steps", "overlap_pair_steps",
-                           "max_overlap", "failsafe_steps", "message"});
+                           "max_overlap", "failsafe_steps", "energy_error_max", "energy_error_rms",
+                           "min_separation", "exact_min_separation", "omega", "message"});
       !s)
     return s;
   std::vector<Problem> problems = integratorProblems(options.quick);
@@ -49,7 +54,8 @@ Status runAccuracy(const StudyOptions& options) {
             << 1e6 * c.wallSeconds / static_cast<double>(r.steps) << c.metrics.error << c.metrics.position
             << c.metrics.velocity << c.metrics.energy << c.metrics.momentum << c.metrics.angularMomentum
             << c.metrics.period << c.metrics.contactTime << r.collisions << r.overlap.stepsWithOverlap
-            << r.overlap.pairSteps << r.overlap.deepest << r.failsafeSteps << r.message;
+            << r.overlap.pairSteps << r.overlap.deepest << r.failsafeSteps << c.metrics.energyMax
+            << c.metrics.energyRms << c.metrics.minSeparation << p.exactMinSeparation << p.omega << r.message;
         if (Status s = csv.endRow(); !s) return s;
       }
       if (options.log) *options.log << "." << std::flush;

@@ -4,6 +4,8 @@
 //   damped_stability.csv
 //                   the largest stable dt of every integrator on a damped spring, against damping
 //   robustness.csv  outcome of a fast disk against a thin edge, per collision method, speed and dt
+//   robustness_shots.csv
+//                   random shots at edge faces, ends, joints and slots, judged by energy, both modes
 //   hybrid.csv      the hybrid handler's failsafe use, zone sizes and cost against maxiters
 //   profile.csv     per scene: the parts of the simulator it uses and what each costs per step
 //   contacts_series.csv, contacts_summary.csv
@@ -42,6 +44,8 @@ Status runStability(const StudyOptions& options);
 /// damped_stability.csv (damped_stability.h); runStability calls it.
 Status runDampedStability(const StudyOptions& options);
 Status runRobustness(const StudyOptions& options);
+/// robustness_shots.csv (shots.h); runRobustness calls it.
+Status runShots(const StudyOptions& options);
 Status runHybridCost(const StudyOptions& options);
 Status runProfile(const StudyOptions& options);
 Status runContacts(const StudyOptions& options);

@@ -28,6 +28,17 @@ constexpr double kThrowMass = 1.0;
 
 class ProjectileMeasure final : public Measurement {
  public:
+  void step(const Scene& scene, const State& s) override {
+    // The start's energy m |v0|^2 / 2 - m g . x0, relative to its kinetic part.
+    const double kinetic0 = 0.5 * kThrowMass * kThrow.v0.squaredNorm();
+    const double e0 = kinetic0 - kThrowMass * kThrow.g.dot(kThrow.x0);
+    track_.add(std::abs(mechanicalEnergy(scene, s) - e0) / kinetic0);
+  }
+  Metrics overRun() const override {
+    Metrics m;
+    track_.fill(m);
+    return m;
+  }
   Metrics finish(const Scene& scene, const State& initial, const RunResult& run) override {
     const State& s = run.final;
     Metrics m;
@@ -38,6 +49,9 @@ class ProjectileMeasure final : public Measurement {
     m.error = m.position;
     return m;
   }
+
+ private:
+  EnergyErrorTrack track_;
 };
 
 Problem projectile(bool quick) {
@@ -62,23 +76,41 @@ constexpr double kRest = 1.0, kStretch = 0.5, kSpringK = 10.0, kSpringMass = 1.0
 class SpringMeasure final : public Measurement {
  public:
   explicit SpringMeasure(double b) : exact_{kSpringMass, kSpringK, b, kStretch, 0.0} {}
+  void step(const Scene&, const State& s) override {
+    track_.add(energyError(s));
+    // Signed: the bob's coordinate along the spring's starting line, negative once it has passed
+    // through the anchor (where the spring's direction, and with it the force's law, flips).
+    closest_ = std::min(closest_, (at(s.x, 1) - at(s.x, 0)).x());
+  }
+  Metrics overRun() const override {
+    Metrics m;
+    track_.fill(m);
+    m.minSeparation = closest_;
+    return m;
+  }
   Metrics finish(const Scene&, const State&, const RunResult& run) override {
     const State& s = run.final;
     const Vec2 x = at(s.x, 1) - at(s.x, 0), v = at(s.v, 1);
     Metrics m;
     m.position = (x - Vec2(kRest + exact_.displacement(s.time), 0)).norm();
     m.velocity = (v - Vec2(exact_.velocity(s.time), 0)).norm();
-    // The energy of the spring-mass system itself (a damped spring has no potential in the
-    // simulator's sense, so the study computes it), against the closed form's.
-    const double u = x.norm() - kRest;
-    const double energy = 0.5 * kSpringMass * v.squaredNorm() + 0.5 * kSpringK * u * u;
-    m.energy = std::abs(energy - exact_.energy(s.time)) / exact_.energy(0);
+    m.energy = energyError(s);
     m.error = m.position;
     return m;
   }
 
  private:
+  /// The energy of the spring-mass system itself (a damped spring has no potential in the
+  /// simulator's sense, so the study computes it), against the closed form's, relative to the start.
+  double energyError(const State& s) const {
+    const Vec2 x = at(s.x, 1) - at(s.x, 0), v = at(s.v, 1);
+    const double u = x.norm() - kRest;
+    const double energy = 0.5 * kSpringMass * v.squaredNorm() + 0.5 * kSpringK * u * u;
+    return std::abs(energy - exact_.energy(s.time)) / exact_.energy(0);
+  }
   Oscillator exact_;
+  EnergyErrorTrack track_;
+  double closest_ = kRest + kStretch;
 };
 
 Problem spring(bool quick, double b) {
@@ -97,6 +129,8 @@ Problem spring(bool quick, double b) {
     return x;
   };
   p.measure = [b] { return std::make_unique<SpringMeasure>(b); };
+  p.omega = std::sqrt(kSpringK / kSpringMass);
+  if (!damped) p.exactMinSeparation = kRest - kStretch;
   return p;
 }
 
@@ -113,8 +147,11 @@ double mu() { return kG * 2 * kBodyMass; }
 
 class OrbitMeasure final : public Measurement {
  public:
-  void step(const Scene&, const State& s) override {
+  void step(const Scene& scene, const State& s) override {
     const Vec2 r = at(s.x, 1) - at(s.x, 0);
+    closest_ = std::min(closest_, r.norm());
+    // The orbit's exact energy (two bodies, resting centre of mass): mu-scaled from the closed form.
+    track_.add(std::abs(mechanicalEnergy(scene, s) - energy_) / std::abs(energy_));
     double angle = std::atan2(r.y(), r.x());
     // Unwrap: the orbit turns counter-clockwise by less than pi per step at any sane step.
     while (angle < lastAngle_ - M_PI) angle += 2 * M_PI;
@@ -123,6 +160,13 @@ class OrbitMeasure final : public Measurement {
       periodTime_ = lastTime_ + (s.time - lastTime_) * (2 * M_PI - lastAngle_) / (angle - lastAngle_);
     lastAngle_ = angle;
     lastTime_ = s.time;
+  }
+
+  Metrics overRun() const override {
+    Metrics m;
+    track_.fill(m);
+    m.minSeparation = closest_;
+    return m;
   }
 
   Metrics finish(const Scene& scene, const State& initial, const RunResult& run) override {
@@ -145,8 +189,15 @@ class OrbitMeasure final : public Measurement {
   }
 
  private:
+  /// E = m_reduced eps with the reduced mass m1 m2 / (m1 + m2) and eps the specific orbital energy.
+  static double exactEnergy() {
+    return kBodyMass * kBodyMass / (2 * kBodyMass) * KeplerOrbit(mu(), kRelX, kRelV).specificEnergy();
+  }
   double lastAngle_ = 0, lastTime_ = 0;
   double periodTime_ = kNotApplicable;
+  double closest_ = kRelX.norm();
+  const double energy_ = exactEnergy();
+  EnergyErrorTrack track_;
 };
 
 Problem orbit(bool quick) {
@@ -163,6 +214,8 @@ Problem orbit(bool quick) {
     return x;
   };
   p.measure = [] { return std::make_unique<OrbitMeasure>(); };
+  const KeplerOrbit exact(mu(), kRelX, kRelV);
+  p.exactMinSeparation = exact.semiMajorAxis() * (1 - exact.eccentricity());
   return p;
 }
 

@@ -6,6 +6,8 @@
 #include "run.h"
 #include "scene_xml.h"
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -21,7 +23,15 @@ struct Metrics {
   double error = kNotApplicable;            ///< the problem's headline error (Problem::errorLabel)
   double position = kNotApplicable;         ///< largest |x - x_exact| at the end [m]
   double velocity = kNotApplicable;         ///< largest |v - v_exact| at the end [m/s]
-  double energy = kNotApplicable;           ///< |E_end - E_exact| / E scale (relative)
+  double energy = kNotApplicable;           ///< |E_end - E_exact| / E scale (relative), at the end only
+  /// The same relative energy error over the whole run: its largest value and its root mean square
+  /// over the step ends. An error that oscillates (symplectic Euler's) can be small at the end by
+  /// chance; these cannot.
+  double energyMax = kNotApplicable;
+  double energyRms = kNotApplicable;
+  /// Closest approach of the two bodies [m]; for the springs the bob's least coordinate along the
+  /// spring's starting line, from the anchor (negative: it passed through the anchor).
+  double minSeparation = kNotApplicable;
   double momentum = kNotApplicable;         ///< |P_end - P_0| / sum m|v_0| (relative)
   double angularMomentum = kNotApplicable;  ///< |L_end - L_0| / |L_0| (relative)
   double period = kNotApplicable;           ///< |T_measured - T_exact| / T_exact (relative)
@@ -36,6 +46,28 @@ class Measurement {
   virtual void step(const Scene&, const State&) {}
   /// At the end of a run that completed.
   virtual Metrics finish(const Scene& scene, const State& initial, const RunResult& run) = 0;
+  /// What step() gathered over the run so far (energyMax, energyRms, minSeparation), also for a
+  /// run that failed part way.
+  virtual Metrics overRun() const { return {}; }
+};
+
+/// The relative energy error of every step end, folded into its maximum and root mean square.
+class EnergyErrorTrack {
+ public:
+  void add(double relativeError) {
+    max_ = std::max(max_, relativeError);
+    sumSquares_ += relativeError * relativeError;
+    ++count_;
+  }
+  void fill(Metrics& m) const {
+    if (count_ == 0) return;
+    m.energyMax = max_;
+    m.energyRms = std::sqrt(sumSquares_ / static_cast<double>(count_));
+  }
+
+ private:
+  double max_ = 0, sumSquares_ = 0;
+  long count_ = 0;
 };
 
 struct Problem {
@@ -48,6 +80,8 @@ struct Problem {
   /// The scene for a method and a time step.
   std::function<SceneXml(const Method&, double dt)> scene;
   std::function<std::unique_ptr<Measurement>()> measure;
+  double omega = kNotApplicable;          ///< angular frequency of a linear oscillator (springs)
+  double exactMinSeparation = kNotApplicable;  ///< the exact closest approach (orbit: periapsis)
 };
 
 /// A problem with its heading filled in; its maker adds the scene and the measurement.

@@ -89,7 +89,7 @@ Status runRobustness(const StudyOptions& options) {
     }
     if (options.log) *options.log << "\n";
   }
-  return Status::ok();
+  return runShots(options);
 }
 
 }  // namespace fosssim::study

@@ -85,7 +85,7 @@ RunResult runScene(const SceneFile& file, const RunOptions& options, const StepV
   const Scene& scene = file.scene;
   r.final = file.initial;
   std::unique_ptr<Simulator> sim;
-  if (Status s = Simulator::create(scene, studySimulatorOptions(), sim); !s) {
+  if (Status s = Simulator::create(scene, studySimulatorOptions(options.compat), sim); !s) {
     r.outcome = Outcome::Error;
     r.message = s.message();
     return r;

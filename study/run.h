@@ -35,6 +35,8 @@ struct RunOptions {
   bool phaseTimings = false;
   /// Steps to take; < 0 means the scene's own ceil(duration / dt).
   long steps = -1;
+  /// The course's formulation (--compat) instead of the default mode.
+  bool compat = false;
 };
 
 struct RunResult {
