@@ -71,7 +71,8 @@ int run(int argc, char** argv) {
   if (Status s = Simulator::create(file.scene, simOptions, simulator); !s) return fail(s.message());
 
   if (!options.input.empty()) {
-    const GradeReport report = gradeTrajectory(file.scene, file.initial, *simulator, options.input, std::cout);
+    const GradeReport report = gradeFile(file.scene, file.initial, *simulator, simOptions, options.input, std::cout);
+    if (report.unreadable) return fail(report.structuralError);  // one error, no verdicts on nothing
     return report.passed(GradeTolerances{}) ? kExitOk : kExitFailure;
   }
 
