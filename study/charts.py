@@ -76,6 +76,12 @@ def accuracy_panel(ax, rows):
         ys = [max(r["error"], ERROR_FLOOR) for r in good]
         color, marker = style(m)
         ax.plot(xs, ys, color=color, marker=marker, ms=4, lw=1.2, label=m)
+        # The spread of the repeated timings: from the least (the point) to the median repeat.
+        if good and "wall_s_median" in good[0]:
+            slow = [r["wall_s_median"] / r["sim_time"] if sd.finite(r["wall_s_median"]) else x
+                    for r, x in zip(good, xs)]
+            ax.errorbar(xs, ys, xerr=[[0] * len(xs), [max(0.0, s - x) for s, x in zip(slow, xs)]], fmt="none",
+                        ecolor=color, elinewidth=0.7, capsize=1.5, alpha=0.7)
         # dt at both ends of the line (the sweep runs between them, in the order of the table's dts)
         for x, y, r in list(zip(xs, ys, good))[:: max(1, len(good) - 1)][:2]:
             ax.annotate(f"{r['dt']:g}", (x, y), textcoords="offset points", xytext=(3, 3), fontsize=6, color=color)
@@ -115,7 +121,8 @@ def chart_accuracy(data_dir, kind, name, shape):
     fig.legend(handles=handles, loc="upper center", ncol=min(len(handles), 5), bbox_to_anchor=(0.5, 0.965))
     fig.suptitle(f"Accuracy against cost, one line per {what}. Each line runs from the largest dt (left, cheap,\n"
                  f"its dt written at the point) to the smallest (right, dt written too); circled points form the Pareto "
-                 f"front; errors at {ERROR_FLOOR:g} are rounding.",
+                 f"front; errors at {ERROR_FLOOR:g} are rounding. Bars: from the fastest repeat of a timed run "
+                 f"(the point) to the median one.",
                  y=1.0, fontsize=10)
     fig.tight_layout(rect=(0, 0, 1, 0.93 if shape[0] > 1 else 0.88))
     save(fig, data_dir, name)
@@ -336,6 +343,8 @@ def main(argv):
     charts_limits.chart_damped(data_dir, style, save)
     charts_limits.chart_shots(data_dir, save)
     charts_limits.chart_energy_order(data_dir, style, save)
+    if os.path.exists(os.path.join(data_dir, "audit_series.csv")):
+        charts_limits.chart_audit(data_dir, style, save)
     chart_robustness(data_dir)
     chart_penalty_depth(data_dir)
     chart_hybrid(data_dir)

@@ -142,3 +142,40 @@ def chart_energy_order(data_dir, style, save):
     fig.tight_layout(rect=(0, 0.1, 1, 0.94))
     save(fig, data_dir, "energy_order")
 
+
+
+def chart_audit(data_dir, style, save):
+    rows = sd.load(data_dir, "audit_series")
+    problems = sd.unique(rows, "problem")
+    quantities = [("energy_error", "energy"), ("momentum_error", "momentum"), ("angmom_error", "angular momentum")]
+    fig, axes = plt.subplots(len(quantities), len(problems), figsize=(4.0 * len(problems), 2.7 * len(quantities)),
+                             squeeze=False, sharex="col")
+    for j, p in enumerate(problems):
+        mine = [r for r in rows if r["problem"] == p]
+        for i, (key, name) in enumerate(quantities):
+            ax = axes[i][j]
+            for m in sd.unique(mine, "method"):
+                pts = [r for r in mine if r["method"] == m and sd.finite(r[key])]
+                color, marker = style(m)
+                ax.plot([r["time"] for r in pts], [max(r[key], 1e-16) for r in pts], color=color, lw=1.1,
+                        ls="--" if m.startswith("linearized") else "-", label=m)
+                failed = [r for r in mine if r["method"] == m and r["outcome"] != "ok"]
+                if failed and pts:
+                    ax.plot([pts[-1]["time"]], [max(pts[-1][key], 1e-16)], marker="x", color=color, ms=7)
+            ax.set_yscale("log")
+            ax.set_ylim(1e-17, None)
+            if i == 0:
+                ax.set_title(f"{mine[0]['title']}\ndt = {mine[0]['dt']:g} s", fontsize=8.5)
+            if j == 0:
+                ax.set_ylabel(f"{name} error (relative)")
+            if i == len(quantities) - 1:
+                ax.set_xlabel("time [s]")
+    handles, labels = axes[0][0].get_legend_handles_labels()
+    handles.append(plt.Line2D([], [], ls="none", marker="x", color="0.3"))
+    labels.append("run failed here")
+    fig.legend(handles, labels, loc="lower center", ncol=5, fontsize=8, bbox_to_anchor=(0.5, -0.01))
+    fig.suptitle("Audit over time: energy, momentum and angular momentum against the exact motion, per problem and "
+                 "integrator (errors at 1e-16 are rounding; the anchored springs' angular momentum about the anchor "
+                 "is exactly 0)", fontsize=9)
+    fig.tight_layout(rect=(0, 0.04, 1, 0.96))
+    save(fig, data_dir, "audit")

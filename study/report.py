@@ -769,6 +769,7 @@ def main(argv):
     sections = {
         "accuracy": accuracy_section(data_dir, rel),
         "damped": damped,
+        "audit": limits.audit_section(data_dir, rel, sys.modules[__name__]),
         "stability": stability_section(data_dir, rel),
         "robustness": robustness_section(data_dir, rel),
         "shots": shots,

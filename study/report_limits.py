@@ -243,3 +243,33 @@ def comparison_facts(acc, r, f):
     f["sympl_vs_implicit"] = (f"{r.join(r.fmt(c, 2) for c in costs)} times less wall time than implicit Euler to "
                               f"be as accurate as implicit Euler's best run (its finest dt; spring, orbit)"
                               if costs else "less wall time than implicit Euler for the same accuracy")
+
+
+def audit_section(data_dir, rel, r):
+    """The audit over time: its chart and, per problem and integrator, the largest error of each
+    quantity over the run and whether it grew (last sample against the median of the first tenth)."""
+    import os
+    if not os.path.exists(os.path.join(data_dir, "audit_series.csv")):
+        return ""
+    rows = sd.load(data_dir, "audit_series")
+    body, samples = [], 0
+    for p in sd.unique(rows, "problem"):
+        mine = [x for x in rows if x["problem"] == p]
+        for m in sd.unique(mine, "method"):
+            pts = [x for x in mine if x["method"] == m]
+            samples = max(samples, len(pts))
+            cells = [mine[0]["title"].split(" (")[0], m, f"{pts[0]['dt']:g}"]
+            for key in ("energy_error", "momentum_error", "angmom_error"):
+                vals = [x[key] for x in pts if sd.finite(x[key])]
+                cells.append(r.fmt(max(vals), 2) if vals else "—")
+            end = pts[-1]
+            cells.append("ran to the end" if end["outcome"] == "ok" else f"{end['outcome']} at t = {end['time']:.3g} s")
+            body.append(cells)
+    return "\n\n".join([
+        "### Audit over time\n\nEnergy, momentum and angular momentum against the exact motion at up to "
+        f"{samples} step ends of each run (one time step per problem), every integrator on every integrator problem. The anchored springs' "
+        "momentum is not conserved (the anchor pushes), so it is compared with the exact m·v(t); their angular "
+        "momentum about the anchor is exactly 0 for a motion along the spring.",
+        r.image(rel, "audit", "energy, momentum and angular momentum against time"),
+        r.table(["problem", "integrator", "dt [s]", "largest energy error", "largest momentum error",
+                 "largest angular momentum error", "run"], body)])

@@ -328,6 +328,7 @@ def document(sections, facts, elapsed):
         "front: no other run of any method is both cheaper and more accurate.",
         sections["accuracy"],
         ACCURACY_WORDS.format(**facts),
+        sections.get("audit", ""),
         "## 2. Stability: where each integrator's step limit is\n\nA damped spring, u'' = −ω²u − 2γu' "
         f"(unit mass, ω = {facts['damped_omega']} rad/s, damping ratio ζ = γ/ω), is where the limits are "
         "real: explicit Euler is stable only with damping, symplectic Euler's limit moves with it, and "
