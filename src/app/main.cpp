@@ -1,7 +1,9 @@
 // FOSSSim's command line: load, then grade (-i), show (window) or run headless.
 #include "frontends.h"
 #include "options.h"
+#include "output_files.h"
 #include "outputs.h"
+#include "signals.h"
 #include "verify_output.h"
 
 #include "fosssim/core/simulator.h"
@@ -23,22 +25,19 @@ int fail(const std::string& message) {
   return kExitFailure;
 }
 
-/// Runs every step without a window, feeding the observers.
+/// Runs every step without a window, feeding the observers. SIGINT and SIGTERM (signals.h) end
+/// the run between steps.
 int runHeadless(SceneFile& file, Simulator& simulator, ObserverList& observers) {
   State state = file.initial;
   Status status = Status::ok();
   for (auto& o : observers.items)
     if (status) status = o->start(file, state, simulator.layout());
-  for (long k = 0, steps = file.scene.numSteps(); status && k < steps; ++k) {
+  for (long k = 0, steps = file.scene.numSteps(); status && k < steps && !stopSignal(); ++k) {
     status = simulator.step(file.scene, state, &observers);
     for (auto& o : observers.items)
       if (status) status = o->afterStep(file, state, simulator.log());
   }
-  for (auto& o : observers.items) {
-    Status finished = o->finish();
-    if (status && !finished) status = finished;
-  }
-  return status ? kExitOk : fail(status.message());
+  return endRun(observers, status, state, file.scene.numSteps());
 }
 
 int run(int argc, char** argv) {
@@ -66,18 +65,21 @@ int run(int argc, char** argv) {
   SimulatorOptions simOptions;
   simOptions.handler.compat = options.compat;
   simOptions.handler.threads = options.threads;
-  simOptions.logPolynomials = !options.output.empty() || !options.input.empty();
+  simOptions.logPolynomials = (!options.output.empty() && !options.compact) || !options.input.empty();
   std::unique_ptr<Simulator> simulator;
   if (Status s = Simulator::create(file.scene, simOptions, simulator); !s) return fail(s.message());
 
   if (!options.input.empty()) {
-    const GradeReport report = gradeFile(file.scene, file.initial, *simulator, simOptions, options.input, std::cout);
-    if (report.unreadable) return fail(report.structuralError);  // one error, no verdicts on nothing
+    const GradeReport report = gradeTrajectory(file.scene, file.initial, *simulator, options.input, std::cout);
     return report.passed(GradeTolerances{}) ? kExitOk : kExitFailure;
   }
 
+  // Before any output is opened: none may be an input.
+  if (Status s = checkOutputsAgainstInputs(options); !s) return fail(s.message());
+  installStopHandlers();
   ObserverList observers;
-  if (!options.output.empty()) observers.items.push_back(std::make_unique<TrajectoryOutput>(options.output));
+  if (!options.output.empty())
+    observers.items.push_back(std::make_unique<TrajectoryOutput>(options.output, options.compact));
   if (options.verify) observers.items.push_back(std::make_unique<VerifyOutput>(*simulator));
   if (Status s = addPictureOutputs(options, file, observers); !s) return fail(s.message());
 

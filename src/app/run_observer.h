@@ -5,9 +5,14 @@
 #include "fosssim/io/scene_file.h"
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace fosssim::app {
+
+/// How a run ended. Only a completed run (every step, or the window closed by the user) gives
+/// -o and --movie their final names (output_files.h).
+enum class RunEnd { Completed, Failed, Interrupted };
 
 class RunObserver : public StepObserver {
  public:
@@ -17,8 +22,13 @@ class RunObserver : public StepObserver {
   void midStep(const CollisionLog&, State&) override {}
   /// After every step.
   virtual Status afterStep(const SceneFile& file, const State& state, const CollisionLog& log) = 0;
+  /// Before finish(): how the run ended.
+  virtual void ending(RunEnd) {}
   /// After the last step (or after a failure, to release resources).
   virtual Status finish() { return Status::ok(); }
+  /// After finish(), for a run that did not complete: what this output wrote and where it is
+  /// (one line), or empty.
+  virtual std::string written() const { return {}; }
 };
 
 /// Forwards mid-step calls to several observers.
@@ -29,5 +39,11 @@ class ObserverList final : public StepObserver {
     for (auto& o : items) o->midStep(log, state);
   }
 };
+
+/// Ends a run (both frontends): tells every observer how it ended (`status` failed: Failed; a
+/// stop signal: Interrupted; otherwise Completed), finishes them, prints the error and, unless
+/// the run completed, what was written. Returns the exit status: 0, 1, or 128 + the signal.
+/// Implemented in run_end.cpp.
+int endRun(ObserverList& observers, Status status, const State& state, long totalSteps);
 
 }  // namespace fosssim::app

@@ -60,12 +60,16 @@ std::string firstNonFinite(const State& state, const CollisionLog& log, const Re
 
 }  // namespace
 
-Status TrajectoryWriter::open(const std::string& path, RecordLayout layout, std::unique_ptr<TrajectoryWriter>& out) {
+Status TrajectoryWriter::open(const std::string& path, RecordLayout layout, std::unique_ptr<TrajectoryWriter>& out,
+                              const std::string& shownAs) {
   std::unique_ptr<TrajectoryWriter> w(new TrajectoryWriter());
   w->path_ = path;
+  const bool renamed = !shownAs.empty() && shownAs != path;
+  w->name_ = renamed ? shownAs : path;
+  w->realName_ = renamed ? " \"" + path + "\"" : "";
   w->layout_ = layout;
   w->fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-  if (w->fd_ < 0) return Status::error(path + ": cannot create the trajectory file (" + std::strerror(errno) + ")");
+  if (w->fd_ < 0) return Status::error(w->cannot("create") + " (" + std::strerror(errno) + ")");
   out = std::move(w);
   return Status::ok();
 }
@@ -111,7 +115,7 @@ Status TrajectoryWriter::encode(const State& state, const CollisionLog& log, std
 }
 
 Status TrajectoryWriter::append(const std::string& records) {
-  if (fd_ < 0) return Status::error(path_ + ": the trajectory file is already closed");
+  if (fd_ < 0) return Status::error(cannot("write") + ": it is already closed");
   const char* data = records.data();
   std::size_t left = records.size();
   while (left > 0) {
@@ -121,7 +125,7 @@ Status TrajectoryWriter::append(const std::string& records) {
       const int error = n < 0 ? errno : ENOSPC;
       // Cut the file back to its last whole record (not possible on devices: nothing to cut there).
       if (ftruncate(fd_, static_cast<off_t>(size_)) == 0) (void)lseek(fd_, static_cast<off_t>(size_), SEEK_SET);
-      return Status::error(path_ + ": cannot write the trajectory file (" + std::strerror(error) + ")");
+      return Status::error(cannot("write") + " (" + std::strerror(error) + ")");
     }
     data += n;
     left -= static_cast<std::size_t>(n);
@@ -132,15 +136,19 @@ Status TrajectoryWriter::append(const std::string& records) {
 
 Status TrajectoryWriter::write(const State& state, const CollisionLog& log) {
   buffer_.clear();
-  if (Status s = encode(state, log, buffer_); !s) return Status::error(path_ + ": " + s.message());
+  if (Status s = encode(state, log, buffer_); !s) return Status::error(cannot("write") + ": " + s.message());
   return append(buffer_);
+}
+
+std::string TrajectoryWriter::cannot(const std::string& what) const {
+  return name_ + ": cannot " + what + " the trajectory file" + realName_;
 }
 
 Status TrajectoryWriter::close() {
   if (fd_ < 0) return Status::ok();
   const int rc = ::close(fd_);
   fd_ = -1;
-  if (rc != 0) return Status::error(path_ + ": cannot finish writing the trajectory file (" + std::strerror(errno) + ")");
+  if (rc != 0) return Status::error(cannot("finish writing") + " (" + std::strerror(errno) + ")");
   return Status::ok();
 }
 

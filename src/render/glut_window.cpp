@@ -145,6 +145,7 @@ class Window {
 
   void tick() {
     glutTimerFunc(kTickMs, [](int) { if (current) current->tick(); }, 0);
+    if (stopRequested()) return;
     if (paused_ || finished()) {
       updateRate();
       return;
@@ -172,10 +173,17 @@ class Window {
  private:
   bool finished() const { return stepsTaken_ >= settings_.totalSteps || !status_; }
 
+  /// The caller asks the window to close (a signal): it leaves the loop as q does.
+  bool stopRequested() {
+    if (!settings_.stopRequested || !settings_.stopRequested()) return false;
+    glutLeaveMainLoop();
+    return true;
+  }
+
   /// Takes up to n steps; false when it could not (finished or failed).
   bool advance(long n) {
     bool any = false;
-    for (long k = 0; k < n && !finished(); ++k) {
+    for (long k = 0; k < n && !finished() && !stopRequested(); ++k) {
       status_ = step_();
       if (settings_.stepsRenderOffscreen) restoreContext();
       if (!status_) {  // runWindow returns it; the caller reports it

@@ -1,5 +1,6 @@
 // ffmpeg as a child process fed through a pipe. posix_spawn with an argument vector, not popen:
-// no shell, so any output path works as given.
+// no shell; and the output is named with "file:" and its absolute path, so any name is a file to
+// ffmpeg (one beginning with '-' or holding ':' included).
 #include "fosssim/render/movie_writer.h"
 
 #include <cctype>
@@ -9,6 +10,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
+#include <filesystem>
 #include <spawn.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -53,6 +55,15 @@ bool writeAll(int fd, const std::uint8_t* data, std::size_t size, int& error) {
   }
   pthread_sigmask(SIG_SETMASK, &oldSet, nullptr);
   return ok;
+}
+
+/// How ffmpeg must be given the output: it reads a name beginning with '-' as an option and
+/// "name:rest" as a protocol, whatever follows. "file:" and an absolute path is always the file
+/// itself (the format is still chosen by the name's ending).
+std::string ffmpegFileName(const std::string& path) {
+  std::error_code ec;
+  const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
+  return "file:" + (ec ? path : absolute.string());
 }
 
 }  // namespace
@@ -101,7 +112,7 @@ Status MovieWriter::open(const std::string& path, int width, int height, double 
       args.emplace_back(a);
     if (!endsWith(path, ".mkv")) args.insert(args.end(), {"-movflags", "+faststart"});
   }
-  args.push_back(path);
+  args.push_back(ffmpegFileName(path));
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -113,8 +124,15 @@ Status MovieWriter::open(const std::string& path, int width, int height, double 
   posix_spawn_file_actions_adddup2(&actions, pipeFds[0], STDIN_FILENO);
   posix_spawn_file_actions_addclose(&actions, pipeFds[0]);
   posix_spawn_file_actions_addclose(&actions, pipeFds[1]);
+  // A process group of its own: Ctrl-C in a terminal reaches FOSSSim only, which then finishes
+  // its step and closes the pipe, so ffmpeg ends the movie properly instead of dying with it.
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+  posix_spawnattr_setpgroup(&attributes, 0);
   pid_t pid = -1;
-  const int rc = posix_spawn(&pid, ffmpeg.c_str(), &actions, nullptr, argv.data(), environ);
+  const int rc = posix_spawn(&pid, ffmpeg.c_str(), &actions, &attributes, argv.data(), environ);
+  posix_spawnattr_destroy(&attributes);
   posix_spawn_file_actions_destroy(&actions);
   ::close(pipeFds[0]);
   if (rc != 0) {

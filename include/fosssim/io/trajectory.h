@@ -28,8 +28,10 @@ struct TrajectoryRecord {
 /// trajectory_writer.cpp.
 class TrajectoryWriter {
  public:
-  /// Creates (truncates) the file.
-  static Status open(const std::string& path, RecordLayout layout, std::unique_ptr<TrajectoryWriter>& out);
+  /// Creates (truncates) the file. Messages name it `shownAs` when given (the name the user
+  /// knows, e.g. the final name of a file written under a temporary one), followed by the path.
+  static Status open(const std::string& path, RecordLayout layout, std::unique_ptr<TrajectoryWriter>& out,
+                     const std::string& shownAs = "");
   ~TrajectoryWriter();
   TrajectoryWriter(const TrajectoryWriter&) = delete;
   TrajectoryWriter& operator=(const TrajectoryWriter&) = delete;
@@ -49,7 +51,10 @@ class TrajectoryWriter {
 
  private:
   TrajectoryWriter() = default;
+  /// "<name>: cannot <what> the trajectory file[ \"<path>\"]"
+  std::string cannot(const std::string& what) const;
   std::string path_;
+  std::string name_, realName_;  ///< for messages: shownAs (or the path), and the path when they differ
   RecordLayout layout_;
   int fd_ = -1;
   std::uint64_t size_ = 0;
@@ -62,21 +67,14 @@ class TrajectoryReader {
   static Status open(const std::string& path, int numParticles, RecordLayout layout,
                      std::unique_ptr<TrajectoryReader>& out);
   /// Reads the next record. At a clean end of the file returns ok with `atEnd` true; a record
-  /// that does not fit is an error naming record and byte: "the file ends early at record N (byte
-  /// B of S)" when what the record announces runs past the end, "record N (byte B of S):
-  /// impossible ..." for negative counts and unknown kinds. An error after the positions and
-  /// velocities leaves them in `record` (x and v are empty otherwise), so that a caller can tell
-  /// another scene's file by its values.
+  /// that does not fit (truncated, negative or absurd counts) is an error naming record and byte.
   Status next(TrajectoryRecord& record, bool& atEnd);
   long recordsRead() const { return records_; }
   std::uint64_t fileSize() const { return size_; }
-  /// Bytes read so far (the end of the last whole record after a successful next()).
-  std::uint64_t offset() const { return offset_; }
 
  private:
   TrajectoryReader() = default;
   Status fail(const std::string& what) const;
-  Status endsEarly(const std::string& what) const;
   bool readBytes(void* into, std::uint64_t bytes);
   std::string path_;
   int n_ = 0;

@@ -77,6 +77,8 @@ class FrameOutputs {
   Status afterStep(const SceneFile& file, const State& state);
   /// Finishes every sink; the first failure is returned.
   Status finish();
+  /// The frames made so far (the number of the last one).
+  long frames() const { return sequence_.frameNumber(); }
 
  private:
   FrameSequence sequence_;

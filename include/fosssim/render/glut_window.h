@@ -26,6 +26,9 @@ struct WindowSettings {
   /// The step function draws off-screen frames (OffscreenRenderer) on this thread: the window
   /// then re-binds its own context after every step.
   bool stepsRenderOffscreen = false;
+  /// Asked between steps and every timer tick (10 ms), paused or not: true closes the window as
+  /// q does (the caller's SIGINT/SIGTERM flag). May be empty.
+  std::function<bool()> stopRequested;
 };
 
 /// Opens the window and runs its event loop until the user quits (q, Esc or closing it).

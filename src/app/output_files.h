@@ -1,0 +1,53 @@
+// Output files that never destroy an input and never leave a half-written file under their name.
+//
+// - Every output (-o, --movie, the frames of -m and -g) is compared with the inputs (-s, -i) by
+//   device and inode before anything is opened: the same file under another name, through a
+//   symbolic or a hard link, is refused.
+// - -o and --movie are written under a partial name next to the final one ("out.bin" is written
+//   as "out.partial.bin", "run.mp4" as "run.partial.mp4": ffmpeg picks the format by the ending)
+//   and renamed to the final name when the run completes (all steps, or the window closed by the
+//   user). After an error or a signal the partial file stays, holding whole records (a movie
+//   closed properly), and the final name is untouched: an older file of that name is left as it
+//   was. A process killed outright (SIGKILL, power loss) leaves only the partial file.
+// - Devices and named pipes (-o /dev/null) are written directly: there is nothing to rename.
+#pragma once
+
+#include "options.h"
+
+#include "fosssim/core/status.h"
+
+#include <string>
+
+namespace fosssim::app {
+
+/// "dir/out.bin" -> "dir/out.partial.bin"; "traj" -> "traj.partial".
+std::string partialName(const std::string& path);
+
+/// Fails (naming both) when an output of `options` is the same file as one of its inputs, or
+/// -o and --movie are the same file.
+Status checkOutputsAgainstInputs(const Options& options);
+
+/// One output written under its partial name and renamed at the end.
+class StagedFile {
+ public:
+  /// Chooses where the data goes while the run lasts and removes a stale partial file (the
+  /// partial name is FOSSSim's own). `what` names the option in messages ("-o", "--movie").
+  static Status prepare(const std::string& finalPath, const std::string& what, StagedFile& out);
+
+  /// Where to write now: the partial name, or the final one for devices and pipes.
+  const std::string& writePath() const { return writePath_; }
+  const std::string& finalPath() const { return finalPath_; }
+  bool staged() const { return writePath_ != renameTo_; }
+
+  /// The run completed: the partial file takes the final name (and the old file's permissions).
+  Status commit();
+  /// For the summary of a run that did not complete: where its data is.
+  std::string whereIncomplete() const;
+
+ private:
+  std::string finalPath_;  ///< as the user gave it
+  std::string renameTo_;   ///< the final path, a symbolic link resolved (the link keeps pointing at it)
+  std::string writePath_;
+};
+
+}  // namespace fosssim::app
