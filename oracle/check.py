@@ -26,6 +26,15 @@ import checks_t2m2  # noqa: E402,F401 - registers its checks
 
 # ---- driver ------------------------------------------------------------------------------------------
 
+def read_mode(oracle):
+    """The mode oracle/MODE says made the files: its last line that is not a comment."""
+    path = os.path.join(oracle, 'MODE')
+    if not os.path.exists(path):
+        return None
+    lines = [l.strip() for l in open(path) if l.strip() and not l.lstrip().startswith('#')]
+    return lines[-1] if lines else ''
+
+
 def main():
     here = os.path.dirname(os.path.abspath(__file__))
     ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
@@ -42,6 +51,16 @@ def main():
                    if f.endswith('.xml') and not os.path.relpath(d, assets).split(os.sep)[0] == 'showcase')
     scenes = args.scenes or found
     failed = 0
+    # The checks of continuous-time and hybrid files (default_mode) are the default mode's promises:
+    # files said to be made by another mode must not pass them unnoticed, nor files of no stated mode.
+    mode = read_mode(oracle)
+    mode_failed = mode != 'default'
+    if mode_failed:
+        print('FAIL %s: says %r; these checks are for files made in the default mode (no --compat)' %
+              (os.path.join(oracle, 'MODE'), mode) if mode is not None else
+              'FAIL %s is missing: the files must say which mode made them' % os.path.join(oracle, 'MODE'))
+    elif args.verbose:
+        print('mode: default (%s)' % os.path.join(oracle, 'MODE'))
     for rel in scenes:
         notes = []
         try:
@@ -68,9 +87,10 @@ def main():
     for rel in stale if not args.scenes else []:
         failed += 1
         print('FAIL %s: a check exists but the scene does not' % rel)
-    if not args.markdown or failed:
-        print('%d passed, %d failed' % (len(scenes) - min(failed, len(scenes)), failed))
-    return 1 if failed else 0
+    if not args.markdown or failed or mode_failed:
+        print('%d passed, %d failed%s' % (len(scenes) - min(failed, len(scenes)), failed,
+                                          '; oracle/MODE failed' if mode_failed else ''))
+    return 1 if failed or mode_failed else 0
 
 
 if __name__ == '__main__':
