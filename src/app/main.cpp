@@ -4,6 +4,7 @@
 #include "output_files.h"
 #include "outputs.h"
 #include "signals.h"
+#include "stats_output.h"
 #include "verify_output.h"
 
 #include "fosssim/core/simulator.h"
@@ -70,7 +71,8 @@ int run(int argc, char** argv) {
   if (Status s = Simulator::create(file.scene, simOptions, simulator); !s) return fail(s.message());
 
   if (!options.input.empty()) {
-    const GradeReport report = gradeTrajectory(file.scene, file.initial, *simulator, options.input, std::cout);
+    const GradeReport report = gradeFile(file.scene, file.initial, *simulator, simOptions, options.input, std::cout);
+    if (report.unreadable) return fail(report.structuralError);  // one error, no verdicts on nothing
     return report.passed(GradeTolerances{}) ? kExitOk : kExitFailure;
   }
 
@@ -81,6 +83,7 @@ int run(int argc, char** argv) {
   if (!options.output.empty())
     observers.items.push_back(std::make_unique<TrajectoryOutput>(options.output, options.compact));
   if (options.verify) observers.items.push_back(std::make_unique<VerifyOutput>(*simulator));
+  if (!options.stats.empty()) observers.items.push_back(std::make_unique<StatsOutput>(options.stats, *simulator));
   if (Status s = addPictureOutputs(options, file, observers); !s) return fail(s.message());
 
   if (options.display) {

@@ -29,7 +29,7 @@ constexpr double kMinFps = 0.01, kMaxFps = 1000;
 /// The words given for each value option, in order (an option given twice has two).
 struct Given {
   std::vector<std::string> scene, display, paused, pngs, output, input, svgDir;
-  std::vector<std::string> threads, frameSize, frameEvery, pngDir, movie, fps;
+  std::vector<std::string> threads, frameSize, frameEvery, pngDir, movie, fps, stats;
 };
 
 /// -h's layout: the usage line first, names as "-h, --help", descriptions wrapped at 100 columns.
@@ -139,6 +139,10 @@ void define(CLI::App& app, Options& o, Given& g) {
         "threads for collision detection and the penalty force, 1 to " + std::to_string(kMaxThreads) +
             " (default 1); the results are the same for every N (scenes of a few thousand particles and up use "
             "them)");
+  value("--stats", g.stats, "FILE", run,
+        "write per-step diagnostics to FILE as CSV: time, kinetic and potential energy (per force), momentum, "
+        "angular momentum, contacts, failsafe zones and the step's cost by phase (README, \"Per-step "
+        "diagnostics\")");
   flag("--strict", o.strict, run, "warnings about the scene file are errors (exit 1)");
   flag("--check", o.check, run,
        "load and check the scene, report its warnings and errors, run nothing; no output options with it");
@@ -296,7 +300,7 @@ bool checkCombinations(const Options& o, const Given& g, Judge& judge, std::vect
   const std::vector<std::pair<bool, std::string>> outputs = {
       {!o.output.empty(), "-o"},       {o.pngs, "-g 1"},         {!o.svgDir.empty(), "-m"},
       {!o.movie.empty(), "--movie"},   {o.verify, "--verify"},   {o.compact, "--compact"},
-      {o.keepOpen, "--keep-open"},
+      {o.keepOpen, "--keep-open"},     {!o.stats.empty(), "--stats"},
   };
   if (!o.output.empty() && !o.input.empty())
     return judge.fail("-o (write a trajectory) and -i (grade one) cannot be used together");
@@ -375,6 +379,7 @@ bool parseOptions(int argc, char** argv, Options& o, std::string& error) {
       !judge.frameSize(g.frameSize) ||
       !judge.integer("--frame-every", g.frameEvery, maxFrameEvery, o.frameEvery, "a positive integer") ||
       !judge.single("--png-dir", g.pngDir, o.pngDir) || !judge.single("--movie", g.movie, o.movie) ||
+      !judge.single("--stats", g.stats, o.stats) ||
       !judge.fps(g.fps))
     return false;
   if (o.help || o.version) return true;

@@ -23,6 +23,7 @@ struct Options {
   int frameEvery = 1;       ///< --frame-every K: write only every K-th frame
   std::string pngDir = "pngs";  ///< --png-dir: where -g writes
   std::string movie;        ///< --movie out.mp4: frames piped into ffmpeg
+  std::string stats;        ///< --stats FILE: per-step diagnostics as CSV (stats_output.h)
   double fps = 0;           ///< --fps for --movie; 0: real time, 1 / (dt * frameEvery) (raster_frames.h)
   bool titleCard = false;   ///< --title-card: the movie opens with the scene's description
   bool keepOpen = false;    ///< --keep-open: the window stays open when the scene ends
