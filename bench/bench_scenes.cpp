@@ -4,11 +4,9 @@
 #include "fosssim/core/forces.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <ostream>
 #include <random>
 
 namespace fosssim::bench {
@@ -44,9 +42,7 @@ class Builder {
   void link(int i, int j, double radius, double k, double l0, double damping) {
     s_.scene.edges.push_back(Edge{i, j, radius});
     if (k == 0) return;
-    const int edge = static_cast<int>(s_.scene.edges.size()) - 1;
     s_.scene.forces.push_back(std::make_unique<SpringForce>(i, j, k, l0, damping));
-    s_.springs.push_back(BenchScene::Spring{edge, k, l0, damping});
   }
   void finish(const std::string& collision, const Setup& setup) {
     Scene& scene = s_.scene;
@@ -199,17 +195,10 @@ std::vector<std::string> collisionTypes() {
 
 namespace {
 
-/// The shortest decimal that reads back as exactly `x` (0.05, not 0.050000000000000003).
-std::string num(double x) {
-  char text[32];
-  const auto end = std::to_chars(text, text + sizeof text, x).ptr;
-  return std::string(text, end);
-}
-
 /// A viewport that frames the scene: the particles' discs and the half-planes' anchor points (the
 /// floor, the walls, the V's tip), with a margin; half-height from the larger side, so that a
 /// square picture (the default) shows it all.
-std::string viewport(const BenchScene& s) {
+Viewport framing(const BenchScene& s) {
   const Scene& scene = s.scene;
   double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
   const auto include = [&](double x, double y, double r) {
@@ -220,45 +209,27 @@ std::string viewport(const BenchScene& s) {
   };
   for (int p = 0; p < scene.numParticles(); ++p) include(s.state.x[2 * p], s.state.x[2 * p + 1], scene.radius[p]);
   for (const HalfPlane& h : scene.halfplanes) include(h.point.x(), h.point.y(), 0);
-  if (!(lo[0] <= hi[0])) return "";
-  const double size = 0.55 * std::max({hi[0] - lo[0], hi[1] - lo[1], 1e-3});
-  // Rounded to 4 significant digits: a camera needs no more, and the file stays readable.
+  if (!(lo[0] <= hi[0])) return Viewport{};
+  // Rounded to 4 significant digits (a camera needs no more, and the file stays readable); the
+  // 10% margin covers the rounding.
   const auto round = [](double x) {
     char text[32];
     std::snprintf(text, sizeof text, "%.4g", x);
     return std::strtod(text, nullptr);
   };
-  return "  <viewport cx=\"" + num(round(0.5 * (lo[0] + hi[0]))) + "\" cy=\"" + num(round(0.5 * (lo[1] + hi[1]))) +
-         "\" size=\"" + num(round(size)) + "\"/>\n";
+  const double size = 0.55 * std::max({hi[0] - lo[0], hi[1] - lo[1], 1e-3});
+  return Viewport{round(0.5 * (lo[0] + hi[0])), round(0.5 * (lo[1] + hi[1])), round(size)};
 }
 
 }  // namespace
 
-void writeSceneFile(const BenchScene& s, std::ostream& out) {
-  const Scene& scene = s.scene;
-  out << "<scene>\n  <description text=\"" << s.description << " (fosssim-scenegen)\"/>\n";
-  out << "  <duration time=\"" << num(scene.duration) << "\"/>\n";
-  out << "  <integrator type=\"" << scene.integrator << "\" dt=\"" << num(scene.dt) << "\"/>\n";
-  out << "  <collision type=\"" << scene.collision.type << "\" COR=\"" << num(scene.collision.cor) << "\"";
-  if (scene.collision.type == "hybrid") out << " maxiters=\"" << scene.collision.maxIterations << "\"";
-  if (scene.collision.penaltyThickness > 0)
-    out << " k=\"" << num(scene.collision.penaltyK) << "\" thickness=\"" << num(scene.collision.penaltyThickness)
-        << "\"";
-  out << "/>\n" << viewport(s);
-  for (int p = 0; p < scene.numParticles(); ++p)
-    out << "  <particle m=\"" << num(scene.massOf(p)) << "\" px=\"" << num(s.state.x[2 * p]) << "\" py=\""
-        << num(s.state.x[2 * p + 1]) << "\" vx=\"" << num(s.state.v[2 * p]) << "\" vy=\"" << num(s.state.v[2 * p + 1])
-        << "\" fixed=\"" << (scene.isFixed(p) ? 1 : 0) << "\" radius=\"" << num(scene.radius[p]) << "\"/>\n";
-  for (const Edge& e : scene.edges)
-    out << "  <edge i=\"" << e.i << "\" j=\"" << e.j << "\" radius=\"" << num(e.radius) << "\"/>\n";
-  for (const HalfPlane& h : scene.halfplanes)
-    out << "  <halfplane px=\"" << num(h.point.x()) << "\" py=\"" << num(h.point.y()) << "\" nx=\"" << num(h.normal.x())
-        << "\" ny=\"" << num(h.normal.y()) << "\"/>\n";
-  for (const BenchScene::Spring& sp : s.springs)
-    out << "  <springforce edge=\"" << sp.edge << "\" k=\"" << num(sp.k) << "\" l0=\"" << num(sp.l0) << "\" b=\""
-        << num(sp.b) << "\"/>\n";
-  if (s.gravity != 0) out << "  <simplegravity fx=\"0\" fy=\"" << num(s.gravity) << "\"/>\n";
-  out << "</scene>\n";
+SceneFile toSceneFile(BenchScene s) {
+  SceneFile file;
+  file.description = s.description + " (fosssim-scenegen)";
+  file.look.viewport = framing(s);
+  file.scene = std::move(s.scene);
+  file.initial = std::move(s.state);
+  return file;
 }
 
 }  // namespace fosssim::bench

@@ -13,8 +13,8 @@
 
 #include "fosssim/core/scene.h"
 #include "fosssim/core/state.h"
+#include "fosssim/io/scene_file.h"
 
-#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -25,14 +25,7 @@ struct BenchScene {
   Scene scene;
   State state;
   std::string description;
-  /// What the forces in scene.forces are, for writing the scene file (forces keep their
-  /// parameters to themselves).
-  struct Spring {
-    int edge;
-    double k, l0, b;
-  };
-  std::vector<Spring> springs;
-  double gravity = 0;
+  double gravity = 0;  ///< the SimpleGravityForce's y component (0: none), for engines that take it as a setting
 };
 
 /// The scene kinds, in the order the benchmark shows them.
@@ -45,7 +38,8 @@ std::vector<std::string> collisionTypes();
 /// <collision type>; the seed fixes the random velocities and jitter. Unknown kind: false.
 bool makeScene(const std::string& kind, int n, const std::string& collision, unsigned seed, BenchScene& out);
 
-/// Writes the scene as a FOSSSim scene file (the same scene the benchmark steps).
-void writeSceneFile(const BenchScene& s, std::ostream& out);
+/// The scene as a scene file (fosssim-scenegen writes it with sceneToXml): the same scene the
+/// benchmark steps, its description, and a <viewport> that frames it.
+SceneFile toSceneFile(BenchScene s);
 
 }  // namespace fosssim::bench

@@ -1,7 +1,7 @@
 // fosssim-box2d-pile: FOSSSim's `rain` pile stepped by Box2D 2.4 (Debian's libbox2d-dev), so the
 // README can compare milliseconds per step on a pile that flows in both engines.
 //
-//   fosssim-box2d-pile [N ...]      default N = 1000 2500 10000
+//   fosssim-box2d-pile [N ...]      default N = 1000 2500 10000 (-h: the options)
 //
 // The scene is not rebuilt by hand: the positions, masses, radii, half-planes, gravity, dt and
 // step count all come from bench::makeScene("rain", N, "hybrid", 1, ...), exactly what
@@ -15,6 +15,8 @@
 // figures are printed (the machine may be shared). Per 100-step block as well as in total, because
 // the cost of a pile changes as it falls, piles up and (in Box2D) goes to sleep.
 #include "bench_scenes.h"
+
+#include "cli_values.h"
 
 #include <box2d/box2d.h>
 
@@ -126,16 +128,13 @@ RunResult run(const BenchScene& s, long steps) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<int> sizes;
-  for (int k = 1; k < argc; ++k) {
-    const int n = std::atoi(argv[k]);
-    if (n <= 0) {
-      std::fprintf(stderr, "usage: fosssim-box2d-pile [N ...]  (positive particle counts)\n");
-      return 2;
-    }
-    sizes.push_back(n);
-  }
-  if (sizes.empty()) sizes = {1000, 2500, 10000};
+  std::vector<int> sizes = {1000, 2500, 10000};
+  CLI::App app("FOSSSim's rain pile stepped by Box2D 2.4 (same positions), ms per step: the README's comparison.",
+               "fosssim-box2d-pile");
+  app.add_option("N", sizes, "particle counts, each 1 to 10^6 (default 1000 2500 10000)")
+      ->option_text("N ...")
+      ->check(fosssim::cli::integerIn(1, 1000000));
+  if (const int status = fosssim::cli::parseCommandLine(app, argc, argv); status >= 0) return status;
 
   // The library's b2_version says 2.4.0 in the 2.4.1 release: print the package's version too.
   std::printf("Box2D %s (b2_version %d.%d.%d): FOSSSim's rain pile (same positions), %d velocity / %d position iterations, "

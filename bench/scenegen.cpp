@@ -3,6 +3,7 @@
 #include "bench_scenes.h"
 
 #include "cli_values.h"
+#include "fosssim/io/scene_writer.h"
 
 #include <iostream>
 #include <string>
@@ -32,7 +33,12 @@ int main(int argc, char** argv) {
 
   bench::BenchScene scene;
   if (!bench::makeScene(kind, static_cast<int>(n), collision, 1, scene)) return 1;  // kinds were checked above
-  bench::writeSceneFile(scene, std::cout);
+  std::string xml;
+  if (Status s = sceneToXml(bench::toSceneFile(std::move(scene)), xml); !s) {
+    std::cerr << "fosssim-scenegen: " << s.message() << "\n";
+    return 1;
+  }
+  std::cout << xml;
   std::cout.flush();
   if (!std::cout) {
     std::cerr << "fosssim-scenegen: could not write the scene to stdout\n";

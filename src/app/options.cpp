@@ -159,10 +159,9 @@ void define(CLI::App& app, Options& o, Given& g) {
         "3, ... (default 1; needs -g 1, -m or --movie)");
   value("--png-dir", g.pngDir, "DIR", pictures, "folder for -g 1 frames (default pngs; created if needed; needs -g 1)");
   value("--movie", g.movie, "FILE.mp4", pictures, "pipe frames straight into ffmpeg (no PNG files); needs ffmpeg");
-  std::ostringstream fps;
-  fps << Options{}.fps;
   value("--fps", g.fps, "N", pictures,
-        "frame rate of --movie, decimals allowed (e.g. 29.97; default " + fps.str() + "; needs --movie)");
+        "frame rate of --movie, decimals allowed (e.g. 29.97); default: real time, 1 / (dt x K) with dt the "
+        "scene's and K --frame-every's (needs --movie)");
   flag("--title-card", o.titleCard, pictures, "the movie opens with the scene's description (needs --movie)");
   flag("--keep-open", o.keepOpen, pictures,
        "the window stays open when the scene ends (by default it closes, as the course's did; not with -d 0 "
@@ -353,7 +352,9 @@ bool parseOptions(int argc, char** argv, Options& o, std::string& error) {
   } catch (const CLI::ArgumentMismatch& e) {
     const std::string what = e.what();
     if (const size_t k = what.find(" was given a disallowed flag override"); k != std::string::npos) {
-      error = "option " + what.substr(0, k) + " takes no value";
+      std::string name = what.substr(0, k);  // CLI11 names it without its dashes
+      if (name[0] != '-') name = (name.size() == 1 ? "-" : "--") + name;
+      error = "option " + name + " takes no value";
       return false;
     }
     // Otherwise thrown only when the words ran out before an option's value: the last word is it.
