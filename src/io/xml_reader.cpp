@@ -1,10 +1,13 @@
 #include "xml_reader.h"
 
+#include "spelling.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <stdexcept>
 
 namespace fosssim::io {
 namespace {
@@ -17,42 +20,57 @@ std::string quoted(const char* value) {
   return "\"" + s + "\"";
 }
 
+bool numeric(Kind kind) { return kind != Kind::Text; }
+
 }  // namespace
 
-ElementReader::ElementReader(const tinyxml2::XMLElement& element, const std::string& file)
-    : element_(element), file_(file) {}
+ElementReader::ElementReader(const tinyxml2::XMLElement& element, const ElementSpec& spec, SceneMessages& messages,
+                             const std::string& file)
+    : element_(element), spec_(spec), messages_(messages), file_(file) {}
 
-std::string ElementReader::where() const {
-  return file_ + ":" + std::to_string(line()) + ": <" + name() + ">";
-}
+std::string ElementReader::where() const { return file_ + ":" + std::to_string(line()) + ": <" + name() + ">"; }
 
 std::string ElementReader::where(const char* attribute) const {
   return where() + " attribute '" + attribute + "'";
 }
 
-void ElementReader::fail(const char* attribute, const std::string& what) const {
-  throw LoadError(where(attribute) + ": " + what);
+void ElementReader::fail(const char* attribute, const std::string& what) {
+  ok_ = false;
+  messages_.error(line(), where(attribute) + ": " + what);
 }
 
-void ElementReader::fail(const std::string& what) const { throw LoadError(where() + ": " + what); }
-
-const tinyxml2::XMLAttribute* ElementReader::find(const char* attributeName) {
-  if (std::find(asked_.begin(), asked_.end(), attributeName) == asked_.end())
-    asked_.emplace_back(attributeName);
-  return element_.FindAttribute(attributeName);
+void ElementReader::fail(const std::string& what) {
+  ok_ = false;
+  messages_.error(line(), where() + ": " + what);
 }
 
-const tinyxml2::XMLAttribute& ElementReader::require(const char* attributeName) {
-  const tinyxml2::XMLAttribute* a = find(attributeName);
-  if (!a) fail(attributeName, "missing (required)");
+const AttributeSpec& ElementReader::declared(const char* attributeName, bool isNumeric) const {
+  const AttributeSpec* a = spec_.attribute(attributeName);
+  // The table is the format's definition: reading an attribute it does not declare (or as
+  // another kind) would make docs/scene-format.md wrong. The element-table test loads every
+  // element, so this cannot reach a user.
+  if (!a || numeric(a->kind) != isNumeric)
+    throw std::logic_error(std::string("element table: <") + spec_.name + "> attribute '" + attributeName +
+                           "' is read but not declared as such");
   return *a;
 }
 
-bool ElementReader::has(const char* attributeName) const {
-  return element_.FindAttribute(attributeName) != nullptr;
+const tinyxml2::XMLAttribute* ElementReader::find(const char* attributeName) {
+  if (std::find(asked_.begin(), asked_.end(), attributeName) == asked_.end()) asked_.emplace_back(attributeName);
+  const tinyxml2::XMLAttribute* a = element_.FindAttribute(attributeName);
+  if (!a && !spec_.attribute(attributeName)->fallback) {
+    std::string hint;
+    std::vector<std::string> wanted = {attributeName};
+    for (const tinyxml2::XMLAttribute* other = element_.FirstAttribute(); other; other = other->Next())
+      if (!spec_.attribute(other->Name()) && !closestName(other->Name(), wanted).empty())
+        hint = "; is '" + std::string(other->Name()) + "' a misspelling of it?";
+    missing_.emplace_back(attributeName);
+    fail(attributeName, "missing (required)" + hint);
+  }
+  return a;
 }
 
-double ElementReader::parseNumber(const tinyxml2::XMLAttribute& attribute) const {
+bool ElementReader::parseNumber(const tinyxml2::XMLAttribute& attribute, double& value) {
   // Stricter than the reference's stream extraction: surrounding whitespace is allowed (the course
   // scenes have px=" 1.0"), trailing junk is not ("1.5abc" would silently read 1.5 there).
   const char* text = attribute.Value();
@@ -60,84 +78,103 @@ double ElementReader::parseNumber(const tinyxml2::XMLAttribute& attribute) const
   while (isSpace(*p)) ++p;
   char* end = nullptr;
   errno = 0;
-  const double value = std::strtod(p, &end);
+  value = std::strtod(p, &end);
   const char* rest = end;
   while (rest && isSpace(*rest)) ++rest;
-  if (end == p || *rest != '\0')
+  if (end == p || *rest != '\0') {
     fail(attribute.Name(), "expected a number, got " + quoted(text));
+    return false;
+  }
   // ERANGE also flags underflow ("1e-400" reads as 0 or a denormal), which is a fine value.
-  if (!std::isfinite(value) || (errno == ERANGE && std::fabs(value) > 1.0))
+  if (!std::isfinite(value) || (errno == ERANGE && std::fabs(value) > 1.0)) {
     fail(attribute.Name(), "expected a finite number, got " + quoted(text));
+    return false;
+  }
+  return true;
+}
+
+double ElementReader::checked(const AttributeSpec& spec, const tinyxml2::XMLAttribute& attribute) {
+  double value = 0;
+  if (!parseNumber(attribute, value)) return 1.0;  // a placeholder that upsets no later check
+  const std::string got = ", got " + quoted(attribute.Value());
+  switch (spec.kind) {
+    case Kind::Positive:
+      if (!(value > 0)) return fail(spec.name, "must be > 0" + got), 1.0;
+      break;
+    case Kind::NonNegative:
+      if (value < 0) return fail(spec.name, "must be >= 0" + got), 1.0;
+      break;
+    case Kind::Fraction:
+      if (value < 0 || value > 1) return fail(spec.name, std::string("must lie in [0, 1]") + got), 1.0;
+      break;
+    case Kind::Index:
+      if (value != std::floor(value) || std::fabs(value) > 2e9)
+        return fail(spec.name, "expected an integer" + got), -1.0;
+      if (value < 0) return fail(spec.name, "expected an index >= 0" + got), -1.0;
+      break;
+    case Kind::Flag:
+      if (value != 0 && value != 1) return fail(spec.name, "expected 0 or 1" + got), 0.0;
+      break;
+    default:
+      break;
+  }
+  if (spec.max > 0 && value > spec.max) {
+    fail(spec.name, "must be at most " + shortNumber(spec.max) + got + ": " + spec.maxReason);
+    return spec.max;
+  }
   return value;
 }
 
 double ElementReader::number(const char* attributeName) {
-  return parseNumber(require(attributeName));
-}
-
-double ElementReader::number(const char* attributeName, double fallback) {
+  const AttributeSpec& spec = declared(attributeName, true);
+  if (spec.computedDefault())
+    throw std::logic_error(std::string("element table: <") + spec_.name + "> attribute '" + attributeName +
+                           "' has a computed default: the reader must give it");
   const tinyxml2::XMLAttribute* a = find(attributeName);
-  return a ? parseNumber(*a) : fallback;
+  if (a) return checked(spec, *a);
+  return spec.fallback ? std::strtod(spec.fallback, nullptr) : (spec.kind == Kind::Index ? -1.0 : 1.0);
 }
 
-double ElementReader::positive(const char* attributeName, bool allowZero) {
-  const double value = number(attributeName);
-  if (value < 0 || (!allowZero && value == 0))
-    fail(attributeName, std::string("must be ") + (allowZero ? ">= 0" : "> 0") + ", got " +
-                            quoted(element_.Attribute(attributeName)));
-  return value;
-}
-
-double ElementReader::positive(const char* attributeName, double fallback, bool allowZero) {
-  return has(attributeName) ? positive(attributeName, allowZero) : (find(attributeName), fallback);
-}
-
-int ElementReader::integer(const char* attributeName) {
-  const double value = number(attributeName);
-  if (value != std::floor(value) || std::fabs(value) > 2e9)
-    fail(attributeName, "expected an integer, got " + quoted(element_.Attribute(attributeName)));
-  return static_cast<int>(value);
+double ElementReader::number(const char* attributeName, double computedDefault) {
+  const AttributeSpec& spec = declared(attributeName, true);
+  if (!spec.computedDefault())
+    throw std::logic_error(std::string("element table: <") + spec_.name + "> attribute '" + attributeName +
+                           "' has its default in the table");
+  const tinyxml2::XMLAttribute* a = find(attributeName);
+  return a ? checked(spec, *a) : computedDefault;
 }
 
 int ElementReader::index(const char* attributeName) {
-  const int value = integer(attributeName);
-  if (value < 0) fail(attributeName, "expected an index >= 0, got " + std::to_string(value));
-  return value;
+  if (declared(attributeName, true).kind != Kind::Index)
+    throw std::logic_error(std::string("element table: <") + spec_.name + "> attribute '" + attributeName + "' is no index");
+  return static_cast<int>(number(attributeName));
 }
 
-bool ElementReader::boolean(const char* attributeName) {
-  const double value = number(attributeName);
-  if (value != 0 && value != 1)
-    fail(attributeName, "expected 0 or 1, got " + quoted(element_.Attribute(attributeName)));
-  return value == 1;
+bool ElementReader::flag(const char* attributeName) {
+  if (declared(attributeName, true).kind != Kind::Flag)
+    throw std::logic_error(std::string("element table: <") + spec_.name + "> attribute '" + attributeName + "' is no flag");
+  return number(attributeName) == 1;
 }
 
-std::string ElementReader::text(const char* attributeName) { return require(attributeName).Value(); }
-
-std::string ElementReader::text(const char* attributeName, const std::string& fallback) {
+std::string ElementReader::text(const char* attributeName) {
+  const AttributeSpec& spec = declared(attributeName, false);
   const tinyxml2::XMLAttribute* a = find(attributeName);
-  return a ? std::string(a->Value()) : fallback;
+  return a ? std::string(a->Value()) : spec.fallback ? std::string(spec.fallback) : std::string();
 }
 
-double ElementReader::channel(const char* attributeName) {
-  const double value = number(attributeName);
-  if (value < 0 || value > 1)
-    fail(attributeName, "a colour channel must lie in [0, 1], got " +
-                            quoted(element_.Attribute(attributeName)));
-  return value;
-}
-
-std::vector<std::string> ElementReader::unknownAttributes() const {
-  std::vector<std::string> unknown;
-  for (const tinyxml2::XMLAttribute* a = element_.FirstAttribute(); a; a = a->Next())
-    if (std::find(asked_.begin(), asked_.end(), a->Name()) == asked_.end()) unknown.emplace_back(a->Name());
-  return unknown;
-}
-
-std::string ElementReader::knownAttributes() const {
-  std::string list;
-  for (const auto& a : asked_) list += (list.empty() ? "" : ", ") + a;
-  return list;
+void ElementReader::reportUnknownAttributes() {
+  std::vector<std::string> valid;
+  for (const AttributeSpec& a : spec_.attributes) valid.emplace_back(a.name);
+  for (const tinyxml2::XMLAttribute* a = element_.FirstAttribute(); a; a = a->Next()) {
+    if (std::find(asked_.begin(), asked_.end(), a->Name()) != asked_.end()) continue;
+    const std::string guess = closestName(a->Name(), valid);
+    std::string list;
+    for (const auto& v : valid) list += (list.empty() ? "" : ", ") + v;
+    const std::string text = where(a->Name()) + ": unknown attribute ignored" +
+                             (guess.empty() ? " (valid: " + list + ")" : "; did you mean '" + guess + "'?");
+    messages_.warn(line(), "unknown attribute '" + std::string(a->Name()) + "' of <" + spec_.name + ">",
+                   "unknown attributes '" + std::string(a->Name()) + "' of <" + spec_.name + ">", text);
+  }
 }
 
 }  // namespace fosssim::io

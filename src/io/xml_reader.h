@@ -1,67 +1,66 @@
-// Internal header: reading one XML element's attributes with located, precise error messages.
+// Internal header: reading one XML element's attributes as its entry in the element table says,
+// with located, precise messages. A bad attribute is reported and reading goes on (the caller gets
+// a harmless placeholder and ok() turns false), so that one pass reports every problem of a file.
 #pragma once
+
+#include "scene_elements.h"
+#include "scene_messages.h"
 
 #include <tinyxml2.h>
 
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace fosssim::io {
 
-/// Thrown inside the loader only; loadScene turns it into a Status.
-struct LoadError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-/// Reads the attributes of one element. Every attribute asked for is remembered, so that
-/// attributes nobody asked for can be reported as unknown afterwards.
+/// Reads the attributes of one element. Every attribute must be declared in the element's spec
+/// (asking for an undeclared one is a programming error: std::logic_error); attributes present on
+/// the element that no read asked for are reported as unknown afterwards.
 class ElementReader {
  public:
-  ElementReader(const tinyxml2::XMLElement& element, const std::string& file);
+  ElementReader(const tinyxml2::XMLElement& element, const ElementSpec& spec, SceneMessages& messages,
+                const std::string& file);
 
-  /// A required finite number.
+  /// A number of one of the numeric kinds, checked against the kind and the spec's bound; an
+  /// optional attribute that is absent gives the spec's default.
   double number(const char* name);
-  /// An optional finite number.
-  double number(const char* name, double fallback);
-  /// A required number > 0 (or >= 0 when allowZero).
-  double positive(const char* name, bool allowZero = false);
-  double positive(const char* name, double fallback, bool allowZero = false);
-  /// A required integer (an integral number, e.g. "3" or "3.0").
-  int integer(const char* name);
-  /// A required index in [0, count) ... checked later by the caller when count is not yet known.
+  /// The same for an optional attribute whose default the reader computes (spec: "(...)").
+  double number(const char* name, double computedDefault);
+  /// An index (kind Index): an integer >= 0, checked against the counts later; -1 after an error.
   int index(const char* name);
-  /// A required 0 or 1.
-  bool boolean(const char* name);
-  /// A required string.
+  /// A 0 or 1 (kind Flag).
+  bool flag(const char* name);
+  /// A word (kind Text); the spec's default when optional and absent.
   std::string text(const char* name);
-  std::string text(const char* name, const std::string& fallback);
-  /// A colour channel in [0, 1].
-  double channel(const char* name);
-  bool has(const char* name) const;
 
   /// "file:line: <element>" for messages about the whole element.
   std::string where() const;
   /// "file:line: <element> attribute 'name'" for messages about one attribute.
   std::string where(const char* attribute) const;
-  [[noreturn]] void fail(const char* attribute, const std::string& what) const;
-  [[noreturn]] void fail(const std::string& what) const;
+  /// Reports an error; reading goes on, ok() becomes false.
+  void fail(const char* attribute, const std::string& what);
+  void fail(const std::string& what);
+  bool ok() const { return ok_; }
+  bool has(const char* attribute) const { return element_.FindAttribute(attribute) != nullptr; }
   int line() const { return element_.GetLineNum(); }
   const char* name() const { return element_.Name(); }
 
-  /// Attributes present on the element that no call above asked for.
-  std::vector<std::string> unknownAttributes() const;
-  /// The attribute names asked for, comma separated (for "valid attributes are ..." messages).
-  std::string knownAttributes() const;
+  /// Reports the attributes no read asked for (with "did you mean" for near misses), and the
+  /// required ones that were missing with the unknown attribute that may have been meant.
+  void reportUnknownAttributes();
 
  private:
+  const AttributeSpec& declared(const char* name, bool numeric) const;
   const tinyxml2::XMLAttribute* find(const char* name);
-  const tinyxml2::XMLAttribute& require(const char* name);
-  double parseNumber(const tinyxml2::XMLAttribute& attribute) const;
+  bool parseNumber(const tinyxml2::XMLAttribute& attribute, double& value);
+  double checked(const AttributeSpec& spec, const tinyxml2::XMLAttribute& attribute);
 
   const tinyxml2::XMLElement& element_;
+  const ElementSpec& spec_;
+  SceneMessages& messages_;
   const std::string& file_;
-  std::vector<std::string> asked_;
+  std::vector<std::string> asked_, missing_;
+  bool ok_ = true;
 };
 
 }  // namespace fosssim::io

@@ -15,11 +15,11 @@ TEST(BadXml, TextThatIsNotXml) {
 }
 
 TEST(BadXml, MalformedXmlGivesTheLine) {
-  // A mismatched closing tag (tinyxml2 names the line of the element left open), an unquoted
-  // attribute on line 3, a stray '<' on line 5.
+  // A mismatched closing tag (reported where the element left open begins, naming the tag that
+  // came first), an unquoted attribute on line 3, a stray '<' on line 5.
   expectError(join({"<scene>", "  <duration time=\"1\"/>", "  <integrator type=\"explicit-euler\" dt=\"0.01\"/>",
                     "  <particle>", "</scene>"}),
-              {kFile + ":4:", "XML"});
+              {kFile + ":4:", "XML", "<particle> is never closed (</scene> on line 5 comes first)"});
   expectError(join({"<scene>", "  <duration time=\"1\"/>", "  <integrator type=explicit-euler dt=\"0.01\"/>",
                     "</scene>"}),
               {kFile + ":3:", "XML"});
@@ -29,7 +29,7 @@ TEST(BadXml, MalformedXmlGivesTheLine) {
   // The same attribute twice is not well-formed XML.
   lines = baseLines();
   lines.at(3) = "  <particle m=\"1\" m=\"2\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>";
-  expectError(join(lines), {kFile + ":4:", "XML"});
+  expectError(join(lines), {kFile + ":4:", "XML", "<particle> attribute 'm' is given twice"});
 }
 
 TEST(BadXml, EmptyAndBlankFiles) {

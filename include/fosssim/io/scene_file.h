@@ -40,6 +40,16 @@ struct Appearance {
   double maxSimFreq = 100;           ///< the window's steps per wall second
 };
 
+/// One message about a scene file, located: "file:line: <element> attribute 'a': what is wrong".
+struct SceneMessage {
+  enum class Severity { Warning, Error };
+  Severity severity = Severity::Error;
+  int line = 0;      ///< 0: about the whole file (listed after the located ones)
+  std::string text;  ///< the whole message, starting with the file name
+
+  bool isError() const { return severity == Severity::Error; }
+};
+
 struct SceneFile {
   std::string path;         ///< as given, for messages
   std::string description;  ///< <description text>, may be empty
@@ -47,10 +57,16 @@ struct SceneFile {
   Scene scene;
   State initial;
   Appearance look;
-  std::vector<std::string> warnings;  ///< located messages about ignored input
+  std::vector<std::string> warnings;  ///< located messages about ignored input (the warnings of `messages`)
+  /// Every error and warning in line order, a typo's warning before the error it causes; repeats
+  /// of one kind are shown a few times and then summarised in one line ("... and 12,345 more").
+  std::vector<SceneMessage> messages;
+  long warningCount = 0;  ///< every warning, the summarised ones included
+  long errorCount = 0;    ///< every error, the summarised ones included
 };
 
-/// Loads and checks a scene file. On failure the message starts with "path:line:".
+/// Loads and checks a scene file. On failure the message starts with "path:line:" (the first
+/// error; out.messages holds them all). On success out.messages holds the warnings.
 Status loadScene(const std::string& path, SceneFile& out);
 /// The same from text in memory; `name` stands for the file in messages.
 Status parseScene(const std::string& text, const std::string& name, SceneFile& out);

@@ -1,0 +1,218 @@
+#include "xml_syntax.h"
+
+#include <tinyxml2.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace fosssim::io {
+namespace {
+
+bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+bool nameStart(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' || c == ':' || static_cast<unsigned char>(c) >= 0x80;
+}
+bool nameChar(char c) { return nameStart(c) || (c >= '0' && c <= '9') || c == '-' || c == '.'; }
+
+std::string excerpt(const std::string& text, size_t from) {
+  std::string s;
+  for (size_t k = from; k < text.size() && text[k] != '\n' && s.size() < 30; ++k) s += text[k];
+  return "\"" + s + (s.size() >= 30 ? "...\"" : "\"");
+}
+
+/// The scanner: finds the first problem it can name, or none.
+class Scanner {
+ public:
+  explicit Scanner(const std::string& text) : t_(text) {}
+
+  bool scan(XmlProblem& problem) {
+    if (t_.compare(0, 3, "\xEF\xBB\xBF") == 0) p_ = 3;
+    while (p_ < t_.size()) {
+      const bool ok = t_[p_] != '<' ? text() : starts("<!--") ? until("-->", "a comment (<!--)")
+                                               : starts("<![CDATA[") ? until("]]>", "a CDATA section")
+                                               : starts("<!") ? until(">", "a declaration (<!...>)")
+                                               : starts("<?") ? declaration()
+                                               : starts("</") ? closingTag() : openingTag();
+      if (!ok) {
+        problem = problem_;
+        return true;
+      }
+    }
+    if (stack_.empty()) return false;
+    std::string open, missing;
+    for (size_t k = stack_.size(); k-- > 0;) {
+      open += (open.empty() ? "" : k == 0 ? " and " : ", ") + ("<" + stack_[k].name + "> (line " + std::to_string(stack_[k].line) + ")");
+      missing += "</" + stack_[k].name + ">";
+    }
+    int last = line_;
+    if (!t_.empty() && t_.back() == '\n') --last;
+    problem = {std::max(last, 1), "not well-formed XML: the file ends with " + open + " still open: " + missing +
+                                       " is missing"};
+    return true;
+  }
+
+ private:
+  struct Open {
+    std::string name;
+    int line;
+  };
+
+  bool starts(const char* s) const { return t_.compare(p_, std::char_traits<char>::length(s), s) == 0; }
+  void advanceTo(size_t q) {
+    q = std::min(q, t_.size());
+    line_ += static_cast<int>(std::count(t_.begin() + static_cast<long>(p_), t_.begin() + static_cast<long>(q), '\n'));
+    p_ = q;
+  }
+  bool fail(const std::string& what) {
+    problem_ = {line_, "not well-formed XML: " + what};
+    return false;
+  }
+
+  bool text() {
+    size_t q = t_.find('<', p_);
+    if (q == std::string::npos) q = t_.size();
+    if (stack_.empty()) {
+      const size_t k = t_.find_first_not_of(" \t\n\r", p_);
+      if (k < q) {
+        advanceTo(k);
+        return fail("text " + excerpt(t_, k) + (rootClosed_ ? " after the root element's end" : " outside any element"));
+      }
+    }
+    advanceTo(q);
+    return true;
+  }
+
+  bool until(const char* end, const char* what) {
+    const size_t q = t_.find(end, p_ + 2);
+    if (q == std::string::npos) return fail(std::string(what) + " opened here never ends (" + end + " is missing)");
+    advanceTo(q + std::char_traits<char>::length(end));
+    return true;
+  }
+
+  bool declaration() {
+    if (!stack_.empty()) return fail("a <?...?> declaration inside <" + stack_.back().name + ">: declarations may only open the file");
+    return until("?>", "a declaration (<?)");
+  }
+
+  std::string name(size_t& q) const {
+    const size_t from = q;
+    while (q < t_.size() && nameChar(t_[q])) ++q;
+    return t_.substr(from, q - from);
+  }
+
+  bool closingTag() {
+    size_t q = p_ + 2;
+    const std::string n = name(q);
+    while (q < t_.size() && isSpace(t_[q])) ++q;
+    if (n.empty() || q >= t_.size() || t_[q] != '>') return fail("a closing tag </" + n + " must be a name followed by '>'");
+    if (stack_.empty()) return fail("</" + n + "> closes no open element");
+    const Open& top = stack_.back();
+    if (top.name != n) {
+      // The fix belongs where the unclosed element opens: report it there.
+      for (const Open& o : stack_)
+        if (o.name == n) {
+          problem_ = {top.line, "not well-formed XML: <" + top.name + "> is never closed (</" + n + "> on line " +
+                                    std::to_string(line_) + " comes first): end it with /> or add </" + top.name + ">"};
+          return false;
+        }
+      return fail("</" + n + "> does not match the open <" + top.name + "> (line " + std::to_string(top.line) + ")");
+    }
+    stack_.pop_back();
+    if (stack_.empty()) rootClosed_ = true;
+    advanceTo(q + 1);
+    return true;
+  }
+
+  bool openingTag() {
+    size_t q = p_ + 1;
+    if (q >= t_.size() || !nameStart(t_[q]))
+      return fail("'<' does not begin an element (a name must follow it; write &lt; for a '<' in text)");
+    const int tagLine = line_;
+    const std::string element = name(q);
+    std::vector<std::string> attributes;
+    for (;;) {
+      while (q < t_.size() && isSpace(t_[q])) ++q;
+      advanceTo(q);
+      if (q >= t_.size()) return fail("the file ends inside the tag <" + element + "> (line " + std::to_string(tagLine) + ")");
+      if (t_[q] == '/') {
+        if (q + 1 >= t_.size() || t_[q + 1] != '>') return fail("'/' in the tag <" + element + "> must be followed by '>'");
+        advanceTo(q + 2);
+        return true;
+      }
+      if (t_[q] == '>') {
+        stack_.push_back({element, tagLine});
+        advanceTo(q + 1);
+        return true;
+      }
+      if (!nameStart(t_[q]))
+        return fail("unexpected character '" + std::string(1, t_[q]) + "' in the tag <" + element + ">");
+      const std::string attribute = name(q);
+      const std::string who = "<" + element + "> attribute '" + attribute + "'";
+      while (q < t_.size() && isSpace(t_[q])) ++q;
+      if (q >= t_.size() || t_[q] != '=') return fail(who + " has no value (write " + attribute + "=\"...\")");
+      ++q;
+      while (q < t_.size() && isSpace(t_[q])) ++q;
+      if (q >= t_.size() || (t_[q] != '"' && t_[q] != '\''))
+        return fail(who + ": the value must be in quotes (" + attribute + "=\"...\")");
+      const size_t close = t_.find(t_[q], q + 1);
+      if (close == std::string::npos) return fail(who + ": the value's closing quote (" + std::string(1, t_[q]) + ") is missing");
+      if (std::find(attributes.begin(), attributes.end(), attribute) != attributes.end())
+        return fail(who + " is given twice (an attribute may appear once)");
+      attributes.push_back(attribute);
+      q = close + 1;
+    }
+  }
+
+  const std::string& t_;
+  size_t p_ = 0;
+  int line_ = 1;
+  std::vector<Open> stack_;
+  bool rootClosed_ = false;
+  XmlProblem problem_;
+};
+
+std::string inWords(int errorId) {
+  switch (errorId) {
+    case tinyxml2::XML_ERROR_PARSING_ELEMENT: return "an element is malformed";
+    case tinyxml2::XML_ERROR_PARSING_ATTRIBUTE: return "an attribute is malformed (write name=\"value\", each name once)";
+    case tinyxml2::XML_ERROR_PARSING_TEXT: return "text where it cannot be";
+    case tinyxml2::XML_ERROR_PARSING_CDATA: return "a CDATA section is malformed";
+    case tinyxml2::XML_ERROR_PARSING_COMMENT: return "a comment is malformed";
+    case tinyxml2::XML_ERROR_PARSING_DECLARATION: return "a <?...?> declaration is malformed or misplaced";
+    case tinyxml2::XML_ERROR_PARSING_UNKNOWN: return "a <!...> declaration is malformed";
+    case tinyxml2::XML_ERROR_MISMATCHED_ELEMENT: return "a closing tag does not match the element it closes";
+    case tinyxml2::XML_ELEMENT_DEPTH_EXCEEDED: return "elements are nested too deeply";
+    default: return "the document cannot be parsed";
+  }
+}
+
+}  // namespace
+
+std::string normalizeLineEnds(const std::string& text) {
+  if (text.find('\r') == std::string::npos) return text;
+  std::string out;
+  out.reserve(text.size());
+  for (size_t k = 0; k < text.size(); ++k) {
+    if (text[k] != '\r') out += text[k];
+    else {
+      out += '\n';
+      if (k + 1 < text.size() && text[k + 1] == '\n') ++k;
+    }
+  }
+  return out;
+}
+
+int lineOf(const std::string& text, size_t offset) {
+  int line = 1;
+  for (size_t k = 0; k < offset && k < text.size(); ++k)
+    if (text[k] == '\n' || (text[k] == '\r' && (k + 1 >= text.size() || text[k + 1] != '\n'))) ++line;
+  return line;
+}
+
+XmlProblem explainXmlError(const std::string& text, int errorId, int errorLine) {
+  XmlProblem problem;
+  if (errorId != tinyxml2::XML_ELEMENT_DEPTH_EXCEEDED && Scanner(text).scan(problem)) return problem;
+  return {std::max(errorLine, 1), "not well-formed XML: " + inWords(errorId)};
+}
+
+}  // namespace fosssim::io

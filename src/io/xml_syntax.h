@@ -1,0 +1,29 @@
+// Internal header: what is wrong with a file that tinyxml2 would not parse, in words.
+//
+// tinyxml2 reports an error code and a line, and for some errors the wrong line (a missing
+// </scene> is "XML_ERROR_PARSING" on line 1). When it fails, this scanner walks the text itself
+// and names the first problem it understands: an element left open at the end of the file (and
+// where it was opened), a closing tag that does not match, an attribute given twice or without
+// quotes, a comment that never ends. What it does not recognise keeps tinyxml2's code, in words.
+#pragma once
+
+#include <string>
+
+namespace fosssim::io {
+
+/// The text with every line end (\r\n, \r, \n) made \n, as XML prescribes: tinyxml2 counts lines
+/// by \n only, so a file with old Mac line ends (\r) would report every problem on line 1.
+std::string normalizeLineEnds(const std::string& text);
+
+/// The 1-based line of byte `offset` in `text`, counting \r\n, \r and \n as line ends.
+int lineOf(const std::string& text, size_t offset);
+
+struct XmlProblem {
+  int line = 0;
+  std::string what;  ///< "not well-formed XML: ..."
+};
+
+/// Explains why tinyxml2 rejected `text` (line ends normalised) with `errorId` on `errorLine`.
+XmlProblem explainXmlError(const std::string& text, int errorId, int errorLine);
+
+}  // namespace fosssim::io
