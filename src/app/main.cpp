@@ -3,6 +3,7 @@
 #include "options.h"
 #include "output_files.h"
 #include "outputs.h"
+#include "scene_report.h"
 #include "signals.h"
 #include "stats_output.h"
 #include "verify_output.h"
@@ -12,6 +13,7 @@
 #include "fosssim/io/scene_file.h"
 
 #include <cstdio>
+#include <new>
 #include <iostream>
 
 namespace fosssim::app {
@@ -59,8 +61,8 @@ int run(int argc, char** argv) {
   for (const auto& w : options.warnings) std::fprintf(stderr, "FOSSSim: warning: %s\n", w.c_str());
 
   SceneFile file;
-  if (Status s = loadScene(options.scene, file); !s) return fail(s.message());
-  for (const auto& w : file.warnings) std::fprintf(stderr, "FOSSSim: warning: %s\n", w.c_str());
+  const Status loaded = loadScene(options.scene, file);
+  if (const int status = reportScene(options, loaded, file); status >= 0) return status;  // errors, --strict, --check
   if (!options.quiet && !file.description.empty()) std::fprintf(stderr, "%s\n", file.description.c_str());
 
   SimulatorOptions simOptions;
@@ -98,4 +100,13 @@ int run(int argc, char** argv) {
 }  // namespace
 }  // namespace fosssim::app
 
-int main(int argc, char** argv) { return fosssim::app::run(argc, argv); }
+int main(int argc, char** argv) {
+  // Any allocation may fail (a scene's size is bounded, but memory is shared): a clear error and
+  // exit 1, not std::terminate's abort (exit 134).
+  try {
+    return fosssim::app::run(argc, argv);
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "FOSSSim: error: out of memory (an allocation failed); try a smaller scene or fewer outputs\n");
+    return 1;
+  }
+}
