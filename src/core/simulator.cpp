@@ -4,6 +4,7 @@
 #include "energy_watch.h"
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 namespace fosssim {
@@ -28,12 +29,57 @@ Status Simulator::create(const Scene& scene, const SimulatorOptions& options,
   return Status::ok();
 }
 
+namespace {
+
+/// %g: no 300-digit times in messages.
+std::string shortNumber(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", value);
+  return buffer;
+}
+
+/// What made the first non-finite particle of `end` so: when the integrator's prediction was
+/// already non-finite, the forces on it at the step's start (one that is non-finite there, else
+/// the largest), named as the energy watch names them ("'springforce' #2": the third
+/// <springforce> of the file); otherwise the collision response. Only on failure, and only when
+/// evaluating every force separately is cheap enough (forces x particles <= 5e7).
+std::string blameNonFinite(const Scene& scene, const State& start, const State& end, bool predictionFinite,
+                           const char* handler) {
+  if (predictionFinite) return std::string("; the integrator's prediction was finite: the collision response (") + handler +
+                               ") made it non-finite";
+  int i = 0;
+  while (i < end.numParticles() && at(end.x, i).allFinite() && at(end.v, i).allFinite()) ++i;
+  const size_t n = scene.forces.size();
+  if (i == end.numParticles() || n == 0 || static_cast<double>(n) * end.numParticles() > 5e7 ||
+      start.x.size() != end.x.size())
+    return n == 0 ? "; no force acts: the integrator made it non-finite" : "";
+  int blamed = -1;
+  double largest = -1;
+  bool nonFinite = false;
+  VecX gradient(start.x.size());
+  for (size_t f = 0; f < n && !nonFinite; ++f) {
+    gradient.setZero();
+    scene.forces[f]->addGradient(scene, start.x, start.v, gradient);
+    const Vec2 pull = at(gradient, i);
+    nonFinite = !pull.allFinite();
+    if (nonFinite || pull.norm() > largest) blamed = static_cast<int>(f), largest = pull.norm();
+  }
+  const Force& force = *scene.forces[static_cast<size_t>(blamed)];
+  int nth = 0;
+  for (int f = 0; f < blamed; ++f) nth += std::string(scene.forces[static_cast<size_t>(f)]->keyword()) == force.keyword();
+  const std::string name = "'" + std::string(force.keyword()) + "' #" + std::to_string(nth);
+  if (nonFinite) return "; the force " + name + " on it was already non-finite at the step's start";
+  return "; the integrator made it non-finite; the largest force on it at the step's start was " + name + " (|F| = " +
+         shortNumber(largest) + "): a smaller dt or a weaker force may help";
+}
+
+}  // namespace
+
 Status Simulator::step(const Scene& scene, State& state, StepObserver* observer) {
   const double dt = scene.dt;
   const long stepNumber = state.step + 1;
   auto failure = [&](const std::string& what) {
-    return Status::error("step " + std::to_string(stepNumber) + " (t = " + std::to_string(state.time) +
-                         "): " + what);
+    return Status::error("step " + std::to_string(stepNumber) + " (t = " + shortNumber(state.time) + "): " + what);
   };
 
   stats_.clear();
@@ -47,6 +93,7 @@ Status Simulator::step(const Scene& scene, State& state, StepObserver* observer)
     const StepTimer timer(timing_, stats_.integrate);
     if (Status s = integrator_->step(scene, state, dt); !s) return failure(s.message());
   }
+  const bool predictionFinite = state.x.allFinite() && state.v.allFinite();  // to blame forces or response
 
   // 2-3. Detect and respond: the handler turns the prediction into a collision-free end state.
   log_.clear();
@@ -58,7 +105,8 @@ Status Simulator::step(const Scene& scene, State& state, StepObserver* observer)
   // 4. Verify: a non-finite state or an energy blow-up is reported, never carried on.
   state.step = stepNumber;
   state.time = start_.time + dt;
-  if (Status s = checkFinite(state); !s) return failure(s.message());
+  if (Status s = checkFinite(state); !s)
+    return failure(s.message() + blameNonFinite(scene, start_, state, predictionFinite, collision_->keyword));
   if (Status s = energyWatch_->check(scene, start_, state); !s) return failure(s.message());
   return Status::ok();
 }

@@ -10,6 +10,7 @@
 #include "implicit_system.h"
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 namespace fosssim {
@@ -20,6 +21,13 @@ constexpr double kNewtonTolerance = 1e-9;
 /// A step whose Newton iteration has not converged after this many iterations fails with a
 /// message instead of looping forever (the reference had no limit).
 constexpr int kMaxNewtonIterations = 100;
+
+/// %g: "last update 3.2e-07", not to_string's "0.000000".
+std::string shortNumber(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", value);
+  return buffer;
+}
 
 }  // namespace
 
@@ -104,8 +112,8 @@ Status ImplicitEuler::step(const Scene& scene, State& state, double dt) {
     if (size < kNewtonTolerance) break;
     if (iteration == kMaxNewtonIterations)
       return Status::error("implicit Euler: Newton's method did not converge in " +
-                           std::to_string(kMaxNewtonIterations) + " iterations (last update " +
-                           std::to_string(size) + ")");
+                           std::to_string(kMaxNewtonIterations) + " iterations (last update " + shortNumber(size) +
+                           ", tolerance " + shortNumber(kNewtonTolerance) + "); a smaller dt helps");
   }
   state.x += dx_;
   state.v += dv_;
