@@ -42,8 +42,9 @@ STYLE = {  # one look per method, the same in every chart
     "continuous-time": ("#1f77b4", "s"),
     "hybrid": ("#2ca02c", "^"),
     "hybrid k=0": ("#17becf", "v"),
-    "penalty k=1e2": ("#ffbb78", "D"),
-    "penalty k=1e4": ("#ff7f0e", "D"),
+    # The three penalty stiffnesses: three different hues and markers (not shades of one colour).
+    "penalty k=1e2": ("#e377c2", "P"),
+    "penalty k=1e4": ("#bcbd22", "X"),
     "penalty k=1e6": ("#8c564b", "D"),
 }
 
@@ -75,6 +76,15 @@ def accuracy_panel(ax, rows):
         ys = [max(r["error"], ERROR_FLOOR) for r in good]
         color, marker = style(m)
         ax.plot(xs, ys, color=color, marker=marker, ms=4, lw=1.2, label=m)
+        # The spread of the repeated timings: from the least (the point) to the median repeat.
+        if good and "wall_s_median" in good[0]:
+            slow = [r["wall_s_median"] / r["sim_time"] if sd.finite(r["wall_s_median"]) else x
+                    for r, x in zip(good, xs)]
+            ax.errorbar(xs, ys, xerr=[[0] * len(xs), [max(0.0, s - x) for s, x in zip(slow, xs)]], fmt="none",
+                        ecolor=color, elinewidth=0.7, capsize=1.5, alpha=0.7)
+        # dt at both ends of the line (the sweep runs between them, in the order of the table's dts)
+        for x, y, r in list(zip(xs, ys, good))[:: max(1, len(good) - 1)][:2]:
+            ax.annotate(f"{r['dt']:g}", (x, y), textcoords="offset points", xytext=(3, 3), fontsize=6, color=color)
         points += [(x, y, r["dt"], m) for x, y, r in zip(xs, ys, good)]
     front = sd.pareto([(p[0], p[1]) for p in points])
     fx = [points[i][0] for i in front]
@@ -109,61 +119,16 @@ def chart_accuracy(data_dir, kind, name, shape):
     handles.append(Line2D([], [], ls="--", color="black", marker="o", mfc="none", label="Pareto front"))
     what = "integrator" if kind == "integrators" else "collision method (with symplectic Euler)"
     fig.legend(handles=handles, loc="upper center", ncol=min(len(handles), 5), bbox_to_anchor=(0.5, 0.965))
-    fig.suptitle(f"Accuracy against cost, one line per {what}. Each line runs from the largest dt (left, cheap)\n"
-                 f"to the smallest (right); circled points form the Pareto front; errors at {ERROR_FLOOR:g} are rounding.",
+    fig.suptitle(f"Accuracy against cost, one line per {what}. Each line runs from the largest dt (left, cheap,\n"
+                 f"its dt written at the point) to the smallest (right, dt written too); circled points form the Pareto "
+                 f"front; errors at {ERROR_FLOOR:g} are rounding. Bars: from the fastest repeat of a timed run "
+                 f"(the point) to the median one.",
                  y=1.0, fontsize=10)
     fig.tight_layout(rect=(0, 0, 1, 0.93 if shape[0] > 1 else 0.88))
     save(fig, data_dir, name)
 
 
-# ---- Chart 2: stability against stiffness ----------------------------------------------------
-
-def chart_stability(data_dir):
-    rows = sd.load(data_dir, "stability")
-    systems = sd.unique(rows, "system")
-    fig, axes = plt.subplots(1, len(systems), figsize=(6.0 * len(systems), 6.4), squeeze=False)
-    s_explicit = sd.explicit_limit()
-    handles = {}
-    for ax, system in zip(axes.flat, systems):
-        mine = [r for r in rows if r["system"] == system]
-        bobs = int(mine[0]["bobs"])
-        ks = sorted(set(r["k"] for r in mine))
-        kk = [ks[0] * (ks[-1] / ks[0]) ** (i / 100) for i in range(101)]
-        w = [sd.highest_frequency(bobs, k) for k in kk]
-        s_top = mine[0]["dt_tried_max"] * mine[0]["omega_max"]
-        ax.plot(kk, [s_top / x for x in w], color="0.6", lw=0.8, label=f"largest dt tried ($\\omega_{{max}}$ dt = {s_top:g})")
-        ax.plot(kk, [2 / x for x in w], color=style("symplectic-euler")[0], lw=1, ls="--",
-                label="theory, symplectic Euler: $\\omega_{max}$ dt = 2")
-        ax.plot(kk, [s_explicit / x for x in w], color=style("explicit-euler")[0], lw=1, ls=":",
-                label=f"theory, explicit Euler: energy x1e6 within the horizon ($\\omega_{{max}}$ dt = {s_explicit:.3f})")
-        for integ in sd.unique(mine, "integrator"):
-            pts = [r for r in mine if r["integrator"] == integ]
-            color, marker = style(integ)
-            hollow = integ.startswith("linearized")
-            found = [r for r in pts if r["capped"] == 0 and sd.finite(r["largest_stable_dt"])]
-            capped = [r for r in pts if r["capped"] == 1]
-            if found:
-                ax.plot([r["k"] for r in found], [r["largest_stable_dt"] for r in found], ls="none", color=color,
-                        marker=marker, ms=6, mfc="none" if hollow else color, label=f"{integ}: measured limit")
-            if capped:
-                shift = 1.3 if hollow else 0.77  # side by side, both just around the largest dt tried
-                ax.plot([r["k"] for r in capped], [r["largest_stable_dt"] * shift for r in capped], ls="none",
-                        color=color, marker="^", ms=7, mfc="none" if hollow else color,
-                        label=f"{integ}: stable at every dt tried")
-        for h, l in zip(*ax.get_legend_handles_labels()):
-            handles.setdefault(l, h)
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-        ax.set_xlabel("spring stiffness k [N/m] (unit masses)")
-        ax.set_ylabel("largest stable time step dt [s]")
-        ax.set_title(f"{system}: $\\omega_{{max}}$ = {sd.highest_frequency(bobs, 1):.3f} $\\sqrt{{k/m}}$")
-    fig.legend(list(handles.values()), list(handles.keys()), loc="lower center", ncol=2, fontsize=8,
-               bbox_to_anchor=(0.5, -0.02))
-    fig.suptitle("Stability against stiffness. Unstable = non-finite state or energy x1e6 within max(10 periods of the "
-                 "fastest mode, 200 steps).\nImplicit Euler has no limit; explicit Euler is never stable in the strict "
-                 "sense (|1 + i$\\omega$dt| > 1), its limit here is where the growth reaches x1e6.", fontsize=9)
-    fig.tight_layout(rect=(0, 0.12, 1, 0.93))
-    save(fig, data_dir, "stability")
+# ---- Chart 2: stability, energy order and the random shots are in charts_limits.py ----------
 
 
 # ---- Chart 3: collision robustness -----------------------------------------------------------
@@ -365,7 +330,8 @@ def chart_profile(data_dir):
     ax.grid(axis="y", visible=False)
     ax.legend(handles=[Patch(color=c, label=l) for _, l, c in PHASES], loc="upper center",
               bbox_to_anchor=(0.4, -0.06), ncol=3, fontsize=8)
-    ax.set_title("Where a step's time goes, per scene (forces timed by wrapping them; the rest from StepStats)")
+    ax.set_title("Where a step's time goes, per scene (forces timed by wrapping them; the rest from the simulator's "
+                 "own phase timings)")
     save(fig, data_dir, "profile")
 
 
@@ -373,7 +339,13 @@ def main(argv):
     data_dir = argv[1] if len(argv) > 1 else "docs/study"
     chart_accuracy(data_dir, "integrators", "accuracy_integrators", (2, 2))
     chart_accuracy(data_dir, "collisions", "accuracy_collisions", (2, 3))
-    chart_stability(data_dir)
+    import charts_limits  # after plt's settings above, which it shares
+    charts_limits.chart_damped(data_dir, style, save)
+    charts_limits.chart_shots(data_dir, save)
+    charts_limits.chart_energy_order(data_dir, style, save)
+    charts_limits.chart_penalty_limits(data_dir, style, save)
+    if os.path.exists(os.path.join(data_dir, "audit_series.csv")):
+        charts_limits.chart_audit(data_dir, style, save)
     chart_robustness(data_dir)
     chart_penalty_depth(data_dir)
     chart_hybrid(data_dir)

@@ -16,6 +16,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import study_data as sd  # noqa: E402
 import report_text as text  # noqa: E402
 import report_contacts as contacts  # noqa: E402
+import report_limits as limits  # noqa: E402
 
 
 def fmt(x, digits=2):
@@ -72,10 +73,15 @@ def accuracy_section(data_dir, rel):
                                   fmt(1e3 * best["wall_per_sim_s"], 2)])
         else:
             cheapest_rows.append([mine[0]["title"], f"{target:g}", "none of the methods", "—", "—"])
-    out.append("**Observed order of accuracy** (slope of log error against log dt over the five finest "
-               "time steps that ran; 1 = halving dt halves the error, 0 = the error does not shrink, "
-               "negative = it grows):\n")
+    out.append("**Observed order of accuracy** of each chart's error (the position error at the end of the run; "
+               "slope of log error against log dt over the five finest time steps that ran; 1 = halving dt "
+               "halves the error, 0 = the error does not shrink, negative = it grows):\n")
     out.append(table(["problem", "order per method"], order_rows))
+    out.append("\n**Energy error, measured as the largest over the whole run** (an error that oscillates can be "
+               "small at the last step by chance, so the study measures the energy this way; the order is the "
+               "slope over the five finest time steps that ran):\n")
+    out.append(limits.energy_order_table(rows, sys.modules[__name__]))
+    out.append(image(rel, "energy_order", "largest energy error over the run against dt"))
     out.append("\n**Cheapest way to be right**: of all the runs whose error is at most the target, the one "
                "with the least wall time per simulated second:\n")
     out.append(table(["problem", "target error", "cheapest method", "its dt [s]", "wall ms per simulated s"],
@@ -89,9 +95,12 @@ def accuracy_section(data_dir, rel):
 
 # ---- stability ---------------------------------------------------------------------------------
 
+FACTS = {}  # numbers the sections find on the way, for the prose
+
+
 def stability_section(data_dir, rel):
     rows = sd.load(data_dir, "stability")
-    out = [image(rel, "stability", "largest stable dt against stiffness")]
+    out = []
     body = []
     for system in sd.unique(rows, "system"):
         for integ in sd.unique(rows, "integrator"):
@@ -111,6 +120,11 @@ def stability_section(data_dir, rel):
             body.append([system, integ, measured, text.STABILITY_THEORY[integ], ", ".join(reasons) or "—"])
     out.append(table(["system", "integrator", "measured limit ω_max·dt (over all k)", "theory",
                       "how the unstable runs ended"], body))
+    ratio = [r["omega_max"] / math.sqrt(r["k"]) for r in rows if r["bobs"] > 1]
+    FACTS["row_ratio"] = fmt(ratio[0], 3) if ratio else "—"
+    blown = [r["largest_stable_dt"] * r["omega_max"] for r in rows if r["integrator"] == "explicit-euler"
+             and r["capped"] == 0 and sd.finite(r["largest_stable_dt"])]
+    FACTS["explicit_blowup"] = f"{min(blown):.3f}" if blown else "—"
     return "\n\n".join(out)
 
 
@@ -118,7 +132,7 @@ def stability_section(data_dir, rel):
 
 def robustness_section(data_dir, rel):
     rows = sd.load(data_dir, "robustness")
-    out = [image(rel, "robustness", "outcome maps against a thin edge"),
+    out = [image(rel, "robustness", "outcome maps against a thin edge (head-on shots)"),
            image(rel, "penalty_depth", "penalty penetration depth")]
     body = []
     for m in sd.unique(rows, "method"):
@@ -257,6 +271,8 @@ def facts(data_dir):
     coarse = lambda problem, method: max(acc_rows(problem, method), key=lambda r: r["dt"])  # noqa: E731
     f["explicit_gain"] = fmt(coarse("spring", "explicit-euler")["energy_error"] + 1, 2)
     f["explicit_gain_dt"] = f"{coarse('spring', 'explicit-euler')['dt']:g}"
+    f["explicit_gain_words"] = (f"on the undamped spring its energy grew x{f['explicit_gain']} in 5 periods at "
+                                f"dt = {f['explicit_gain_dt']}")
     f["implicit_loss"] = fmt(100 * coarse("spring", "implicit-euler")["energy_error"], 4)
     failed = sorted(r["dt"] for r in acc_rows("orbit", "implicit-euler") if r["outcome"] != "ok")
     f["orbit_failure"] = (f"at dt ≥ {min(failed):g} (here: {', '.join('%g' % d for d in failed)})" if failed
@@ -271,6 +287,8 @@ def facts(data_dir):
 
     accuracy_collision_facts(acc, f)
     robustness_facts(rob, f)
+    limits.energy_facts(acc, sys.modules[__name__], f)
+    limits.comparison_facts(acc, sys.modules[__name__], f)
 
     pen = [r for r in acc_rows("cradle", "penalty k=1e4") if r["outcome"] == "ok" and sd.finite(r["error"])]
     best = min(pen, key=lambda r: r["error"]) if pen else None
@@ -341,7 +359,7 @@ def facts(data_dir):
     if any(nested_failsafe(r) for r in prof + [dict(r, total_us=r["us_per_step"]) for r in hyb]):
         stats.append("the default mode's response time includes its failsafe's (the zones are solved while "
                      "responding to an event), so the tables here show the response without it")
-    f["oddity_stats"] = ("- `StepStats`: " + "; ".join(stats) + ".\n") if stats else ""
+    f["oddity_stats"] = ("- The simulator's own phase timings: " + "; ".join(stats) + ".\n") if stats else ""
     return f
 
 
@@ -708,10 +726,19 @@ def mode_facts(data_dir, f):
 
 def pick_facts(f):
     """The "What to pick" bullets whose advice depends on what was measured."""
-    if f["tunnel_ok"]:
+    shots_ok = f.get("shots_default_perfect", [])
+    if f["tunnel_ok"] and shots_ok:
+        f["fast_pick"] = (f"- **Fast objects or thin obstacles**: {join(f'`{m}`' for m in shots_ok)}: they bounced in every "
+                          "cell of section 3 and within COR's bounds in every random shot. `simple` misses contacts "
+                          "once speed·dt exceeds the thinnest contact band; penalty lets anything through above "
+                          "(radii + thickness)·√(k/m)" + ("" if "hybrid" in shots_ok else
+                                                           "; the hybrid's default penalty layer moves the energy of "
+                                                           "some shots beyond COR's bounds (section 3)") + ".")
+    elif f["tunnel_ok"]:
         f["fast_pick"] = ("- **Fast objects or thin obstacles**: `continuous-time` (or `hybrid`): they bounced in every "
-                          "cell of section 3. `simple` misses contacts once speed·dt exceeds the thinnest contact band; "
-                          "penalty lets anything through above (radii + thickness)·√(k/m).")
+                          "cell of section 3, though no method stayed within COR's bounds in every random shot. "
+                          "`simple` misses contacts once speed·dt exceeds the thinnest contact band; penalty lets "
+                          "anything through above (radii + thickness)·√(k/m).")
     else:
         f["fast_pick"] = ("- **Fast objects or thin obstacles**: no method bounced in every cell of section 3 in this run "
                           "(see its table); `simple` misses contacts once speed·dt exceeds the thinnest contact band, "
@@ -737,15 +764,26 @@ def main(argv):
     if "--elapsed" in argv:
         elapsed = float(argv[argv.index("--elapsed") + 1])
     rel = os.path.relpath(data_dir, os.path.dirname(os.path.abspath(doc)) or ".")
+    damped, damped_facts = limits.damped_section(data_dir, rel, sys.modules[__name__])
+    shots, shots_facts = limits.shots_section(data_dir, rel, sys.modules[__name__])
+    penalty, penalty_facts = limits.penalty_section(data_dir, rel, sys.modules[__name__])
     sections = {
         "accuracy": accuracy_section(data_dir, rel),
+        "damped": damped,
+        "audit": limits.audit_section(data_dir, rel, sys.modules[__name__]),
         "stability": stability_section(data_dir, rel),
         "robustness": robustness_section(data_dir, rel),
+        "shots": shots,
+        "penalty": penalty,
         "hybrid": hybrid_section(data_dir, rel),
         "profile": profile_section(data_dir, rel),
         "contacts": contacts.section(data_dir, rel, sys.modules[__name__]),
     }
     all_facts = facts(data_dir)
+    all_facts.update(FACTS)
+    all_facts.update(damped_facts)
+    all_facts.update(shots_facts)
+    all_facts.update(penalty_facts)
     all_facts.update(contacts.facts(data_dir, sys.modules[__name__]))
     mode_facts(data_dir, all_facts)
     pick_facts(all_facts)

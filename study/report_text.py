@@ -8,7 +8,7 @@ literal here is the set-up of each experiment and the physics behind it.
 
 STABILITY_THEORY = {
     # (cells of a Markdown table: a literal | is written \\|)
-    "explicit-euler": "never stable: \\|1 + iω dt\\| > 1; energy x1e6 within the horizon at ω dt = 0.225",
+    "explicit-euler": "never stable: \\|1 + iω dt\\| > 1 (the measured value is where the growth reached x1e6 within the probe)",
     "symplectic-euler": "stable for ω dt < 2",
     "implicit-euler": "stable for every dt: \\|1/(1 − iω dt)\\| < 1",
     "linearized-implicit-euler": "stable for every dt (the same as implicit Euler on a linear spring)",
@@ -140,8 +140,8 @@ It builds `fosssim-study` (Release, in `build-study/`), runs every experiment in
 [study/README.md](../study/README.md).
 
 Time is wall time on the project's machine (2 shared cores). Every timed run is repeated and the
-least time kept (the run least disturbed by other work); even so, single numbers move by up to
-about 2x between regenerations. Ratios between methods of 10x and more are what to trust.
+least time kept (the run least disturbed by other work); even so, single numbers move between
+regenerations, so trust ratios between methods, not the last digit of a time.
 """
 
 METHODS = """\
@@ -192,15 +192,15 @@ ACCURACY_WORDS = """\
 - **Projectile**: all four integrators are exactly first order with the same error, g·dt·T/2
   (explicit Euler lags, the others lead). The implicit ones cost several times more per step for
   nothing: with a constant force, backward Euler *is* symplectic Euler.
-- **Springs and orbit**: symplectic Euler makes up the Pareto front (apart from the cheapest,
-  wrongest point of all): at the same cost it is about 100 times more accurate than explicit
-  Euler, and 100-1000 times cheaper than implicit Euler at the same accuracy. On the orbit it keeps the angular momentum exactly (to rounding) and its
-  energy error shrinks as dt², while explicit and implicit Euler drift by O(dt) (spiralling out and
-  in). Explicit Euler gains energy on every oscillation (x{explicit_gain} in 5 periods at
-  dt = {explicit_gain_dt}); implicit Euler damps it away (the undamped spring loses {implicit_loss} %
-  of its energy at that dt).
+- **Springs and orbit**: at the same time step symplectic Euler's position error is
+  {sympl_vs_explicit} than explicit Euler's, at the same cost per step; it needs {sympl_vs_implicit}.
+  On the orbit it keeps the angular momentum exactly (to rounding) and {orbit_energy_words}.
+  Explicit and implicit Euler drift instead (spiralling out and in).
+- **Explicit Euler gains energy on every oscillation** (x{explicit_gain} in 5 periods at
+  dt = {explicit_gain_dt}). {explicit_rule_words} Implicit Euler damps the energy away (the
+  undamped spring loses {implicit_loss} % of it at that dt).
 - **Implicit Euler on the orbit fails** {orbit_failure}: Newton's method does not converge in
-  100 iterations near the close approach and the simulator reports it. Linearized implicit Euler runs
+  100 iterations near the close approach and the simulator reports it.{orbit_collapse_words} Linearized implicit Euler runs
   on at those steps and returns nonsense (separation errors of tens to hundreds of metres, energy
   gains of thousands of times), without any sign of trouble.
 {collision_words}
@@ -208,8 +208,8 @@ ACCURACY_WORDS = """\
 {billiard_words}
 - **Penalty ignores COR** (it is a conservative spring: every floor bounce is elastic) and a soft
   one lets disks through: at k = 1e2 (the default) the falling disk passes through the floor and the
-  two disks through each other. A stiff one is only stable for ω·dt < 2 with ω = √(k/m): k = 1e6 on
-  unit masses needs dt < 2e-3, and above that it throws disks out at hundreds of m/s.
+  two disks through each other. A stiff one is only stable for ω·dt < 2 with ω = √(k/m) (the
+  undamped limit of section 2): k = 1e6 on unit masses needs dt < 2e-3.
 {cradle_note}
 - For collision problems the "order" in the table is erratic (including negative values): where
   the contact falls inside a step changes with dt, so errors do not fall on a straight line.
@@ -218,13 +218,16 @@ ACCURACY_WORDS = """\
 STABILITY_WORDS = """\
 ### What it says
 
-The measured limits sit on the theoretical lines. Symplectic Euler's largest stable step is
-2/ω_max (ω_max = √(k/m) for one spring, 1.98·√(k/m) for the row of ten, whose fastest mode decides);
-so for a given stiffness halve the step when a scene has chains of springs. Explicit Euler has no
-stable step at all: its energy grows by a factor 1 + (ω dt)² every step, and the blow-up mark (x1e6
-in 10 periods) is reached at ω dt = 0.225, nine times below symplectic Euler's limit. Both implicit
-methods stayed stable at every step tried (ω dt up to 100): on a stiff spring they are the only
-choice when the step cannot be made small, at the price of heavy numerical damping (chart 1).
+- {damped_match}. Damping gives explicit Euler a stable range it does not have undamped
+  ({damped_explicit_undamped}): below b/k, i.e. ω dt < 2ζ, as long as ζ ≤ 1. Damping shrinks
+  symplectic Euler's range: from 2/ω undamped to {symplectic_critical} at critical damping
+  (closed form {symplectic_critical_exact}/ω); heavily damped, both limits approach dt = 1/γ.
+  Both implicit methods held at every step tried, up to ω dt = {damped_top}.
+- Without damping (the second table; springs of stiffness k on unit masses, bisection on ω_max·dt to
+  0.1 %) symplectic Euler's limit is ω_max·dt = 2, where ω_max is the fastest mode: √(k/m) for one
+  spring and {row_ratio}·√(k/m) for a row of ten, so a chain of springs needs about half the step.
+  Explicit Euler's energy grows by 1 + (ω dt)² every step at every dt; the table's value is only
+  where that growth reached the study's blow-up mark (x1e6 within 10 periods of the fastest mode).
 """
 
 ROBUSTNESS_WORDS = """\
@@ -234,19 +237,24 @@ ROBUSTNESS_WORDS = """\
   miss at speed·dt = {simple_band} m; the band is the disk's plus the edge's diameter, 0.06 m): the
   red triangle above the dashed line. {simple_stuck}
 - {ccd_robust}
+- **Random shots, judged by energy** (the fourth chart and the third table; {shots_per_target} shots at each
+  of the {shots_targets}, the same shots for every method): {shots_perfect} The others:
+{shots_failures}
+  {shots_compat}
 - **`penalty` tunnels whenever the disk is fast enough to compress the penalty spring by the
   thickness plus the radii**: by energy balance (second chart) the compression is v·√(m/k), so it
   goes through above v = (r_disk + r_edge + thickness)·√(k/m) = 0.4, 4 and 40 m/s for k = 1e2,
   1e4, 1e6, whatever the step; a large step only makes it worse (it skips the spring){penalty_unstable}.
   A disk that does bounce sinks in by v·√(m/k) − thickness, up to the whole radii sum just below
-  the tunnelling speed.
+  the tunnelling speed (third chart and second table: where penalty stops bouncing against speed,
+  stiffness and dt). {penalty_limit_words}
 """
 
 HYBRID_INTRO = """\
 {box_disks} disks dropped into a box (three half-planes) under gravity, COR 0.5, dt = {box_dt} s,
 for maxiters from {box_lo} to {box_hi}, and the other methods on the same pile for comparison. "In
 a zone" counts the disks the failsafe moved (the study compares each step's end with the
-handler's mid-step state); zone counts are the handler's own StepStats.
+handler's mid-step state); zone counts are the handler's own.
 """
 
 HYBRID_WORDS = """\
@@ -263,7 +271,7 @@ PROFILE_WORDS = """\
 "Model no more than a scene needs": the table lists, for each scene, the forces it has, the pair
 kinds its collision handling visits, and the cost of each part per step. Forces are timed by
 wrapping each of the scene's forces (the clock's own cost taken off); the integrator's solve is the
-rest of its phase; detection, response and failsafe come from the simulator's own `StepStats`;
+rest of its phase; detection, response and failsafe come from the simulator's own phase timings;
 "rest" is what the step spends outside those (copying the state, the finite check, and collision
 work that the handler does not itemise, such as all of `simple`'s).
 
@@ -278,16 +286,21 @@ work that the handler does not itemise, such as all of `simple`'s).
 PICK = """\
 ## What to pick, in plain words
 
-- **Forces only (springs, gravity, orbits)**: symplectic Euler, with dt below 2/ω_max of the
-  stiffest spring (halve that for chains). It is the cheapest at every accuracy and keeps energy
-  and angular momentum. Take implicit Euler only when the stiffness forces a step above that
-  limit, and expect it to damp the motion and to cost {implicit_cost} times more per step.
-- **Never explicit Euler** for anything that oscillates or orbits: it is never stable.
+- **Forces only (springs, gravity, orbits)**: symplectic Euler. Keep dt below 2/ω of the stiffest
+  spring (ω = √(k/m)); with damping the limit is 2/(γ + √(γ² + ω²)), {symplectic_critical} at
+  critical damping, and a chain of springs needs about half the step (section 2, measured). At the
+  same step its error is {sympl_vs_explicit} than explicit Euler's, and it needs {sympl_vs_implicit}
+  (section 1). Its energy error stays bounded and shrinks in proportion to dt. Take implicit Euler
+  only when stiffness forces a step above that limit: it held at every step tried, but damps the
+  motion and costs {implicit_cost} times more per step.
+- **Never explicit Euler** for anything that oscillates or orbits: undamped it grew at every step
+  tried, and with damping it is stable only below b/k ({explicit_gain_words}).
 {fast_pick}
 - **Dense contact (piles, stacks)**: {dense_pick}
 - **Billiards-like scenes (many separate two-body impacts)**: `simple` with a small step, or
   `continuous-time` when the step is large or objects fast: {billiards_keep}.
 {compat_pick_line}
+- **Collisions in general**: {shots_ct}; see section 3 for the rest.
 - **Penalty**: only with a stiffness chosen for the fastest impact (v < (radii + thickness)·√(k/m))
   and a step below 2·√(m/k); it ignores COR.
 """
@@ -307,6 +320,7 @@ def document(sections, facts, elapsed):
                 "command, build included, prints its own total). ")
     parts = [
         INTRO.format(elapsed=when),
+        PICK.format(**facts),
         MODES.format(**facts),
         METHODS,
         PROBLEMS,
@@ -315,19 +329,28 @@ def document(sections, facts, elapsed):
         "front: no other run of any method is both cheaper and more accurate.",
         sections["accuracy"],
         ACCURACY_WORDS.format(**facts),
-        "## 2. Stability against stiffness\n\nFor each integrator, the largest time step at which a "
-        "spring system stays bounded, found by bisection on ω·dt (to 0.1 %) between 0.01 and 100, "
-        "with the theoretical limits drawn. Each probe runs max(10 periods of the fastest mode, 200 "
-        "steps); the springs start with displacements of 1e-4 m so that they stay linear until well "
-        "past the blow-up mark.",
+        sections.get("audit", ""),
+        "## 2. Stability: where each integrator's step limit is\n\nA damped spring, u'' = −ω²u − 2γu' "
+        f"(unit mass, ω = {facts['damped_omega']} rad/s, damping ratio ζ = γ/ω), is where the limits are "
+        "real: explicit Euler is stable only with damping, symplectic Euler's limit moves with it, and "
+        "both have closed forms (derived in `study/damped_stability.h` from the eigenvalues of one step, "
+        "and checked against them in `tests/study/damped_stability_test.cpp`). Each probe runs the "
+        f"spring in the simulator for {facts['damped_steps']} steps and calls it stable when its energy's "
+        "maximum over the second half is not above the first half's (by more than 1 %, so that a "
+        "neutral oscillation counts as stable); a bisection over a grid of time steps "
+        f"{facts['damped_grid']} apart finds the largest stable one.",
+        sections["damped"],
         sections["stability"],
         STABILITY_WORDS.format(**facts),
         "## 3. Collision robustness\n\nA disk (radius 0.02 m, unit mass) thrown straight at a thin "
         "fixed edge (radius 0.01 m), COR 1, for every collision method over speed x dt. At the end it "
         "has *bounced* (its own side, moving away), *tunnelled* (the far side), got *stuck* (overlapping "
         "the edge, or stopped on its own side), or the run was *unstable*. The second chart shows how "
-        "deep the penalty methods let it sink.",
+        "deep the penalty methods let it sink, the third where penalty stops bouncing, and the fourth judges "
+        "random shots by energy as well.",
         sections["robustness"],
+        sections["penalty"],
+        sections["shots"],
         ROBUSTNESS_WORDS.format(**facts),
         "## 4. The hybrid handler's cost on a dense pile\n\n" + HYBRID_INTRO.format(**facts),
         sections["hybrid"],
@@ -338,7 +361,6 @@ def document(sections, facts, elapsed):
         CONTACTS_INTRO if sections.get("contacts") else "",
         sections.get("contacts", ""),
         facts.get("contacts_words", "") if sections.get("contacts") else "",
-        PICK.format(**facts),
         ODDITIES.format(**facts),
     ]
     return "\n\n".join(p.strip("\n") for p in parts if p.strip()) + "\n"
