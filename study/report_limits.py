@@ -140,6 +140,13 @@ def shots_section(data_dir, rel, r):
             diff.append(f"`{m}` gains energy in {c[0]['gained energy']} shots with `--compat` against "
                         f"{d[0]['gained energy']} by default (largest ×{max(c[2]):.3g})")
     f["shots_compat"] = ("; ".join(diff) + ".") if diff else "`--compat` gained no more energy than the default mode."
+    h = summary.get(("hybrid", "default"))
+    off = (h[0]["gained energy"] + h[0]["lost energy"]) if h else 0
+    bare = summary.get(("hybrid k=0", "default"))
+    clean = bare and bare[0]["bounced"] == bare[1]
+    f["shots_oddity"] = (f"- In the random shots the default hybrid's penalty layer leaves the energy outside COR's "
+                         f"bounds in {off} of {h[1]} shots (gains up to ×{max(h[2]):.3g}"
+                         f"{'; without the layer, k = 0, in none' if clean else ''}).\n" if h and off and h[2] else "")
     ct = summary.get(("continuous-time", "default"))
     f["shots_ct"] = (f"`continuous-time` (default mode) bounced within COR's bounds in {ct[0]['bounced']} of {ct[1]} "
                      f"random shots" if ct else "")

@@ -308,7 +308,7 @@ PICK = """\
 ODDITIES = """\
 ## Things in the simulator that look wrong or cost more than they should
 
-{billiard_oddity}{layer_oddity}{compat_oddity}- Implicit Euler fails on the orbit {orbit_failure}: Newton does not converge in 100
+{billiard_oddity}{layer_oddity}{shots_oddity}{compat_oddity}- Implicit Euler fails on the orbit {orbit_failure}: Newton does not converge in 100
   iterations. Linearized implicit Euler returns large errors there, silently.
 {oddity_broad}{oddity_stats}"""
 
