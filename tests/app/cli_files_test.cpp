@@ -111,10 +111,10 @@ TEST_F(CliFiles, TrajectoriesThatDoNotFit) {
   std::string negative = bytes;
   negative.replace(64 + 68, 4, std::string("\xfe\xff\xff\xff", 4));  // record 1's: -2
   const std::vector<Case> cases = {
-      {"empty.bin", "", "ends before the initial record"},
+      {"empty.bin", "", "the file ends early at record 0 (byte 0 of 0)"},
       {"truncated.bin", bytes.substr(0, bytes.size() - 5), "record 10"},
       {"half.bin", bytes.substr(0, bytes.size() / 2), "record 5 (byte "},
-      {"trailing.bin", bytes + "x", "more records"},
+      {"trailing.bin", bytes + "x", "goes on after the scene's 10 steps"},
       {"absurd.bin", absurd, "impulse count 2147483647"},
       {"negative.bin", negative, "impulse count -2"},
   };

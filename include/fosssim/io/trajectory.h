@@ -67,14 +67,21 @@ class TrajectoryReader {
   static Status open(const std::string& path, int numParticles, RecordLayout layout,
                      std::unique_ptr<TrajectoryReader>& out);
   /// Reads the next record. At a clean end of the file returns ok with `atEnd` true; a record
-  /// that does not fit (truncated, negative or absurd counts) is an error naming record and byte.
+  /// that does not fit is an error naming record and byte: "the file ends early at record N (byte
+  /// B of S)" when what the record announces runs past the end, "record N (byte B of S):
+  /// impossible ..." for negative counts and unknown kinds. An error after the positions and
+  /// velocities leaves them in `record` (x and v are empty otherwise), so that a caller can tell
+  /// another scene's file by its values.
   Status next(TrajectoryRecord& record, bool& atEnd);
   long recordsRead() const { return records_; }
   std::uint64_t fileSize() const { return size_; }
+  /// Bytes read so far (the end of the last whole record after a successful next()).
+  std::uint64_t offset() const { return offset_; }
 
  private:
   TrajectoryReader() = default;
   Status fail(const std::string& what) const;
+  Status endsEarly(const std::string& what) const;
   bool readBytes(void* into, std::uint64_t bytes);
   std::string path_;
   int n_ = 0;
