@@ -21,8 +21,7 @@ class PictureOutputs final : public RunObserver {
                           std::optional<StagedFile> movie = std::nullopt)
       : outputs_(std::move(outputs)), places_(std::move(places)), movie_(std::move(movie)) {}
   Status start(const SceneFile& file, const State& initial, const RecordLayout&) override {
-    outputs_.start(file, initial);
-    return Status::ok();
+    return outputs_.start(file, initial);
   }
   Status afterStep(const SceneFile& file, const State& state, const CollisionLog&) override {
     return outputs_.afterStep(file, state);

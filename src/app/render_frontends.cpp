@@ -15,7 +15,7 @@
 
 namespace fosssim::app {
 
-Status addPictureOutputs(const Options& options, const SceneFile&, ObserverList& observers) {
+Status addPictureOutputs(const Options& options, const SceneFile& file, ObserverList& observers) {
   render::FrameOutputs outputs(options.frameWidth, options.frameHeight, options.frameEvery);
   std::vector<std::string> places;
   std::optional<StagedFile> movie;
@@ -36,7 +36,18 @@ Status addPictureOutputs(const Options& options, const SceneFile&, ObserverList&
       if (Status s = StagedFile::prepare(options.movie, "--movie", *movie); !s) return s;
       raster.movie = movie->writePath();
     }
-    raster.fps = options.fps;
+    if (!options.movie.empty()) {
+      // --fps 0 (the default) is real time; say what the movie will be.
+      const render::MovieTiming timing = render::movieTiming(options.fps, file.scene.dt, options.frameEvery);
+      raster.fps = timing.fps;
+      raster.movieEvery = timing.every;
+      raster.titleCard = options.titleCard;
+      if (!options.quiet)
+        std::fprintf(stderr, "FOSSSim: movie %s\n",
+                     render::describeMovie(options.movie, timing, options.fps, file.scene.dt, options.frameEvery,
+                                           file.scene.numSteps(), options.titleCard)
+                         .c_str());
+    }
     std::unique_ptr<render::RasterFrames> frames;
     if (Status s = render::RasterFrames::open(raster, frames); !s) return s;
     outputs.add(std::move(frames));
@@ -55,10 +66,25 @@ int runWindow(const Options& options, SceneFile& file, Simulator& simulator, Obs
     if (status) status = o->start(file, state, simulator.layout());
 
   // One step as the headless run takes it, so that -o and -g work from the window too.
+  Simulator* sim = &simulator;
   const std::function<Status()> step = [&]() -> Status {
-    if (Status s = simulator.step(file.scene, state, &observers); !s) return s;
+    if (Status s = sim->step(file.scene, state, &observers); !s) return s;
     for (auto& o : observers.items)
-      if (Status s = o->afterStep(file, state, simulator.log()); !s) return s;
+      if (Status s = o->afterStep(file, state, sim->log()); !s) return s;
+    return Status::ok();
+  };
+  // r: the initial state and a fresh simulator (its warm starts and energy watch start over), so
+  // the rerun is the run. Not while outputs record the run: a trajectory or frames cannot restart.
+  std::unique_ptr<Simulator> fresh;
+  const std::function<Status()> restart = [&]() -> Status {
+    SimulatorOptions simOptions;
+    simOptions.handler.compat = options.compat;
+    simOptions.handler.threads = options.threads;
+    std::unique_ptr<Simulator> next;
+    if (Status s = Simulator::create(file.scene, simOptions, next); !s) return s;
+    fresh = std::move(next);
+    sim = fresh.get();
+    state = file.initial;
     return Status::ok();
   };
   if (status) {
@@ -70,6 +96,9 @@ int runWindow(const Options& options, SceneFile& file, Simulator& simulator, Obs
     settings.stepsPerSecond = file.look.maxSimFreq;
     settings.totalSteps = file.scene.numSteps();
     settings.stepsRenderOffscreen = options.pngs || !options.movie.empty();
+    settings.keepOpen = options.keepOpen;
+    if (observers.items.empty()) settings.restart = restart;
+    else settings.noRestart = "no restart while -o, -g, -m, --movie or --verify record this run";
     settings.stopRequested = [] { return stopSignal() != 0; };  // SIGINT, SIGTERM: close like q
     status = render::runWindow(settings, file, state, step);
   }

@@ -14,7 +14,8 @@ FrameSequence::FrameSequence(int width, int height, int every) : every_(std::max
 }
 
 void FrameSequence::start(const SceneFile& file, const State& initial) {
-  view_.camera = initialCamera(file.look, initial, view_.width, view_.height);
+  camera_.start(file, initial, view_.width, view_.height);
+  view_.camera = camera_.camera();
   trails_ = PathTrails(file.look.paths, file.scene.dt);
   trails_.record(initial);
   steps_ = 0;
@@ -28,8 +29,13 @@ bool FrameSequence::advance(const State& state) {
   return true;
 }
 
-Picture FrameSequence::picture(const SceneFile& file, const State& state) const {
+Picture FrameSequence::picture(const SceneFile& file, const State& state) {
+  view_.camera = camera_.update(file.scene, state, view_.width, view_.height);
   return makePicture(file, state, trails_, view_);
+}
+
+Picture FrameSequence::initialPicture(const SceneFile& file, const State& initial) const {
+  return makePicture(file, initial, trails_, view_);
 }
 
 Status createDirectory(const std::string& dir, const std::string& what) {
@@ -50,11 +56,24 @@ Status SvgFrames::open(const std::string& dir, std::unique_ptr<SvgFrames>& out) 
 
 Status SvgFrames::frame(const Picture& picture, long number) { return writeSvg(svgFrameName(dir_, number), picture); }
 
+Status FrameOutputs::start(const SceneFile& file, const State& initial) {
+  sequence_.start(file, initial);
+  if (sinks_.empty()) return Status::ok();
+  const Picture picture = sequence_.initialPicture(file, initial);
+  for (auto& sink : sinks_)
+    if (Status s = sink->start(file, picture); !s) return s;
+  return Status::ok();
+}
+
 Status FrameOutputs::afterStep(const SceneFile& file, const State& state) {
   if (!sequence_.advance(state) || sinks_.empty()) return Status::ok();
+  const long number = sequence_.frameNumber();
+  if (std::none_of(sinks_.begin(), sinks_.end(), [&](const auto& sink) { return sink->wants(number); }))
+    return Status::ok();
   const Picture picture = sequence_.picture(file, state);
   for (auto& sink : sinks_)
-    if (Status s = sink->frame(picture, sequence_.frameNumber()); !s) return s;
+    if (sink->wants(number))
+      if (Status s = sink->frame(picture, number); !s) return s;
   return Status::ok();
 }
 

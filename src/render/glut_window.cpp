@@ -7,7 +7,9 @@
 #include "fosssim/render/camera.h"
 #include "fosssim/render/path_trails.h"
 #include "fosssim/render/picture.h"
-#include "fosssim/render/stroke_font.h"
+#include "fosssim/render/png_writer.h"
+#include "fosssim/render/svg_writer.h"
+#include "fosssim/render/window_overlay.h"
 
 #include <GL/freeglut.h>
 #include <GL/glx.h>
@@ -21,6 +23,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <thread>
 
 namespace fosssim::render {
@@ -32,6 +35,8 @@ constexpr double kZoomFactor = 1.25;
 constexpr double kPanFraction = 0.1;    // of the visible height per arrow key press
 constexpr int kTickMs = 10;             // timer period: fine enough for 100 steps/s and up
 constexpr double kMaxStepTimePerTick = 0.05;  // seconds: keep the window responsive
+constexpr double kNoteSeconds = 3;      // a note ("saved ...") stays this long
+constexpr double kErrorSeconds = 3;     // a failed run's error shows this long before the window closes
 
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
@@ -42,7 +47,8 @@ class Window {
         trails_(file.look.paths, file.scene.dt) {
     view_.width = settings.width;
     view_.height = settings.height;
-    view_.camera = initialCamera(file.look, state, view_.width, view_.height);
+    camera_.start(file, state, view_.width, view_.height);
+    view_.camera = camera_.camera();
     trails_.record(state);
     paused_ = settings.startPaused;
     anchor_ = rateTime_ = Clock::now();
@@ -55,19 +61,25 @@ class Window {
   const Status& status() const { return status_; }
 
   void display() {
+    view_.camera = camera_.update(file_.scene, state_, view_.width, view_.height);
     Picture pic = makePicture(file_, state_, trails_, view_);
     const std::string status = statusText();
-    double cap = labelCapHeight(view_.height);
-    const double room = view_.width - 1.4 * cap;  // a narrow window gets smaller letters
-    if (textWidth(status, cap) > room) cap = std::max(4.0, cap * room / textWidth(status, cap));
-    pic.labels.push_back({status, Vec2(0.7 * cap, 0.7 * cap), cap, pic.labels.front().color});
+    WindowOverlay overlay;
+    overlay.status = status + "  (h: keys)";
+    if (Clock::now() < noteUntil_) overlay.note = note_;
+    if (!status_) overlay.error = status_.message();
+    overlay.help = help_;
+    addWindowOverlay(pic, overlay);
     painter_.paint(pic);
+    if (screenshotDue_) saveScreenshot();  // the back buffer, before the swap leaves it undefined
     glutSwapBuffers();
     const std::string title = "FOSSSim: " + status;
     if (title != title_) {
       glutSetWindowTitle(title.c_str());
       title_ = title;
     }
+    // The course's window closed when the scene ended: a scripted -p 0 run returns.
+    if (status_ && finished() && !settings_.keepOpen) glutLeaveMainLoop();
   }
 
   void reshape(int w, int h) {
@@ -77,6 +89,7 @@ class Window {
   }
 
   void key(unsigned char k, int, int) {
+    if (help_ && k != 'h' && k != 'H' && k != '?') help_ = false;  // any other key also closes the help
     switch (k) {
       case ' ':
         paused_ = !paused_;
@@ -95,18 +108,39 @@ class Window {
         return;
       case 'c':
       case 'C':
-        // Back to the scene's viewport, or fit the particles where they are now.
-        view_.camera = initialCamera(file_.look, state_, view_.width, view_.height);
+        // Back to the scene's viewport, or fit the particles where they are now and follow them.
+        camera_.refit(file_, state_, view_.width, view_.height);
+        view_.camera = camera_.camera();
         break;
       case '+':
       case '=':
         view_.camera.size /= kZoomFactor;
+        camera_.take(view_.camera);
         break;
       case '-':
       case '_':
         view_.camera.size *= kZoomFactor;
+        camera_.take(view_.camera);
+        break;
+      case 'r':
+      case 'R':
+        restart();
+        break;
+      case 'h':
+      case 'H':
+      case '?':
+        help_ = !help_;
+        break;
+      case 'i':
+      case 'I':
+        saveSvg();
+        break;
+      case 'p':
+      case 'P':
+        screenshotDue_ = true;  // taken by the next display()
         break;
       default:
+        glutPostRedisplay();  // the help may have closed
         return;
     }
     glutPostRedisplay();
@@ -119,6 +153,7 @@ class Window {
     else if (k == GLUT_KEY_UP) view_.camera.cy += step;
     else if (k == GLUT_KEY_DOWN) view_.camera.cy -= step;
     else return;
+    camera_.take(view_.camera);
     glutPostRedisplay();
   }
 
@@ -129,6 +164,7 @@ class Window {
       dragY_ = y;
     } else if (buttonState == GLUT_DOWN && (button == 3 || button == 4)) {  // freeglut's wheel
       view_.camera.size = button == 3 ? view_.camera.size / kZoomFactor : view_.camera.size * kZoomFactor;
+      camera_.take(view_.camera);
       glutPostRedisplay();
     }
   }
@@ -138,6 +174,7 @@ class Window {
     // The world point under the cursor follows it (window y grows downwards).
     view_.camera.cx -= (x - dragX_) / view_.scale();
     view_.camera.cy += (y - dragY_) / view_.scale();
+    camera_.take(view_.camera);
     dragX_ = x;
     dragY_ = y;
     glutPostRedisplay();
@@ -146,13 +183,21 @@ class Window {
   void tick() {
     glutTimerFunc(kTickMs, [](int) { if (current) current->tick(); }, 0);
     if (stopRequested()) return;
+    const auto now = Clock::now();
+    if (!note_.empty() && now >= noteUntil_) {
+      note_.clear();
+      glutPostRedisplay();
+    }
+    if (!status_ && !settings_.keepOpen && seconds(now - failedAt_) > kErrorSeconds) {
+      glutLeaveMainLoop();
+      return;
+    }
     if (paused_ || finished()) {
       updateRate();
       return;
     }
     // Keep to <maxsimfreq> steps per wall second, but never fall into catching up forever
     // with a scene whose steps are slower than that.
-    const auto now = Clock::now();
     const double due = seconds(now - anchor_) * settings_.stepsPerSecond - static_cast<double>(anchorSteps_);
     if (due > settings_.stepsPerSecond * 0.25) {
       anchor_ = now;
@@ -186,8 +231,9 @@ class Window {
     for (long k = 0; k < n && !finished() && !stopRequested(); ++k) {
       status_ = step_();
       if (settings_.stepsRenderOffscreen) restoreContext();
-      if (!status_) {  // runWindow returns it; the caller reports it
-        glutLeaveMainLoop();
+      if (!status_) {  // shown in the window, and runWindow returns it for the caller to report
+        failedAt_ = Clock::now();
+        glutPostRedisplay();
         return false;
       }
       ++stepsTaken_;
@@ -196,6 +242,66 @@ class Window {
     }
     if (any) glutPostRedisplay();
     return any;
+  }
+
+  void showNote(const std::string& note) {
+    note_ = note;
+    noteUntil_ = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(kNoteSeconds));
+    glutPostRedisplay();
+  }
+
+  /// r: the caller resets the state (and its simulator); the window starts its run over.
+  void restart() {
+    if (!settings_.restart) {
+      showNote(settings_.noRestart.empty() ? "r: no restart here" : settings_.noRestart);
+      return;
+    }
+    status_ = settings_.restart();
+    if (!status_) failedAt_ = Clock::now();
+    stepsTaken_ = 0;
+    anchor_ = Clock::now();
+    anchorSteps_ = 0;
+    trails_.clear();
+    trails_.record(state_);
+    camera_.refit(file_, state_, view_.width, view_.height);
+    view_.camera = camera_.camera();
+    showNote(status_ ? "restarted from t = 0" : "the restart failed");
+  }
+
+  /// Saved pictures go to the current folder, named after the scene and the step.
+  std::string savedName(const char* extension) const {
+    char step[32];
+    std::snprintf(step, sizeof step, "_step%06ld.", state_.step);
+    return std::filesystem::path(file_.path).stem().string() + step + extension;
+  }
+
+  void saved(const Status& s, const std::string& path) {
+    const std::string text = s ? "saved " + path : s.message();
+    std::fprintf(stderr, "FOSSSim: %s\n", text.c_str());
+    showNote(text);
+  }
+
+  /// i (the course's key): the picture shown, as SVG, without the window's status line.
+  void saveSvg() {
+    const std::string path = savedName("svg");
+    saved(writeSvg(path, makePicture(file_, state_, trails_, view_)), path);
+  }
+
+  /// p: the window's pixels as they are about to be shown, as PNG.
+  void saveScreenshot() {
+    screenshotDue_ = false;
+    Image image;
+    image.width = view_.width;
+    image.height = view_.height;
+    std::vector<std::uint8_t> rows(3 * static_cast<std::size_t>(image.width) * image.height);
+    gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
+    gl_.ReadPixels(0, 0, image.width, image.height, GL_RGB, GL_UNSIGNED_BYTE, rows.data());
+    const std::size_t row = 3 * static_cast<std::size_t>(image.width);
+    image.rgb.resize(rows.size());
+    for (int y = 0; y < image.height; ++y)  // OpenGL's rows start at the bottom, PNG's at the top
+      std::copy_n(rows.data() + row * (image.height - 1 - y), row, image.rgb.data() + row * y);
+    const std::string path = savedName("png");
+    saved(writePng(path, image), path);
   }
 
   /// A step may draw off-screen frames (-g, --movie) through OSMesa on this thread, which leaves
@@ -237,6 +343,12 @@ class Window {
   GlFunctions gl_;
   GlPainter painter_;
   View view_;
+  FollowCamera camera_;
+  bool help_ = false;
+  bool screenshotDue_ = false;
+  std::string note_;
+  Clock::time_point noteUntil_;
+  Clock::time_point failedAt_;
   PathTrails trails_;
   Status status_ = Status::ok();
   bool paused_ = true;

@@ -1,8 +1,12 @@
 #include "fosssim/render/picture.h"
 
+#include "fosssim/render/stroke_font.h"
+
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 namespace fosssim::render {
 namespace {
@@ -68,6 +72,77 @@ Picture makePicture(const SceneFile& file, const State& state, const PathTrails&
   const double cap = labelCapHeight(view.height);
   pic.labels.push_back({timeText(state.time, scene.dt), Vec2(0.7 * cap, view.height - 1.7 * cap), cap,
                         inverse(look.background)});
+  return pic;
+}
+
+std::vector<std::string> wrapText(const std::string& text, std::size_t width) {
+  width = std::max<std::size_t>(width, 1);
+  std::vector<std::string> lines;
+  std::string line;
+  std::size_t k = 0;
+  while (k < text.size()) {
+    if (std::isspace(static_cast<unsigned char>(text[k]))) {
+      ++k;
+      continue;
+    }
+    std::size_t end = k;
+    while (end < text.size() && !std::isspace(static_cast<unsigned char>(text[end]))) ++end;
+    std::string word = text.substr(k, end - k);
+    k = end;
+    while (word.size() > width) {  // a word longer than a line is cut
+      if (!line.empty()) lines.push_back(std::move(line)), line.clear();
+      lines.push_back(word.substr(0, width));
+      word.erase(0, width);
+    }
+    if (!line.empty() && line.size() + 1 + word.size() > width) lines.push_back(std::move(line)), line.clear();
+    if (!word.empty()) line += (line.empty() ? "" : " ") + word;
+  }
+  if (!line.empty()) lines.push_back(std::move(line));
+  return lines;
+}
+
+Picture titleCard(const SceneFile& file, const View& view) {
+  Picture pic;
+  pic.view = view;
+  pic.background = file.look.background;
+  const Rgb ink = inverse(file.look.background);
+  const std::string name = std::filesystem::path(file.path).filename().string();
+  const std::string title = file.description.empty() ? name : file.description;
+  // Letters a 16th of the height tall (or smaller, so that a line holds at least 24 of them);
+  // a long description gets smaller letters, down to the time label's size, and only then is cut.
+  const double usable = 0.9 * view.width;
+  const double perCap = textWidth("M", 1.0);  // advance per unit of cap height
+  const double largest = std::max(4.0, std::min(view.height / 16.0, usable / (24 * perCap)));
+  const double smallest = std::min(largest, labelCapHeight(view.height));
+  double cap = largest;
+  std::size_t perLine = 1, maxLines = 1;
+  std::vector<std::string> lines;
+  for (;;) {
+    perLine = static_cast<std::size_t>(std::max(1.0, std::floor(usable / (perCap * cap))));
+    maxLines = static_cast<std::size_t>(std::max(1.0, std::floor(0.7 * view.height / (1.8 * cap))));
+    lines = wrapText(title, perLine);
+    if (lines.size() <= maxLines || cap <= smallest) break;
+    cap = std::max(smallest, cap * 0.9);
+  }
+  const double lineStep = 1.8 * cap;
+  if (lines.size() > maxLines) {  // still too long: as much as fits, then an ellipsis
+    lines.resize(maxLines);
+    std::string& last = lines.back();
+    if (last.size() + 3 > perLine) last.resize(perLine > 3 ? perLine - 3 : 0);
+    last += "...";
+  }
+  const double small = std::max(0.5 * cap, std::min(cap, 7.0));
+  const bool footer = !file.description.empty() && !name.empty();
+  const double block = lineStep * (static_cast<double>(lines.size()) - 1) + cap + (footer ? 2.5 * small : 0.0);
+  double baseline = 0.5 * view.height + 0.5 * block - cap;  // the block centred vertically
+  for (const std::string& line : lines) {
+    pic.labels.push_back({line, Vec2(0.5 * (view.width - textWidth(line, cap)), baseline), cap, ink});
+    baseline -= lineStep;
+  }
+  if (footer) {
+    const double y = baseline + lineStep - 2.5 * small;  // below the last line's descenders
+    pic.labels.push_back({name, Vec2(0.5 * (view.width - textWidth(name, small)), y), small, ink});
+  }
   return pic;
 }
 

@@ -2,6 +2,9 @@
 
 #include "fosssim/render/png_writer.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 namespace fosssim::render {
@@ -23,13 +26,80 @@ Status RasterFrames::open(const RasterSettings& settings, std::unique_ptr<Raster
   return Status::ok();
 }
 
+Status RasterFrames::start(const SceneFile& file, const Picture& initial) {
+  if (!movie_) return Status::ok();
+  if (settings_.titleCard) {
+    if (Status s = renderer_->render(titleCard(file, initial.view), image_); !s) return s;
+    const long frames = std::max(1L, std::lround(kTitleSeconds * settings_.fps));
+    for (long k = 0; k < frames; ++k)
+      if (Status s = movie_->write(image_); !s) return s;
+  }
+  if (Status s = renderer_->render(initial, image_); !s) return s;
+  return movie_->write(image_);
+}
+
+bool RasterFrames::inMovie(long number) const {
+  return movie_ && number % std::max(1L, settings_.movieEvery) == 0;
+}
+
+bool RasterFrames::wants(long number) const { return !settings_.pngDir.empty() || inMovie(number); }
+
 Status RasterFrames::frame(const Picture& picture, long number) {
+  if (!wants(number)) return Status::ok();
   if (Status s = renderer_->render(picture, image_); !s) return s;
   if (!settings_.pngDir.empty())
     if (Status s = writePng(pngFrameName(settings_.pngDir, number), image_); !s) return s;
-  if (movie_)
+  if (inMovie(number))
     if (Status s = movie_->write(image_); !s) return s;
   return Status::ok();
+}
+
+MovieTiming movieTiming(double requestedFps, double dt, int frameEvery) {
+  MovieTiming t;
+  const double frameTime = dt * std::max(frameEvery, 1);  // scene seconds between frames
+  if (requestedFps > 0 || !(frameTime > 0) || !std::isfinite(frameTime)) {
+    t.realTime = false;
+    t.fps = requestedFps > 0 ? requestedFps : 30;
+    t.speed = frameTime > 0 && std::isfinite(frameTime) ? frameTime * t.fps : 1;
+    return t;
+  }
+  const double rate = 1.0 / frameTime;
+  if (rate < kMinRealTimeFps) {  // e.g. dt = 10 s: a frame per 10 s would be a slide show
+    t.realTime = false;
+    t.fps = kMinRealTimeFps;
+    t.speed = frameTime * t.fps;
+    return t;
+  }
+  // The smallest k with rate / k <= the cap (a hair of slack: 1 / (0.01 * 1) is not exactly 100).
+  t.every = std::max(1L, static_cast<long>(std::ceil(rate / kMaxRealTimeFps * (1 - 1e-12))));
+  t.fps = rate / static_cast<double>(t.every);
+  t.speed = 1;
+  return t;
+}
+
+std::string describeMovie(const std::string& path, const MovieTiming& timing, double requestedFps, double dt,
+                          int frameEvery, long steps, bool titleCard) {
+  const long stepsPerFrame = std::max(frameEvery, 1) * timing.every;
+  const long scene = 1 + steps / stepsPerFrame;  // t = 0, then every stepsPerFrame steps
+  const long card = titleCard ? std::max(1L, std::lround(kTitleSeconds * timing.fps)) : 0;
+  char text[512];
+  char pace[96];
+  if (timing.realTime && timing.every > 1)
+    std::snprintf(pace, sizeof pace, "real time (frames left out to stay at most %g fps)", kMaxRealTimeFps);
+  else if (timing.realTime)
+    std::snprintf(pace, sizeof pace, "real time");
+  else if (requestedFps > 0)
+    std::snprintf(pace, sizeof pace, "%.3g x real time (--fps; leave it out for real time)", timing.speed);
+  else
+    std::snprintf(pace, sizeof pace, "%.3g x real time (real time would be under %g fps)", timing.speed, kMinRealTimeFps);
+  char cardText[64] = "";
+  if (card > 0) std::snprintf(cardText, sizeof cardText, " after a %.3g s title card", static_cast<double>(card) / timing.fps);
+  std::snprintf(text, sizeof text,
+                "%s: %.4g fps, a frame every %ld step%s (%.4g s of the scene): %s; %ld frames from t = 0, %.3g s%s",
+                path.c_str(), timing.fps, stepsPerFrame, stepsPerFrame == 1 ? "" : "s",
+                dt * static_cast<double>(stepsPerFrame), pace, scene, static_cast<double>(scene) / timing.fps,
+                cardText);
+  return text;
 }
 
 Status RasterFrames::finish() { return movie_ ? movie_->close() : Status::ok(); }

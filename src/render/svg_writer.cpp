@@ -130,6 +130,20 @@ std::string svgDocument(const Picture& pic) {
   }
   s << "</g>\n";
 
+  if (!pic.panels.empty()) {
+    s << "<g id=\"panels\">\n";
+    for (const PanelShape& panel : pic.panels) {
+      s << "<rect x=\"";
+      s.x(panel.lo.x()) << "\" y=\"";
+      s.y(panel.hi.y()) << "\" width=\"";
+      s.num(panel.hi.x() - panel.lo.x()) << "\" height=\"";
+      s.num(panel.hi.y() - panel.lo.y()) << "\" fill=\"";
+      s.color(panel.color) << "\" fill-opacity=\"";
+      s.num(panel.alpha) << "\"/>\n";
+    }
+    s << "</g>\n";
+  }
+
   // Labels use the built-in stroke font rather than <text>, so the SVG looks like the PNG
   // whatever fonts the viewer has; the text itself is kept in a <title> for search and screen readers.
   s << "<g id=\"labels\" fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";

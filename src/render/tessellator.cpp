@@ -156,6 +156,11 @@ void tessellate(const Picture& pic, Mesh& mesh) {
     if (visible(c, c, r)) out.capsule(c, c, r, p.color);
   }
 
+  for (const PanelShape& panel : pic.panels) {
+    const Rgba c = rgba(panel.color, panel.alpha);
+    out.quad(panel.lo, c, Vec2(panel.hi.x(), panel.lo.y()), c, panel.hi, c, Vec2(panel.lo.x(), panel.hi.y()), c);
+  }
+
   for (const LabelShape& label : pic.labels) {
     const double w = strokeWidth(label.capHeight);
     for (const StrokeSegment& s : layoutText(label.text, label.origin, label.capHeight))

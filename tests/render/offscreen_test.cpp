@@ -4,6 +4,7 @@
 
 #include "fosssim/render/offscreen_renderer.h"
 #include "fosssim/render/png_writer.h"
+#include "fosssim/render/raster_frames.h"
 
 #include <cstdlib>
 
@@ -175,8 +176,118 @@ TEST(CommandLine, MoviePipedIntoFfmpegLeavesNoFrames) {
   if (!testing::onPath("ffprobe").empty()) {
     const auto probe = testing::run("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
                                     "stream=width,height,nb_read_frames -of csv=p=0 " + (tmp / "out/movie.mp4"));
-    EXPECT_EQ(probe.output, "96,64,10\n");
+    EXPECT_EQ(probe.output, "96,64,11\n") << "the initial state and the 10 steps";
   }
+}
+
+// --- movies: real-time rate, the initial state first, the title card ---------------------------
+
+TEST(MovieTiming, DefaultsToRealTimeCappedNearSixtyFrames) {
+  // Real time: each movie frame lasts as long as the scene time between frames.
+  auto realTime = [](const MovieTiming& t, double dt, int every) {
+    return std::abs(t.fps * dt * every * static_cast<double>(t.every) - 1) < 1e-12;
+  };
+  const MovieTiming a = movieTiming(0, 0.04, 1);  // 25 frames a second
+  EXPECT_TRUE(a.realTime);
+  EXPECT_EQ(a.every, 1);
+  EXPECT_DOUBLE_EQ(a.fps, 25);
+  const MovieTiming b = movieTiming(0, 0.01, 8);  // scripts/run's old --frame-every 8 at dt 0.01
+  EXPECT_DOUBLE_EQ(b.fps, 12.5);
+  EXPECT_TRUE(realTime(b, 0.01, 8));
+  for (double dt : {0.01, 0.005, 0.001, 1e-5, 3e-3}) {  // above 60 fps: frames left out, still real time
+    const MovieTiming t = movieTiming(0, dt, 1);
+    EXPECT_TRUE(t.realTime) << dt;
+    EXPECT_TRUE(realTime(t, dt, 1)) << dt;
+    EXPECT_LE(t.fps, kMaxRealTimeFps + 1e-9) << dt;
+    EXPECT_GT(t.fps, kMaxRealTimeFps / 2) << dt << ": no more frames left out than needed";
+  }
+  EXPECT_EQ(movieTiming(0, 1e-5, 1).every, 1667);  // 100,000 frames a second would be no movie
+  const MovieTiming slow = movieTiming(0, 10, 1);  // one frame per 10 s of the scene
+  EXPECT_FALSE(slow.realTime);
+  EXPECT_DOUBLE_EQ(slow.fps, kMinRealTimeFps);
+  EXPECT_DOUBLE_EQ(slow.speed, 10);
+  const MovieTiming given = movieTiming(30, 0.01, 1);  // --fps 30: every frame, 0.3 x real time
+  EXPECT_FALSE(given.realTime);
+  EXPECT_EQ(given.every, 1);
+  EXPECT_DOUBLE_EQ(given.fps, 30);
+  EXPECT_DOUBLE_EQ(given.speed, 0.3);
+}
+
+/// A blue disk of radius 0.3 that jumps 1 unit right in each of its 4 steps, seen through a fixed
+/// viewport at 256 x 128: 128 pixels per unit, x = -0.5 at pixel column 0.
+const char* kJumpScene = R"(<scene>
+  <description text="A blue disk jumps to the right."/>
+  <duration time="0.4"/>
+  <integrator type="explicit-euler" dt="0.1"/>
+  <viewport cx="0.5" cy="0" size="0.5"/>
+  <backgroundcolor r="1" g="1" b="1"/>
+  <particle m="1" px="-0.5" py="0" vx="10" vy="0" fixed="0" radius="0.3"/>
+  <particlecolor i="0" r="0" g="0" b="1"/>
+</scene>)";
+
+/// The movie's frames as images (ffmpeg decodes them to PNG files in `dir`).
+std::vector<Image> decodeMovie(const std::string& movie, const std::string& dir) {
+  std::vector<Image> frames;
+  const auto r = testing::run("ffmpeg -hide_banner -loglevel error -i " + movie + " " + dir + "/decoded%03d.png");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  for (int k = 1;; ++k) {
+    Image image;
+    char name[32];
+    std::snprintf(name, sizeof name, "/decoded%03d.png", k);
+    if (!readPng(dir + name, image).isOk()) break;
+    frames.push_back(std::move(image));
+  }
+  return frames;
+}
+
+bool blueAt(const Image& image, int x, int y) {
+  const std::uint8_t* p = image.pixel(x, y);
+  return p[2] > 200 && p[0] < 60 && p[1] < 60;  // H.264 is lossy: near blue
+}
+
+TEST(CommandLine, MovieAtRealTimeOpensWithTheInitialState) {
+  if (testing::onPath("ffmpeg").empty() || testing::onPath("ffprobe").empty())
+    GTEST_SKIP() << "ffmpeg and ffprobe are not installed (scripts/setup installs them)";
+  TempDir tmp;
+  testing::writeText(tmp / "jump.xml", kJumpScene);
+  const auto r = testing::run(fosssim() + " -s " + (tmp / "jump.xml") + " -d 0 --movie " + (tmp / "m.mp4") +
+                              " --frame-size 256x128");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  // dt = 0.1: real time is 10 frames a second, and the run says so.
+  EXPECT_NE(r.output.find("10 fps"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("real time"), std::string::npos) << r.output;
+  const auto probe = testing::run("ffprobe -v error -select_streams v:0 -show_entries stream=r_frame_rate -of csv=p=0 " +
+                                  (tmp / "m.mp4"));
+  EXPECT_EQ(probe.output, "10/1\n");
+  const std::vector<Image> frames = decodeMovie(tmp / "m.mp4", tmp.path);
+  ASSERT_EQ(frames.size(), 5u) << "t = 0 and the 4 steps";
+  // The disk's centre: x = -0.5 (pixel 0) at t = 0, then 0.5 (128) after step 1, 1.5 (off the
+  // picture) after step 2. The first frame is the initial state, not the first step.
+  EXPECT_TRUE(blueAt(frames[0], 10, 64)) << "the first frame shows the disk where it starts";
+  EXPECT_FALSE(blueAt(frames[0], 128, 64));
+  EXPECT_TRUE(blueAt(frames[1], 128, 64)) << "the second frame, after step 1";
+  EXPECT_FALSE(blueAt(frames[1], 10, 64));
+}
+
+TEST(CommandLine, TitleCardOpensTheMovieForTwoSeconds) {
+  if (testing::onPath("ffmpeg").empty()) GTEST_SKIP() << "ffmpeg is not installed (scripts/setup installs it)";
+  TempDir tmp;
+  testing::writeText(tmp / "jump.xml", kJumpScene);
+  const auto r = testing::run(fosssim() + " -s " + (tmp / "jump.xml") + " -d 0 -q --title-card --movie " +
+                              (tmp / "m.mp4") + " --frame-size 256x128");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(r.output, "") << "-q: nothing said";
+  const std::vector<Image> frames = decodeMovie(tmp / "m.mp4", tmp.path);
+  ASSERT_EQ(frames.size(), 20u + 5u) << "2 s at 10 fps, then t = 0 and the 4 steps";
+  for (int k = 0; k < 20; ++k) {
+    // The card: no disk, some dark ink (the description) on white.
+    EXPECT_FALSE(blueAt(frames[k], 10, 64)) << k;
+    int ink = 0;
+    for (int y = 0; y < 128; ++y)
+      for (int x = 0; x < 256; ++x) ink += frames[k].pixel(x, y)[0] < 100;
+    EXPECT_GT(ink, 100) << k;
+  }
+  EXPECT_TRUE(blueAt(frames[20], 10, 64)) << "then the initial state";
 }
 
 TEST(CommandLine, MovieWithoutFfmpegSaysSo) {

@@ -127,7 +127,7 @@ TEST(Svg, FrameOutputsCreateTheFolderAndWriteEveryKthFrame) {
   ASSERT_TRUE(SvgFrames::open(tmp / "a/b", svg).isOk());
   FrameOutputs outputs(64, 48, 4);
   outputs.add(std::move(svg));
-  outputs.start(file, file.initial);
+  ASSERT_TRUE(outputs.start(file, file.initial).isOk());
   for (int step = 0; step < 10; ++step) ASSERT_TRUE(outputs.afterStep(file, file.initial).isOk());
   ASSERT_TRUE(outputs.finish().isOk());
   EXPECT_TRUE(std::filesystem::exists(svgFrameName(tmp / "a/b", 1)));
@@ -152,6 +152,42 @@ TEST(Svg, CommandLineWritesOneSvgPerStep) {
   EXPECT_FALSE(std::filesystem::exists(svgFrameName(tmp / "svg", 0)));
   const std::string last = testing::readText(svgFrameName(tmp / "svg", 10));
   EXPECT_NE(last.find("<title>t = 0.10</title>"), std::string::npos);
+}
+
+TEST(Svg, TheCameraKeepsAFallingRainInEveryFrame) {
+  // 20 disks on a 5 x 4 grid 1.2 m wide fall freely for 1.5 s (11 m): the camera fixed at the
+  // start would lose them all. Every frame must show every disk whole, and -m keeps the
+  // reference's numbering (1, 2, ... after steps 10, 20, ...).
+  std::string scene = "<scene>\n<duration time=\"1.5\"/>\n<integrator type=\"symplectic-euler\" dt=\"0.01\"/>\n";
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 4; ++j)
+      scene += "<particle m=\"1\" px=\"" + std::to_string(0.3 * i) + "\" py=\"" + std::to_string(0.3 * j) +
+               "\" vx=\"" + std::to_string(0.2 * (i - 2)) + "\" vy=\"0\" fixed=\"0\" radius=\"0.05\"/>\n";
+  scene += "<simplegravity fx=\"0\" fy=\"-9.81\"/>\n</scene>\n";
+  TempDir tmp;
+  testing::writeText(tmp / "rain.xml", scene);
+  const auto r = testing::run(std::string(FOSSSIM_EXECUTABLE) + " -s " + (tmp / "rain.xml") +
+                              " -d 0 -q --frame-size 320x240 --frame-every 10 -m " + (tmp / "svg"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(svgFrameName(tmp / "svg", 0)));
+  EXPECT_FALSE(std::filesystem::exists(svgFrameName(tmp / "svg", 16)));
+  for (int frame = 1; frame <= 15; ++frame) {
+    tinyxml2::XMLDocument doc;
+    ASSERT_EQ(doc.LoadFile(svgFrameName(tmp / "svg", frame).c_str()), tinyxml2::XML_SUCCESS) << frame;
+    int disks = 0;
+    for (auto* g = doc.RootElement()->FirstChildElement("g"); g; g = g->NextSiblingElement("g")) {
+      if (std::string(g->Attribute("id")) != "particles") continue;
+      for (auto* c = g->FirstChildElement("circle"); c; c = c->NextSiblingElement("circle")) {
+        ++disks;
+        const double x = c->DoubleAttribute("cx"), y = c->DoubleAttribute("cy"), rad = c->DoubleAttribute("r");
+        EXPECT_GE(x - rad, -0.01) << "frame " << frame;  // the SVG's two decimals
+        EXPECT_LE(x + rad, 320.01) << "frame " << frame;
+        EXPECT_GE(y - rad, -0.01) << "frame " << frame;
+        EXPECT_LE(y + rad, 240.01) << "frame " << frame;
+      }
+    }
+    EXPECT_EQ(disks, 20) << "frame " << frame;
+  }
 }
 
 }  // namespace

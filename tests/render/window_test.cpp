@@ -1,5 +1,8 @@
 // The interactive window, for real: FOSSSim -d 1 under Xvfb, driven with xdotool key presses,
 // photographed with xwd. Skipped (saying why) where Xvfb, xdotool or xwd are not installed.
+// Covered: stepping, zoom, pictures and -o/-g from the window; closing at the scene's end (and
+// --keep-open), a failed step shown and reported, the status line over a black floor, and the
+// keys i (SVG), p (PNG), h (help) and r (restart).
 #include "render_test_support.h"
 
 #include <chrono>
@@ -57,7 +60,7 @@ struct Child {
   }
 };
 
-pid_t spawn(const std::vector<std::string>& args, int stdoutFd = -1, int extraFd = -1) {
+pid_t spawn(const std::vector<std::string>& args, int stdoutFd = -1, int extraFd = -1, const std::string& cwd = "") {
   std::vector<char*> argv;
   std::vector<std::string> copy = args;
   for (auto& a : copy) argv.push_back(a.data());
@@ -69,6 +72,7 @@ pid_t spawn(const std::vector<std::string>& args, int stdoutFd = -1, int extraFd
     posix_spawn_file_actions_adddup2(&actions, stdoutFd, STDERR_FILENO);
   }
   (void)extraFd;  // inherited as is (not close-on-exec)
+  if (!cwd.empty()) posix_spawn_file_actions_addchdir_np(&actions, cwd.c_str());
   pid_t pid = -1;
   if (posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ) != 0) pid = -1;
   posix_spawn_file_actions_destroy(&actions);
@@ -232,6 +236,241 @@ TEST(Window, StepsWithKeysAndShowsTheScene) {
   EXPECT_FALSE(std::filesystem::exists(tmp / "pngs/frame00004.png"));
   xvfb.stop();
   unsetenv("DISPLAY");
+}
+
+// --- the end of a run, errors, the keys -----------------------------------------------------------
+
+/// One Xvfb for the tests below (started on first use, stopped at exit), with the tools they need.
+struct Display {
+  Child xvfb;
+  std::string name, why;
+  static Display& get() {
+    static Display d;
+    static bool started = false;
+    if (!started) {
+      started = true;
+      for (const char* tool : {"Xvfb", "xdotool", "xwd"})
+        if (onPath(tool).empty()) {
+          d.why = std::string(tool) + " is not installed (scripts/setup installs xvfb, xdotool and x11-apps)";
+          return d;
+        }
+      d.name = startXvfb(d.xvfb, d.why);
+    }
+    return d;
+  }
+};
+
+/// FOSSSim in a window on the shared display, its output in a log, run in `cwd`.
+struct WindowRun {
+  Child app;
+  std::string display, log, window;
+
+  WindowRun(const std::string& disp, const std::string& cwd, const std::vector<std::string>& args)
+      : display(disp), log(cwd + "/fosssim.log") {
+    setenv("DISPLAY", display.c_str(), 1);
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    std::vector<std::string> argv = {FOSSSIM_EXECUTABLE};
+    argv.insert(argv.end(), args.begin(), args.end());
+    app.pid = spawn(argv, fd, -1, cwd);
+    close(fd);
+    unsetenv("DISPLAY");
+  }
+  std::string x() const { return "DISPLAY=" + display + " "; }
+  /// Waits for the window to appear; false if it did not within 20 s.
+  bool find() {
+    for (auto end = Clock::now() + std::chrono::seconds(20); Clock::now() < end && window.empty();) {
+      const auto r = run(x() + "xdotool search --name '^FOSSSim: '");
+      if (r.exitCode == 0) window = r.output.substr(0, r.output.find('\n'));
+      else std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    return !window.empty();
+  }
+  /// Waits until the title contains `text`; the last title seen.
+  std::string waitTitle(const std::string& text, double seconds = 10) {
+    std::string title;
+    for (auto end = Clock::now() + std::chrono::duration<double>(seconds); Clock::now() < end;) {
+      title = run(x() + "xdotool getwindowname " + window).output;
+      if (title.find(text) != std::string::npos) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    return title;
+  }
+  int key(const std::string& keys) { return run(x() + "xdotool key --window " + window + " " + keys).exitCode; }
+  bool shot(const std::string& path, Screenshot& image, std::string& why) {
+    const auto r = run(x() + "xwd -silent -id " + window + " -out " + path);
+    if (r.exitCode != 0) return (why = r.output, false);
+    return image.load(path, why);
+  }
+  std::string output() const { return readText(log); }
+};
+
+#define NEED_DISPLAY()                                                   \
+  Display& shared = Display::get();                                      \
+  if (shared.name.empty()) GTEST_SKIP() << "no window test here: " << shared.why
+
+/// 10 steps of 0.1 s at <maxsimfreq> 100: the run takes a tenth of a second once started.
+const char* kShortScene = R"(<scene>
+  <duration time="1.0"/>
+  <integrator type="explicit-euler" dt="0.1"/>
+  <viewport cx="0" cy="0" size="1"/>
+  <particle m="1" px="-0.5" py="0" vx="1" vy="0" fixed="0" radius="0.1"/>
+</scene>)";
+
+TEST(Window, ClosesAtTheEndOfTheSceneAsTheCoursesDid) {
+  NEED_DISPLAY();
+  TempDir tmp;
+  writeText(tmp / "short.xml", kShortScene);
+  // A scripted run: not paused, PNG frames, nobody to press q. It must return by itself.
+  WindowRun w(shared.name, tmp.path, {"-s", "short.xml", "-d", "1", "-p", "0", "-g", "1"});
+  ASSERT_GT(w.app.pid, 0);
+  EXPECT_EQ(w.app.wait(20), 0) << w.output();
+  EXPECT_TRUE(std::filesystem::exists(tmp / "pngs/frame00010.png"));
+}
+
+TEST(Window, KeepOpenStaysAfterTheEndUntilQuit) {
+  NEED_DISPLAY();
+  TempDir tmp;
+  writeText(tmp / "short.xml", kShortScene);
+  WindowRun w(shared.name, tmp.path, {"-s", "short.xml", "-d", "1", "-p", "0", "--keep-open"});
+  ASSERT_TRUE(w.find()) << w.output();
+  const std::string title = w.waitTitle("done");
+  EXPECT_NE(title.find("step 10/10"), std::string::npos) << title;
+  EXPECT_EQ(w.app.wait(1.5), -1) << "it closed although --keep-open was given";
+  ASSERT_EQ(run(w.x() + "xdotool keydown --window " + w.window + " q").exitCode, 0);
+  EXPECT_EQ(w.app.wait(10), 0) << w.output();
+}
+
+/// A particle whose first step overflows to infinity: the simulation fails at step 1.
+const char* kFailingScene = R"(<scene>
+  <duration time="1.0"/>
+  <integrator type="explicit-euler" dt="10"/>
+  <viewport cx="0" cy="0" size="1"/>
+  <backgroundcolor r="1" g="1" b="1"/>
+  <particle m="1" px="0" py="0" vx="1e308" vy="0" fixed="0" radius="0.1"/>
+</scene>)";
+
+TEST(Window, AFailedStepIsShownAndEndsWithAnErrorStatus) {
+  NEED_DISPLAY();
+  TempDir tmp;
+  writeText(tmp / "fail.xml", kFailingScene);
+  {
+    // With --keep-open the window stays, showing the error on a red panel, until q.
+    WindowRun w(shared.name, tmp.path, {"-s", "fail.xml", "-d", "1", "-p", "0", "--keep-open"});
+    ASSERT_TRUE(w.find()) << w.output();
+    EXPECT_NE(w.waitTitle("failed").find("failed"), std::string::npos);
+    Screenshot image;
+    std::string why;
+    bool red = false;
+    for (auto end = Clock::now() + std::chrono::seconds(10); Clock::now() < end && !red;) {
+      ASSERT_TRUE(w.shot(tmp / "fail.xwd", image, why)) << why;
+      const std::uint32_t c = image.at(image.width / 2, image.height / 2 + 3);
+      red = (c >> 16 & 0xff) > 100 && (c >> 8 & 0xff) < 40 && (c & 0xff) < 40;
+    }
+    EXPECT_TRUE(red) << hex(image.at(image.width / 2, image.height / 2 + 3)) << ": no error panel in the middle";
+    EXPECT_EQ(w.app.wait(1), -1) << "--keep-open: the window stays after the error";
+    ASSERT_EQ(run(w.x() + "xdotool keydown --window " + w.window + " q").exitCode, 0);
+    EXPECT_EQ(w.app.wait(10), 1) << w.output();
+    EXPECT_NE(w.output().find("FOSSSim: error:"), std::string::npos) << w.output();
+  }
+  {
+    // Without it the window closes by itself a few seconds later, with the same message and status.
+    WindowRun w(shared.name, tmp.path, {"-s", "fail.xml", "-d", "1", "-p", "0"});
+    EXPECT_EQ(w.app.wait(20), 1) << w.output();
+    EXPECT_NE(w.output().find("FOSSSim: error:"), std::string::npos) << w.output();
+  }
+}
+
+/// A white background above a black floor that fills the lower half: the status line used to be
+/// black text on it.
+const char* kFloorScene = R"(<scene>
+  <duration time="1.0"/>
+  <integrator type="explicit-euler" dt="0.1"/>
+  <viewport cx="0" cy="0" size="1"/>
+  <particle m="1" px="0" py="0.5" vx="0" vy="0" fixed="0" radius="0.1"/>
+  <particlepath i="0" duration="1" r="1" g="0" b="0"/>
+  <halfplane px="0" py="0" nx="0" ny="1"/>
+  <simplegravity fx="0" fy="-1"/>
+</scene>)";
+
+TEST(Window, TheStatusLineIsReadableOverABlackFloor) {
+  NEED_DISPLAY();
+  TempDir tmp;
+  writeText(tmp / "floor.xml", kFloorScene);
+  WindowRun w(shared.name, tmp.path, {"-s", "floor.xml", "-d", "1"});
+  ASSERT_TRUE(w.find()) << w.output();
+  w.waitTitle("paused");
+  Screenshot image;
+  std::string why;
+  ASSERT_TRUE(w.shot(tmp / "floor.xwd", image, why)) << why;
+  // The floor is black well above the status line...
+  EXPECT_EQ(image.at(400, 400), 0x000000u) << hex(image.at(400, 400));
+  // ...and the status line's strip (the bottom 20 rows) is mostly light panel with dark letters.
+  int light = 0, dark = 0;
+  for (int y = image.height - 20; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const std::uint32_t c = image.at(x, y);
+      const int grey = ((c >> 16 & 0xff) + (c >> 8 & 0xff) + (c & 0xff)) / 3;
+      light += grey > 180;
+      dark += grey < 80;
+    }
+  EXPECT_GT(light, image.width * 20 / 2) << "no light panel behind the status line";
+  EXPECT_GT(dark, 100) << "no letters on it";
+  ASSERT_EQ(run(w.x() + "xdotool keydown --window " + w.window + " q").exitCode, 0);
+  EXPECT_EQ(w.app.wait(10), 0) << w.output();
+}
+
+TEST(Window, KeysSaveRestartAndHelp) {
+  NEED_DISPLAY();
+  TempDir tmp;
+  writeText(tmp / "floor.xml", kFloorScene);
+  WindowRun w(shared.name, tmp.path, {"-s", "floor.xml", "-d", "1", "--keep-open"});
+  ASSERT_TRUE(w.find()) << w.output();
+  ASSERT_EQ(w.key("s s s"), 0);
+  EXPECT_NE(w.waitTitle("step 3/10").find("step 3/10"), std::string::npos);
+
+  // i: an SVG of the moment, p: a PNG screenshot, both in the current folder, named by the step.
+  ASSERT_EQ(w.key("i p"), 0);
+  for (auto end = Clock::now() + std::chrono::seconds(10);
+       Clock::now() < end && !(std::filesystem::exists(tmp / "floor_step000003.png") &&
+                               std::filesystem::exists(tmp / "floor_step000003.svg"));)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  const std::string svg = readText(tmp / "floor_step000003.svg");
+  EXPECT_NE(svg.find("<title>t = 0.3</title>"), std::string::npos) << svg.substr(0, 300);
+  const std::string png = readText(tmp / "floor_step000003.png");
+  ASSERT_GE(png.size(), 24u);
+  EXPECT_EQ(png.substr(1, 3), "PNG");
+  auto be32 = [&](std::size_t k) {
+    const auto* b = reinterpret_cast<const unsigned char*>(png.data()) + k;
+    return std::uint32_t(b[0]) << 24 | std::uint32_t(b[1]) << 16 | std::uint32_t(b[2]) << 8 | b[3];
+  };
+  EXPECT_EQ(be32(16), 512u) << "the window's width";
+  EXPECT_EQ(be32(20), 512u) << "the window's height";
+  EXPECT_NE(w.output().find("saved floor_step000003.svg"), std::string::npos) << w.output();
+
+  // h: the help over the middle of the picture (dark letters where there was white background).
+  Screenshot before, after;
+  std::string why;
+  ASSERT_TRUE(w.shot(tmp / "before.xwd", before, why)) << why;
+  ASSERT_EQ(w.key("h"), 0);
+  auto darkInMiddle = [](const Screenshot& image) {
+    int dark = 0;
+    for (int y = 100; y < 240; ++y)
+      for (int x = 60; x < 450; ++x) dark += (image.at(x, y) & 0xff) < 80;
+    return dark;
+  };
+  for (auto end = Clock::now() + std::chrono::seconds(10); Clock::now() < end;) {
+    ASSERT_TRUE(w.shot(tmp / "after.xwd", after, why)) << why;
+    if (darkInMiddle(after) > darkInMiddle(before) + 200) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  EXPECT_GT(darkInMiddle(after), darkInMiddle(before) + 200) << "no help text appeared";
+
+  // r: back to t = 0 (no output records this run, so it may).
+  ASSERT_EQ(w.key("h r"), 0);
+  const std::string title = w.waitTitle("step 0/10");
+  EXPECT_NE(title.find("step 0/10  t = 0.0"), std::string::npos) << title;
+  ASSERT_EQ(run(w.x() + "xdotool keydown --window " + w.window + " q").exitCode, 0);
+  EXPECT_EQ(w.app.wait(10), 0) << w.output();
 }
 
 }  // namespace

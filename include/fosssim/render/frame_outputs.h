@@ -20,9 +20,9 @@ class FrameSequence {
   /// ...), numbered 1, 2, 3, ... in that order.
   FrameSequence(int width, int height, int every);
 
-  /// Resets for a run starting at `initial`: the camera is the scene's viewport or fits the
-  /// initial particles (and then stays put, so the picture does not jitter), trails start empty
-  /// but for the initial positions.
+  /// Resets for a run starting at `initial`: the camera is the scene's viewport, or fits the
+  /// initial particles and then follows them (FollowCamera: it only grows, smoothly, and keeps
+  /// every particle in view); trails start empty but for the initial positions.
   void start(const SceneFile& file, const State& initial);
 
   /// Call after every step: records the trails; true when this step gets a frame.
@@ -31,11 +31,15 @@ class FrameSequence {
   /// The number of the frame that the last advance() returning true asked for (from 1).
   long frameNumber() const { return frames_; }
 
-  Picture picture(const SceneFile& file, const State& state) const;
+  /// The picture of `state` (call in time order: the camera follows the states it is shown).
+  Picture picture(const SceneFile& file, const State& state);
+  /// The picture of the initial state given to start() (t = 0), with the starting camera.
+  Picture initialPicture(const SceneFile& file, const State& initial) const;
   const View& view() const { return view_; }
 
  private:
   View view_;
+  FollowCamera camera_;
   int every_;
   long steps_ = 0;
   long frames_ = 0;
@@ -46,6 +50,13 @@ class FrameSequence {
 class PictureSink {
  public:
   virtual ~PictureSink() = default;
+  /// Before the first step, with the picture of the initial state (t = 0). The reference's
+  /// per-step outputs (-g, -m) number their frames from the first step and leave it out; a
+  /// movie opens with it.
+  virtual Status start(const SceneFile&, const Picture&) { return Status::ok(); }
+  /// Whether frame `number` is wanted: a sink that keeps only some frames (a movie at a lower
+  /// rate than the frames) spares the drawing of the others.
+  virtual bool wants(long) const { return true; }
   /// Frame `number` (1, 2, ...) shows `picture`.
   virtual Status frame(const Picture& picture, long number) = 0;
   /// After the last frame (also after a failure, to release resources).
@@ -72,7 +83,8 @@ class FrameOutputs {
   void add(std::unique_ptr<PictureSink> sink) { sinks_.push_back(std::move(sink)); }
   bool empty() const { return sinks_.empty(); }
 
-  void start(const SceneFile& file, const State& initial) { sequence_.start(file, initial); }
+  /// Starts the sequence and hands every sink the picture of the initial state.
+  Status start(const SceneFile& file, const State& initial);
   /// Call after every step; builds the picture once and hands it to every sink when due.
   Status afterStep(const SceneFile& file, const State& state);
   /// Finishes every sink; the first failure is returned.

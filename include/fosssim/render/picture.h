@@ -46,8 +46,18 @@ struct LabelShape {
   Rgb color;
 };
 
+/// A filled rectangle in pixel coordinates (y up), drawn over the scene and under the labels: the
+/// backing that keeps a front end's text (the window's status line, its help) readable over
+/// whatever the scene draws beneath it.
+struct PanelShape {
+  Vec2 lo, hi;  ///< corners, pixels
+  Rgb color;
+  double alpha = 1;  ///< opacity, 0..1
+};
+
 /// Everything drawn in one frame. Draw order: background, paths, edges, half-planes, particles,
-/// labels (the time in the top-left corner, and whatever a front end adds, e.g. a status line).
+/// panels, labels (the time in the top-left corner, and whatever a front end adds, e.g. a status
+/// line on its panel).
 struct Picture {
   View view;
   Rgb background{1, 1, 1};
@@ -55,6 +65,7 @@ struct Picture {
   std::vector<CapsuleShape> edges;
   std::vector<HalfPlaneShape> halfplanes;
   std::vector<DiskShape> particles;
+  std::vector<PanelShape> panels;
   std::vector<LabelShape> labels;
 };
 
@@ -62,6 +73,14 @@ struct Picture {
 /// trails from `trails`, and the simulated time in the top-left corner in the colour
 /// 1 - background. Shapes with a non-finite position are left out.
 Picture makePicture(const SceneFile& file, const State& state, const PathTrails& trails, const View& view);
+
+/// A movie's title card: the scene's <description> (or, without one, its file name) in large
+/// letters, centred and wrapped to the picture's width, with the file name small below it; the
+/// scene's background and the time label's colour.
+Picture titleCard(const SceneFile& file, const View& view);
+
+/// `text` broken at spaces into lines of at most `width` characters (a longer word is cut).
+std::vector<std::string> wrapText(const std::string& text, std::size_t width);
 
 /// The time label text for `time` with as many decimals as the step size needs (e.g. dt = 0.005
 /// shows "t = 1.250").

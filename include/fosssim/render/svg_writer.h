@@ -11,7 +11,8 @@ namespace fosssim::render {
 
 /// The SVG document of `picture`. Groups, in draw order: <rect id="background">, <g id="paths">
 /// (polylines), <g id="edges"> (round-capped lines as wide as the capsule), <g id="halfplanes">
-/// (polygons of the solid side within the view), <g id="particles"> (circles), <g id="labels">
+/// (polygons of the solid side within the view), <g id="particles"> (circles), <g id="panels">
+/// (rectangles, only when the picture has any), <g id="labels">
 /// (stroked paths of the built-in font, the text itself in a <title>).
 std::string svgDocument(const Picture& picture);
 
