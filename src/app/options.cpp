@@ -81,7 +81,7 @@ std::string footer() {
   for (const IntegratorEntry& e : integratorTable()) integrators.emplace_back(e.keyword, e.summary);
   return "Collision handling, <collision type=\"...\"> in the scene file:\n" + keywordRows(collisions) +
          "\nIntegrators, <integrator type=\"...\" dt=\"...\"> in the scene file:\n" + keywordRows(integrators) +
-         "\n" +
+         "\nEvery element and attribute of the scene format: docs/scene-format.md.\n\n" +
          HelpFormatter::wrap("Window keys: space pause/resume, s single step, q/Esc quit, c re-centre, +/- zoom, "
                              "arrows or mouse drag pan.", HelpFormatter::kWidth) +
          "\n" +
