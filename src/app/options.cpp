@@ -82,8 +82,9 @@ std::string footer() {
   return "Collision handling, <collision type=\"...\"> in the scene file:\n" + keywordRows(collisions) +
          "\nIntegrators, <integrator type=\"...\" dt=\"...\"> in the scene file:\n" + keywordRows(integrators) +
          "\nEvery element and attribute of the scene format: docs/scene-format.md.\n\n" +
-         HelpFormatter::wrap("Window keys: space pause/resume, s single step, q/Esc quit, c re-centre, +/- zoom, "
-                             "arrows or mouse drag pan.", HelpFormatter::kWidth) +
+         HelpFormatter::wrap("Window keys: space pause/resume, s single step, r restart, c re-centre (follow the "
+                             "particles), +/- zoom, arrows or mouse drag pan, i save an SVG, p save a PNG "
+                             "screenshot, h or ? help, q/Esc quit.", HelpFormatter::kWidth) +
          "\n" +
          HelpFormatter::wrap("Exit status: 0 success (and a passed grade), 1 a bad scene, a failed run or a failed "
                              "grade, 2 a bad command line.", HelpFormatter::kWidth);

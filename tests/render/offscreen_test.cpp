@@ -312,8 +312,15 @@ TEST(CommandLine, WindowWithoutADisplayRunsHeadless) {
 TEST(CommandLine, HelpNamesThePictureOptions) {
   const auto r = testing::run(fosssim() + " -h");
   ASSERT_EQ(r.exitCode, 0);
-  for (const char* option : {"--frame-size", "--frame-every", "--png-dir", "--movie", "--fps", "-m DIR", "-g 0|1"})
+  for (const char* option : {"--frame-size", "--frame-every", "--png-dir", "--movie", "--fps", "-m DIR", "-g 0|1",
+                             "--title-card", "--keep-open"})
     EXPECT_NE(r.output.find(option), std::string::npos) << option;
+  // and the window's keys (the help wraps lines: compare with single spaces)
+  std::string text = r.output;
+  for (char& c : text) c = c == '\n' ? ' ' : c;
+  while (text.find("  ") != std::string::npos) text.replace(text.find("  "), 2, " ");
+  for (const char* key : {"r restart", "i save an SVG", "p save a PNG screenshot", "h or ? help", "q/Esc quit"})
+    EXPECT_NE(text.find(key), std::string::npos) << key;
 }
 
 }  // namespace
