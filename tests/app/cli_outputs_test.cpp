@@ -1,0 +1,212 @@
+// Outputs that never destroy an input or hold what they should not, through the command line:
+// an output that is an input (by another name, a symbolic or a hard link) is refused; -o is
+// written under NAME.partial.EXT and takes its name only when the run completes; a run that
+// blows up leaves no non-finite number in -o (continuous-time and hybrid, whose mid-step record
+// comes before the step's finite check); --compact; the size warning of a huge -o; --movie
+// names that ffmpeg would read as options or protocols.
+#include "background_run.h"
+
+#include <sys/statvfs.h>
+
+namespace fosssim::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr RecordLayout kContinuousTime{true, true, true};
+
+class CliOutputs : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("fosssim-cli-outputs-" + std::to_string(getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::string write(const std::string& name, const std::string& text) const {
+    std::ofstream(path(name), std::ios::binary) << text;
+    return path(name);
+  }
+  /// Two particles that meet (continuous-time or hybrid: mid-step records, impulses, polynomials).
+  std::string meeting(const std::string& name, const std::string& collision, double duration = 2) const {
+    return write(name, "<scene><duration time=\"" + std::to_string(duration) +
+                           "\"/><integrator type=\"explicit-euler\" dt=\"0.01\"/><collision type=\"" + collision +
+                           "\"/><particle m=\"1\" px=\"0\" py=\"0\" vx=\"1\" vy=\"0\" fixed=\"0\" radius=\"0.1\"/>"
+                           "<particle m=\"1\" px=\"3\" py=\"0\" vx=\"-1\" vy=\"0\" fixed=\"0\" radius=\"0.1\"/></scene>\n");
+  }
+  fs::path dir_;
+};
+
+/// Runs FOSSSim with `args` and expects the refusal naming `output` and the scene, with the scene
+/// file unchanged.
+void expectRefused(const std::vector<std::string>& args, const std::string& scene, const std::string& fragment) {
+  const std::string before = slurp(scene);
+  const Outcome o = runFosssim(args);
+  EXPECT_TRUE(exitedWith(o, 1)) << o;
+  EXPECT_TRUE(contains(o.err, fragment)) << "missing \"" << fragment << "\"\n" << o;
+  EXPECT_TRUE(contains(o.err, "is the same file as the scene file given to -s")) << o;
+  EXPECT_EQ(slurp(scene), before) << "the scene file changed";
+}
+
+TEST_F(CliOutputs, AnOutputThatIsTheSceneIsRefused) {
+  const std::string scene = meeting("scene.xml", "continuous-time");
+  const std::vector<std::string> run = {"-s", scene, "-d", "0", "-q"};
+  auto with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = run;
+    args.insert(args.end(), extra.begin(), extra.end());
+    return args;
+  };
+  // The same name, another spelling of it, a symbolic link, a hard link.
+  fs::create_symlink(scene, path("symlink.bin"));
+  fs::create_hard_link(scene, path("hardlink.bin"));
+  for (const std::string& out : {scene, (dir_ / "." / "scene.xml").string(), path("symlink.bin"), path("hardlink.bin")}) {
+    SCOPED_TRACE(out);
+    expectRefused(with({"-o", out}), scene, "-o \"" + out + "\" is the same file");
+    expectRefused(with({"--movie", out}), scene, "--movie \"" + out + "\" is the same file");
+  }
+  // -o's partial name: "x.bin" is written as "x.partial.bin" until the run completes.
+  fs::create_hard_link(scene, path("x.partial.bin"));
+  expectRefused(with({"-o", path("x.bin")}), scene, "its partial file \"" + path("x.partial.bin") + "\"");
+  // A frame that -m or -g would write over.
+  fs::create_directories(path("svg"));
+  fs::create_symlink(scene, path("svg/frame00000000000000000001.svg"));
+  expectRefused(with({"-m", path("svg")}), scene, "the frame file");
+  fs::create_directories(path("png"));
+  fs::create_hard_link(scene, path("png/frame00002.png"));
+  expectRefused(with({"-g", "1", "--png-dir", path("png")}), scene, "the frame file");
+}
+
+TEST_F(CliOutputs, TheFinalNameOnlyForACompletedRun) {
+  const std::string scene = meeting("scene.xml", "continuous-time");
+  // Completed: the final name, no partial file left.
+  const Outcome done = runFosssim({"-s", scene, "-d", "0", "-q", "-o", path("t.bin")});
+  ASSERT_TRUE(exitedWith(done, 0)) << done;
+  EXPECT_TRUE(fs::exists(path("t.bin")));
+  EXPECT_FALSE(fs::exists(path("t.partial.bin")));
+  EXPECT_EQ(wholeFiniteRecords(path("t.bin"), 2, kContinuousTime), 1 + 2 * 200);
+  // A stale partial file of an earlier run is replaced, not appended to or followed.
+  write("u.partial.bin", "stale");
+  ASSERT_TRUE(exitedWith(runFosssim({"-s", scene, "-d", "0", "-q", "-o", path("u.bin")}), 0));
+  EXPECT_EQ(slurp(path("u.bin")), slurp(path("t.bin")));
+  EXPECT_FALSE(fs::exists(path("u.partial.bin")));
+  // A symbolic link as -o: the file it points at gets the trajectory, the link stays.
+  write("target.bin", "old");
+  fs::create_symlink(path("target.bin"), path("link.bin"));
+  ASSERT_TRUE(exitedWith(runFosssim({"-s", scene, "-d", "0", "-q", "-o", path("link.bin")}), 0));
+  EXPECT_TRUE(fs::is_symlink(path("link.bin")));
+  EXPECT_EQ(slurp(path("target.bin")), slurp(path("t.bin")));
+  // A device is written directly.
+  EXPECT_TRUE(exitedWith(runFosssim({"-s", scene, "-d", "0", "-q", "-o", "/dev/null"}), 0));
+}
+
+// Forces beyond the range of doubles: the first step's velocity is infinite. The mid-step record
+// of continuous-time and hybrid used to reach the file before the step's finite check.
+TEST_F(CliOutputs, ABlowUpWritesNothingNonFinite) {
+  for (const std::string collision : {"continuous-time", "hybrid"}) {
+    SCOPED_TRACE(collision);
+    const std::string scene =
+        write("boom.xml", "<scene><duration time=\"1\"/><integrator type=\"explicit-euler\" dt=\"0.1\"/>"
+                          "<collision type=\"" + collision + "\"/>"
+                          "<particle m=\"1e-300\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>"
+                          "<particle m=\"1\" px=\"5\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>"
+                          "<simplegravity fx=\"0\" fy=\"0\"/><constantforce fx=\"1e300\" fy=\"0\"/></scene>");
+    write("boom.bin", "an older file");
+    const Outcome o = runFosssim({"-s", scene, "-d", "0", "-q", "-o", path("boom.bin")});
+    EXPECT_TRUE(exitedWith(o, 1)) << o;
+    EXPECT_TRUE(contains(o.err, "step 1")) << o;
+    EXPECT_TRUE(contains(o.err, "non-finite")) << o;
+    // The failed run's records are whole and finite: record 0 only. The older file is untouched.
+    EXPECT_EQ(wholeFiniteRecords(path("boom.partial.bin"), 2, kContinuousTime), 1);
+    EXPECT_TRUE(contains(o.err, "the trajectory up to step 0 (1 whole records")) << o;
+    EXPECT_TRUE(contains(o.err, "the older file of that name is as it was")) << o;
+    EXPECT_EQ(slurp(path("boom.bin")), "an older file");
+  }
+}
+
+// --compact: the same positions, velocities and impulses, without the polynomial log.
+TEST_F(CliOutputs, CompactKeepsEverythingButThePolynomials) {
+  for (const std::string collision : {"continuous-time", "hybrid"}) {
+    SCOPED_TRACE(collision);
+    const std::string scene = meeting("m.xml", collision);
+    ASSERT_TRUE(exitedWith(runFosssim({"-s", scene, "-d", "0", "-q", "-o", path("full.bin")}), 0));
+    ASSERT_TRUE(exitedWith(runFosssim({"-s", scene, "-d", "0", "-q", "-o", path("compact.bin"), "--compact"}), 0));
+    std::unique_ptr<TrajectoryReader> full, compact;
+    ASSERT_TRUE(TrajectoryReader::open(path("full.bin"), 2, kContinuousTime, full).isOk());
+    ASSERT_TRUE(TrajectoryReader::open(path("compact.bin"), 2, RecordLayout{true, false, true}, compact).isOk());
+    EXPECT_LT(sizeOf(path("compact.bin")), sizeOf(path("full.bin")));
+    long records = 0, impulses = 0, polynomials = 0;
+    for (;; ++records) {
+      TrajectoryRecord a, b;
+      bool endA = false, endB = false;
+      ASSERT_TRUE(full->next(a, endA).isOk());
+      const Status s = compact->next(b, endB);
+      ASSERT_TRUE(s.isOk()) << s.message();
+      ASSERT_EQ(endA, endB) << "record " << records;
+      if (endA) break;
+      EXPECT_EQ(a.x, b.x) << "record " << records;
+      EXPECT_EQ(a.v, b.v) << "record " << records;
+      ASSERT_EQ(a.log.impulses.size(), b.log.impulses.size()) << "record " << records;
+      impulses += static_cast<long>(a.log.impulses.size());
+      polynomials += a.log.polynomials.size();
+      EXPECT_EQ(b.log.polynomials.size(), 0);
+    }
+    EXPECT_EQ(records, 1 + 2 * 200);
+    EXPECT_GT(polynomials, 0);  // what --compact leaves out was there
+    if (collision == "continuous-time") {
+      EXPECT_GT(impulses, 0);  // they meet (hybrid's list stays empty)
+    }
+  }
+}
+
+// A continuous-time -o whose estimated size is large (every pair's polynomials in every record,
+// 10^8 steps): the warning comes with the figure after the first step; the free space it is
+// compared with is the real one, so either form of the warning may come.
+TEST_F(CliOutputs, AHugeTrajectoryIsAnnouncedAtOnce) {
+  std::string text = "<scene><duration time=\"100000\"/><integrator type=\"explicit-euler\" dt=\"0.001\"/>"
+                     "<collision type=\"continuous-time\"/>";
+  for (int k = 0; k < 40; ++k)
+    text += "<particle m=\"1\" px=\"" + std::to_string(3 * k) + "\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>";
+  const std::string scene = write("big.xml", text + "</scene>");
+  BackgroundRun run({"-s", scene, "-d", "0", "-q", "-o", path("big.bin")}, dir_.string());
+  ASSERT_TRUE(run.started());
+  const std::string warning = "FOSSSim: warning: " + path("big.bin") + ": at this rate the trajectory will take about ";
+  const bool warned = run.waitFor([&] { return contains(run.err(), warning); }, 60);
+  run.signal(SIGTERM);
+  const Outcome o = run.finish(60);
+  ASSERT_TRUE(warned) << o;
+  EXPECT_TRUE(contains(o.err, "--compact leaves out the polynomial log")) << o;
+  // Said at once: before step 100 at the latest (the first steps give the estimate).
+  EXPECT_TRUE(exitedWith(o, 143)) << o;
+  EXPECT_LT(stepAfter(o.err, "after step "), 1000) << o;
+  struct statvfs st {};
+  ASSERT_EQ(statvfs(dir_.c_str(), &st), 0);
+  const double freeBytes = static_cast<double>(st.f_bavail) * static_cast<double>(st.f_frsize);
+  // 780 pairs' polynomials twice a step for 10^8 steps: terabytes, more than most disks hold.
+  if (freeBytes < 1e12) {
+    EXPECT_TRUE(contains(o.err, "are free on its disk: the run will stop before the disk is full")) << o;
+  }
+}
+
+// ffmpeg reads "-name" as an option and "proto:name" as a protocol ("pipe:1" is its stdout):
+// FOSSSim hands it every name as a file.
+TEST_F(CliOutputs, MovieNamesAreFilesWhateverTheyLookLike) {
+  if (!onPath("ffmpeg")) GTEST_SKIP() << "ffmpeg is not installed (scripts/setup installs it)";
+  const std::string scene = meeting("m.xml", "continuous-time", 0.1);
+  const fs::path before = fs::current_path();
+  fs::current_path(dir_);  // relative names, as a user types them
+  for (const std::string name : {"-movie.mkv", "pipe:1.mkv", "file:x.mkv", "a:b.mkv"}) {
+    SCOPED_TRACE(name);
+    const Outcome o = runFosssim({"-s", scene, "-d", "0", "-q", "--frame-size", "32x32", "--movie=" + name});
+    if (contains(o.err, "built without the renderer")) {
+      fs::current_path(before);
+      GTEST_SKIP() << "this build has no renderer";
+    }
+    EXPECT_TRUE(exitedWith(o, 0)) << o;
+    EXPECT_GT(sizeOf((dir_ / name).string()), 0u) << name << " is not a file in " << dir_;
+    EXPECT_EQ(o.out, "") << "the movie went to stdout";
+  }
+  fs::current_path(before);
+}
+
+}  // namespace
+}  // namespace fosssim::testing
