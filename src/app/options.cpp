@@ -148,8 +148,8 @@ void define(CLI::App& app, Options& o, Given& g) {
   flag("--check", o.check, run,
        "load and check the scene, report its warnings and errors, run nothing; no output options with it");
   flag("--compact", o.compact, run,
-       "write -o without the collision log: positions and velocities only, far smaller for continuous-time and "
-       "hybrid scenes, but not gradable against the course's files (needs -o)");
+       "write -o without the polynomial log (positions, velocities and impulses stay): far smaller for "
+       "continuous-time and hybrid scenes; for reading positions, not for grading with -i (needs -o)");
 
   const std::string pictures = "Pictures, movies and the window";
   value("--frame-size", g.frameSize, "WxH", pictures,
