@@ -1,0 +1,121 @@
+// Pictures of a simulator's current state: an RGB NumPy array or PNG file (OpenGL through OSMesa,
+// when FOSSSim was built with its renderer), SVG (always), and movies through ffmpeg.
+#include "arrays.h"
+#include "bindings.h"
+#include "py_simulator.h"
+
+#include "fosssim/render/picture.h"
+#include "fosssim/render/svg_writer.h"
+#ifdef FOSSSIM_HAVE_RENDER
+#include "fosssim/render/movie_writer.h"
+#include "fosssim/render/offscreen_renderer.h"
+#include "fosssim/render/png_writer.h"
+#endif
+
+#include <nanobind/stl/optional.h>
+#include <nanobind/stl/string.h>
+
+#include <map>
+
+namespace fosssim::py {
+namespace {
+
+void checkSize(int width, int height) {
+  if (width < 1 || height < 1 || width > 16384 || height > 16384)
+    throw SceneError("picture size must be 1 .. 16384 pixels each way, got " + std::to_string(width) + " x " +
+                     std::to_string(height));
+}
+
+/// The picture of the current state. The camera is the scene's viewport, or one that fits the
+/// initial state's particles, so that successive frames share one camera.
+render::Picture picture(const PySimulator& s, int width, int height) {
+  checkSize(width, height);
+  render::View view;
+  view.width = width;
+  view.height = height;
+  view.camera = render::initialCamera(s.scene().file.look, s.scene().file.initial, width, height);
+  return render::makePicture(s.scene().file, s.state(), s.trails(), view);
+}
+
+#ifdef FOSSSIM_HAVE_RENDER
+/// One OSMesa context per picture size, made on first use and kept for the process.
+render::OffscreenRenderer& renderer(int width, int height) {
+  static std::map<std::pair<int, int>, std::unique_ptr<render::OffscreenRenderer>> renderers;
+  auto& r = renderers[{width, height}];
+  if (!r) check<SimulationError>(render::OffscreenRenderer::create(width, height, r));
+  return *r;
+}
+
+render::Image frame(const PySimulator& s, int width, int height) {
+  render::Image image;
+  check<SimulationError>(renderer(width, height).render(picture(s, width, height), image));
+  return image;
+}
+#else
+[[noreturn]] void noRenderer() {
+  throw SimulationError("this fosssim was built without its renderer (FOSSSIM_RENDER=OFF): no raster frames; "
+                        "svg() and save_svg() work");
+}
+#endif
+
+}  // namespace
+
+void bindPictures(nb::module_& m) {
+  nb::class_<PySimulator> cls = nb::borrow<nb::class_<PySimulator>>(m.attr("Simulator"));
+  cls.def("render", [](const PySimulator& s, int width, int height) {
+#ifdef FOSSSIM_HAVE_RENDER
+        const render::Image image = frame(s, width, height);
+        const size_t shape[3] = {static_cast<size_t>(image.height), static_cast<size_t>(image.width), 3};
+        auto* copy = new std::uint8_t[image.rgb.size()];
+        std::copy(image.rgb.begin(), image.rgb.end(), copy);
+        nb::capsule owner(copy, [](void* p) noexcept { delete[] static_cast<std::uint8_t*>(p); });
+        return toPython(nb::ndarray<nb::numpy, std::uint8_t>(copy, 3, shape, owner));
+#else
+        (void)s, (void)width, (void)height;
+        noRenderer();
+#endif
+      }, nb::arg("width") = 512, nb::arg("height") = 512,
+      "The current state drawn as an (height, width, 3) uint8 RGB array, top row first.");
+  cls.def("save_png", [](const PySimulator& s, const std::string& path, int width, int height) {
+#ifdef FOSSSIM_HAVE_RENDER
+        check<FileError>(render::writePng(path, frame(s, width, height)));
+#else
+        (void)s, (void)path, (void)width, (void)height;
+        noRenderer();
+#endif
+      }, nb::arg("path"), nb::arg("width") = 512, nb::arg("height") = 512);
+  cls.def("svg", [](const PySimulator& s, int width, int height) { return render::svgDocument(picture(s, width, height)); },
+          nb::arg("width") = 512, nb::arg("height") = 512, "The current state as an SVG document.");
+  cls.def("save_svg", [](const PySimulator& s, const std::string& path, int width, int height) {
+        check<FileError>(render::writeSvg(path, picture(s, width, height)));
+      }, nb::arg("path"), nb::arg("width") = 512, nb::arg("height") = 512);
+  cls.def("record_movie", [](PySimulator& s, const std::string& path, std::optional<long> steps, long every, double fps,
+                             int width, int height) {
+#ifdef FOSSSIM_HAVE_RENDER
+        if (every < 1) throw SimulationError("every must be >= 1");
+        if (!(fps > 0)) throw SimulationError("fps must be > 0");
+        checkSize(width, height);
+        std::unique_ptr<render::MovieWriter> movie;
+        check<FileError>(render::MovieWriter::open(path, width, height, fps, movie));
+        check<FileError>(movie->write(frame(s, width, height)));
+        const long total = steps ? *steps : std::max(0L, s.numSteps() - s.stepsTaken());
+        for (long k = 1; k <= total; ++k) {
+          {
+            nb::gil_scoped_release release;
+            s.step();
+          }
+          if (k % every == 0) check<FileError>(movie->write(frame(s, width, height)));
+        }
+        check<FileError>(movie->close());
+        return movie->frames();
+#else
+        (void)s, (void)path, (void)steps, (void)every, (void)fps, (void)width, (void)height;
+        noRenderer();
+#endif
+      }, nb::arg("path"), nb::arg("steps") = nb::none(), nb::arg("every") = 1, nb::arg("fps") = 30.0,
+      nb::arg("width") = 512, nb::arg("height") = 512,
+      "Steps the simulator (default: to the end of the scene), writing a frame of the current state and then "
+      "every `every` steps into a movie through ffmpeg. Returns the number of frames.");
+}
+
+}  // namespace fosssim::py

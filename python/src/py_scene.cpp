@@ -1,0 +1,181 @@
+#include "py_scene.h"
+
+#include "errors.h"
+#include "fosssim/core/collision_handler.h"
+#include "fosssim/core/forces.h"
+#include "fosssim/core/integrator.h"
+#include "fosssim/io/scene_writer.h"
+
+#include <cmath>
+
+namespace fosssim::py {
+namespace {
+
+std::string text(double v) { return formatNumber(v); }
+
+void requireFinite(const char* what, double v) {
+  if (!std::isfinite(v)) throw SceneError(std::string(what) + " must be finite, got " + text(v));
+}
+
+void requirePositive(const char* what, double v, bool allowZero = false) {
+  requireFinite(what, v);
+  if (v < 0 || (!allowZero && v == 0))
+    throw SceneError(std::string(what) + " must be " + (allowZero ? ">= 0" : "> 0") + ", got " + text(v));
+}
+
+/// The format's summation order of force kinds (see scene.h).
+int rank(const Force& f) {
+  const std::string k = f.keyword();
+  const char* order[] = {"springforce", "simplegravity", "gravitationalforce", "constantforce",
+                         "dragdamping", "vortexforce", "collision penalty"};
+  for (int r = 0; r < 7; ++r)
+    if (k == order[r]) return r;
+  return 7;
+}
+
+}  // namespace
+
+std::shared_ptr<PyScene> PyScene::load(const std::string& path) {
+  auto s = std::make_shared<PyScene>();
+  check<SceneError>(loadScene(path, s->file));
+  return s;
+}
+
+std::shared_ptr<PyScene> PyScene::fromXml(const std::string& xml, const std::string& name) {
+  auto s = std::make_shared<PyScene>();
+  check<SceneError>(parseScene(xml, name, s->file));
+  return s;
+}
+
+std::string PyScene::toXml() const {
+  std::string xml;
+  check<SceneError>(sceneToXml(file, xml));
+  return xml;
+}
+
+std::shared_ptr<PyScene> PyScene::copy() const {
+  auto s = fromXml(toXml(), file.path.empty() ? "<scene>" : file.path);
+  s->file.path = file.path;
+  s->file.warnings = file.warnings;
+  return s;
+}
+
+void PyScene::checkParticle(int i, const char* what) const {
+  if (i < 0 || i >= file.scene.numParticles())
+    throw SceneError(std::string(what) + ": particle " + std::to_string(i) + " does not exist (the scene has " +
+                     std::to_string(file.scene.numParticles()) + " particles)");
+}
+
+int PyScene::addParticle(const Vec2& x, const Vec2& v, double mass, double radius, bool fixed) {
+  requirePositive("add_particle: mass", mass);
+  requirePositive("add_particle: radius", radius);
+  for (double c : {x.x(), x.y(), v.x(), v.y()}) requireFinite("add_particle: position and velocity", c);
+  fosssim::addParticle(file.scene, mass, fixed, radius);
+  State& s = file.initial;
+  const Eigen::Index n = s.x.size();
+  s.x.conservativeResize(n + 2);
+  s.v.conservativeResize(n + 2);
+  s.x.segment<2>(n) = x;
+  s.v.segment<2>(n) = v;
+  file.look.particleColors.push_back(kDefaultParticleColor);
+  return static_cast<int>(n / 2);
+}
+
+int PyScene::addEdge(int i, int j, double radius) {
+  checkParticle(i, "add_edge");
+  checkParticle(j, "add_edge");
+  if (i == j) throw SceneError("add_edge: an edge needs two different particles, got i = j = " + std::to_string(i));
+  requirePositive("add_edge: radius", radius);
+  file.scene.edges.push_back(Edge{i, j, radius});
+  file.look.edgeColors.push_back(kDefaultEdgeColor);
+  return static_cast<int>(file.scene.edges.size()) - 1;
+}
+
+int PyScene::addHalfplane(const Vec2& point, const Vec2& normal) {
+  for (double c : {point.x(), point.y(), normal.x(), normal.y()}) requireFinite("add_halfplane: point and normal", c);
+  if (normal.squaredNorm() == 0.0) throw SceneError("add_halfplane: the normal must not be zero");
+  file.scene.halfplanes.push_back(HalfPlane{point, normal});
+  file.look.halfplaneColors.push_back(kDefaultHalfplaneColor);
+  return static_cast<int>(file.scene.halfplanes.size()) - 1;
+}
+
+void PyScene::addForce(std::unique_ptr<Force> force) {
+  auto& forces = file.scene.forces;
+  const int r = rank(*force);
+  auto at = forces.begin();
+  while (at != forces.end() && rank(**at) <= r) ++at;
+  forces.insert(at, std::move(force));
+}
+
+void PyScene::addSpring(int edge, double k, double l0, double b) {
+  if (edge < 0 || edge >= static_cast<int>(file.scene.edges.size()))
+    throw SceneError("add_spring: edge " + std::to_string(edge) + " does not exist (the scene has " +
+                     std::to_string(file.scene.edges.size()) + " edges)");
+  requirePositive("add_spring: k", k, true);
+  requirePositive("add_spring: l0", l0, true);
+  requirePositive("add_spring: b", b, true);
+  const Edge& e = file.scene.edges[edge];
+  addForce(std::make_unique<SpringForce>(e.i, e.j, k, l0, b));
+}
+
+void PyScene::addGravitational(int i, int j, double G) {
+  checkParticle(i, "add_gravitational_force");
+  checkParticle(j, "add_gravitational_force");
+  if (i == j) throw SceneError("add_gravitational_force: needs two different particles");
+  requireFinite("add_gravitational_force: G", G);
+  addForce(std::make_unique<GravitationalForce>(i, j, G));
+}
+
+void PyScene::addVortex(int i, int j, double kbs, double kvc) {
+  checkParticle(i, "add_vortex_force");
+  checkParticle(j, "add_vortex_force");
+  if (i == j) throw SceneError("add_vortex_force: needs two different particles");
+  requireFinite("add_vortex_force: kbs", kbs);
+  requireFinite("add_vortex_force: kvc", kvc);
+  addForce(std::make_unique<VortexForce>(i, j, kbs, kvc));
+}
+
+void PyScene::setCollision(const std::string& type, double cor, int maxIterations, const std::string& failsafe,
+                           double k, double thickness) {
+  const CollisionEntry* entry = findCollisionType(type);
+  if (!entry) {
+    std::string valid;
+    for (const auto& e : collisionTable()) valid += (valid.empty() ? "" : ", ") + std::string(e.keyword);
+    throw SceneError("set_collision: unknown collision type \"" + type + "\" (valid: " + valid + ")");
+  }
+  requireFinite("set_collision: cor", cor);
+  if (cor < 0 || cor > 1) throw SceneError("set_collision: cor must lie in [0, 1], got " + text(cor));
+  if (failsafe != "projection" && failsafe != "rigid")
+    throw SceneError("set_collision: unknown failsafe \"" + failsafe + "\" (valid: projection, rigid)");
+  CollisionSettings& c = file.scene.collision;
+  c.type = type;
+  c.cor = cor;
+  c.maxIterations = maxIterations;
+  c.failsafe = failsafe == "rigid" ? Failsafe::Rigid : Failsafe::Projection;
+  c.penaltyK = k < 0 ? entry->defaultK : k;
+  c.penaltyThickness = thickness < 0 ? entry->defaultThickness : thickness;
+  requireFinite("set_collision: k", c.penaltyK);
+  requireFinite("set_collision: thickness", c.penaltyThickness);
+  auto& forces = file.scene.forces;
+  for (auto it = forces.begin(); it != forces.end();)
+    it = dynamic_cast<PenaltyForce*>(it->get()) ? forces.erase(it) : it + 1;
+  if (entry->addsPenaltyForce) forces.push_back(std::make_unique<PenaltyForce>(c.penaltyK, c.penaltyThickness));
+}
+
+void PyScene::setIntegrator(const std::string& type, double dt) {
+  if (!findIntegrator(type)) {
+    std::string valid;
+    for (const auto& e : integratorTable()) valid += (valid.empty() ? "" : ", ") + std::string(e.keyword);
+    throw SceneError("set_integrator: unknown integrator \"" + type + "\" (valid: " + valid + ")");
+  }
+  requirePositive("set_integrator: dt", dt);
+  file.scene.integrator = type;
+  file.scene.dt = dt;
+}
+
+void PyScene::setDuration(double duration) {
+  requirePositive("duration", duration, true);
+  file.scene.duration = duration;
+}
+
+}  // namespace fosssim::py

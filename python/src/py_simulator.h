@@ -1,0 +1,63 @@
+// A simulator as the Python module holds it: its own copy of the scene (later changes to the
+// Python Scene do not reach a running simulation), the state, pinned position and velocity
+// buffers that NumPy views read (they stay valid and current whatever the step does with its
+// own vectors), the diagnostics table, and the trails for pictures.
+#pragma once
+
+#include "py_scene.h"
+
+#include "fosssim/core/diagnostics.h"
+#include "fosssim/core/simulator.h"
+#include "fosssim/render/path_trails.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace fosssim::py {
+
+class PySimulator {
+ public:
+  PySimulator(const PyScene& scene, bool compat, int threads, bool diagnostics);
+
+  /// One step; throws SimulationError with the step's message.
+  void step();
+  long stepsTaken() const { return state_.step; }
+  double time() const { return state_.time; }
+  /// Steps of a full run of the scene (ceil(duration / dt)).
+  long numSteps() const { return scene_->file.scene.numSteps(); }
+  int numParticles() const { return scene_->file.scene.numParticles(); }
+
+  const VecX& positions() const { return x_; }
+  const VecX& velocities() const { return v_; }
+  /// Sets positions or velocities (2N finite values), between steps.
+  void setPositions(const double* data, long count);
+  void setVelocities(const double* data, long count);
+
+  const PyScene& scene() const { return *scene_; }
+  const State& state() const { return state_; }
+  const render::PathTrails& trails() const { return trails_; }
+  const Simulator& simulator() const { return *simulator_; }
+  bool compat() const { return compat_; }
+
+  bool recordsDiagnostics() const { return diagnostics_; }
+  const std::vector<std::string>& columns() const { return columns_; }
+  /// Row-major, one row per recorded state (the initial state first).
+  const std::vector<double>& table() const { return table_; }
+
+ private:
+  void record();
+  void setVector(VecX& into, const double* data, long count, const char* what);
+  std::shared_ptr<PyScene> scene_;
+  std::unique_ptr<Simulator> simulator_;
+  State state_;
+  VecX x_, v_;  ///< pinned: what Python's views read, refreshed after every step
+  bool compat_;
+  bool diagnostics_;
+  std::vector<std::string> columns_;
+  std::vector<double> table_, row_;
+  StepDiagnostics measured_;
+  render::PathTrails trails_;
+};
+
+}  // namespace fosssim::py

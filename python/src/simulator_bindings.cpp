@@ -1,0 +1,106 @@
+// fosssim.Simulator: stepping, the state as NumPy arrays, the diagnostics table.
+#include "arrays.h"
+#include "bindings.h"
+#include "py_simulator.h"
+
+#include <nanobind/stl/optional.h>
+#include <nanobind/stl/shared_ptr.h>
+#include <nanobind/stl/string.h>
+#include <nanobind/stl/vector.h>
+
+namespace fosssim::py {
+namespace {
+
+/// A read-only (N, 2) view of a pinned buffer of the simulator, which the view keeps alive.
+nb::object view(const PySimulator& s, const VecX& data) {
+  const size_t shape[2] = {static_cast<size_t>(s.numParticles()), 2};
+  return toPython(View2(data.data(), 2, shape, nb::find(&s)));
+}
+
+/// Steps until `steps` more are taken or the callback returns False; the GIL is released while
+/// C++ steps, taken back for the callback.
+long run(PySimulator& s, std::optional<long> steps, long every, nb::object callback) {
+  if (every < 1) throw SimulationError("every must be >= 1, got " + std::to_string(every));
+  const long total = steps ? *steps : std::max(0L, s.numSteps() - s.stepsTaken());
+  if (total < 0) throw SimulationError("steps must be >= 0, got " + std::to_string(total));
+  long done = 0;
+  while (done < total) {
+    const long chunk = callback.is_none() ? total - done : std::min(every, total - done);
+    {
+      nb::gil_scoped_release release;
+      for (long k = 0; k < chunk; ++k) s.step();
+    }
+    done += chunk;
+    if (!callback.is_none() && (s.stepsTaken() % every == 0 || done == total)) {
+      nb::object r = callback(nb::find(&s));
+      if (r.is(nb::bool_(false))) break;
+    }
+  }
+  return done;
+}
+
+nb::dict diagnostics(const PySimulator& s) {
+  if (!s.recordsDiagnostics()) throw SimulationError("this simulator records no diagnostics (diagnostics=False)");
+  const auto& columns = s.columns();
+  const auto& table = s.table();
+  const size_t rows = table.size() / columns.size(), cols = columns.size();
+  nb::dict out;
+  std::vector<double> column(rows);
+  for (size_t c = 0; c < cols; ++c) {
+    for (size_t r = 0; r < rows; ++r) column[r] = table[r * cols + c];
+    out[columns[c].c_str()] = copyArray(column.data(), rows);
+  }
+  return out;
+}
+
+}  // namespace
+
+void bindSimulator(nb::module_& m) {
+  nb::class_<PySimulator>(m, "Simulator",
+                          "Steps a copy of a scene from its initial state. Positions and velocities are read-only "
+                          "NumPy views that follow the steps; assign arrays to change them.")
+      .def(nb::init<const PyScene&, bool, int, bool>(), nb::arg("scene"), nb::arg("compat") = false,
+           nb::arg("threads") = 1, nb::arg("diagnostics") = true,
+           "compat: the course's formulas (as FOSSSim --compat); threads: for collision detection (same "
+           "results for any count); diagnostics: record a row of diagnostics per step (and time the phases).")
+      .def("step", [](PySimulator& s, long count) {
+             nb::gil_scoped_release release;
+             for (long k = 0; k < count; ++k) s.step();
+           }, nb::arg("count") = 1, "Takes `count` steps; raises SimulationError if a step fails.")
+      .def("run", &run, nb::arg("steps") = nb::none(), nb::arg("every") = 1, nb::arg("callback") = nb::none(),
+           "Takes `steps` steps (default: the rest of the scene's duration), calling callback(simulator) "
+           "every `every` steps; a callback returning False stops the run. Returns the steps taken.")
+      .def_prop_ro("time", &PySimulator::time)
+      .def_prop_ro("steps_taken", &PySimulator::stepsTaken)
+      .def_prop_ro("num_steps", &PySimulator::numSteps, "Steps of the scene's full duration.")
+      .def_prop_ro("num_particles", &PySimulator::numParticles)
+      .def_prop_ro("compat", &PySimulator::compat)
+      .def_prop_ro("scene", [](const PySimulator& s) { return s.scene().copy(); }, "A copy of the simulated scene.")
+      .def_prop_rw("positions", [](const PySimulator& s) { return view(s, s.positions()); },
+                   [](PySimulator& s, const Input& a) {
+                     s.setPositions(pairsOf(a, s.numParticles(), "positions"), 2L * s.numParticles());
+                   })
+      .def_prop_rw("velocities", [](const PySimulator& s) { return view(s, s.velocities()); },
+                   [](PySimulator& s, const Input& a) {
+                     s.setVelocities(pairsOf(a, s.numParticles(), "velocities"), 2L * s.numParticles());
+                   })
+      .def_prop_ro("masses", [](const PySimulator& s) {
+        // Every other entry of the scene's 2N mass vector: a strided view, as the scene copy never changes.
+        const size_t shape[1] = {static_cast<size_t>(s.numParticles())};
+        const int64_t strides[1] = {2};
+        return toPython(View1(s.scene().file.scene.mass.data(), 1, shape, nb::find(&s), strides));
+      })
+      .def_prop_ro("columns", &PySimulator::columns, "The diagnostics' column names (README: --stats).")
+      .def("diagnostics", &diagnostics, "The diagnostics so far as a dict of column name to array (row 0: the "
+                                        "initial state).")
+      .def("dataframe", [](const PySimulator& s) {
+             nb::module_ pandas = nb::module_::import_("pandas");
+             return pandas.attr("DataFrame")(diagnostics(s));
+           }, "The diagnostics as a pandas DataFrame.")
+      .def("__repr__", [](const PySimulator& s) {
+        return "<fosssim.Simulator step " + std::to_string(s.stepsTaken()) + " of " + std::to_string(s.numSteps()) +
+               ", t = " + std::to_string(s.time()) + (s.compat() ? ", compat" : "") + ">";
+      });
+}
+
+}  // namespace fosssim::py

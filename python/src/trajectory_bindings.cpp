@@ -1,0 +1,81 @@
+// Trajectory files in the course's binary format: write a run's, grade a file against a scene.
+#include "bindings.h"
+#include "errors.h"
+#include "py_scene.h"
+
+#include "fosssim/core/simulator.h"
+#include "fosssim/io/grader.h"
+#include "fosssim/io/trajectory.h"
+
+#include <nanobind/stl/optional.h>
+#include <nanobind/stl/string.h>
+#include <nanobind/stl/tuple.h>
+
+#include <sstream>
+
+namespace fosssim::py {
+
+namespace nb = nanobind;
+
+namespace {
+
+std::unique_ptr<Simulator> simulatorFor(const PyScene& scene, bool compat) {
+  SimulatorOptions options;
+  options.handler.compat = compat;
+  options.logPolynomials = true;  // the records hold every pair's polynomials (reference layout)
+  std::unique_ptr<Simulator> sim;
+  check<SimulationError>(Simulator::create(scene.file.scene, options, sim));
+  return sim;
+}
+
+/// Writes the records of a run of `steps` steps (default: the whole scene), as FOSSSim -o does.
+long writeTrajectory(const PyScene& scene, const std::string& path, bool compat, std::optional<long> steps) {
+  auto sim = simulatorFor(scene, compat);
+  std::unique_ptr<TrajectoryWriter> writer;
+  check<FileError>(TrajectoryWriter::open(path, sim->layout(), writer));
+  // A mid-step record (continuous-time, hybrid) comes from inside collision handling.
+  struct MidStep final : StepObserver {
+    TrajectoryWriter* writer;
+    Status status = Status::ok();
+    void midStep(const CollisionLog& log, State& state) override {
+      if (status) status = writer->write(state, log);
+    }
+  } observer;
+  observer.writer = writer.get();
+  State state = scene.file.initial;
+  nb::gil_scoped_release release;
+  check<FileError>(writer->write(state, CollisionLog{}));
+  const long total = steps ? *steps : scene.file.scene.numSteps();
+  for (long k = 0; k < total; ++k) {
+    check<SimulationError>(sim->step(scene.file.scene, state, sim->layout().midStep ? &observer : nullptr));
+    check<FileError>(observer.status);
+    check<FileError>(writer->write(state, sim->log()));
+  }
+  check<FileError>(writer->close());
+  return total;
+}
+
+/// Grades `path` against the scene: (passed, the grader's report text).
+std::tuple<bool, std::string> gradeTrajectoryFile(const PyScene& scene, const std::string& path, bool compat) {
+  auto sim = simulatorFor(scene, compat);
+  std::ostringstream report;
+  GradeReport result;
+  {
+    nb::gil_scoped_release release;
+    result = gradeTrajectory(scene.file.scene, scene.file.initial, *sim, path, report);
+  }
+  return {result.passed(GradeTolerances{}), report.str()};
+}
+
+}  // namespace
+
+void bindTrajectories(nb::module_& m) {
+  m.def("write_trajectory", &writeTrajectory, nb::arg("scene"), nb::arg("path"), nb::arg("compat") = false,
+        nb::arg("steps") = nb::none(),
+        "Runs the scene from its initial state and writes the trajectory file FOSSSim -o writes "
+        "(compat: as --compat). Returns the steps written.");
+  m.def("grade_trajectory", &gradeTrajectoryFile, nb::arg("scene"), nb::arg("path"), nb::arg("compat") = false,
+        "Grades a trajectory file against the scene as FOSSSim -i does: (passed, report text).");
+}
+
+}  // namespace fosssim::py

@@ -1,0 +1,54 @@
+"""Pictures and trajectory files."""
+import numpy as np
+import pytest
+
+import fosssim
+
+
+@pytest.fixture
+def billiards(assets):
+    return fosssim.Scene.load(str(assets / "examples" / "billiards.xml"))
+
+
+def test_svg_has_every_particle(billiards, tmp_path):
+    sim = fosssim.Simulator(billiards)
+    svg = sim.svg(320, 240)
+    assert svg.count("<circle") == billiards.num_particles
+    sim.save_svg(str(tmp_path / "frame.svg"), 320, 240)
+    assert (tmp_path / "frame.svg").read_text() == svg
+
+
+@pytest.mark.skipif(not fosssim.has_renderer, reason="built without the renderer")
+def test_render_draws_the_background_and_the_particles(tmp_path):
+    s = fosssim.Scene()
+    s.add_particle((0.0, 0.0), radius=0.5)
+    s.set_viewport(0.0, 0.0, 1.0)  # the disk fills the middle of the picture
+    sim = fosssim.Simulator(s)
+    image = sim.render(200, 100)
+    assert image.shape == (100, 200, 3) and image.dtype == np.uint8
+    assert tuple(image[95, 5]) == (255, 255, 255)  # the default white background (the time label is top left)
+    # The centre is the default particle colour (0.65, 0.29, 0), to 8 bits.
+    assert np.abs(image[50, 100].astype(int) - [166, 75, 0]).max() <= 1
+    sim.save_png(str(tmp_path / "frame.png"), 200, 100)
+    assert (tmp_path / "frame.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_trajectory_written_then_graded(assets, tmp_path):
+    scene = fosssim.Scene.load(str(assets / "t2m2" / "ContinuousTimeTests" / "halfplane_cor05.xml"))
+    path = tmp_path / "run.bin"
+    assert fosssim.write_trajectory(scene, str(path), compat=True) == scene.num_steps
+    passed, report = fosssim.grade_trajectory(scene, str(path), compat=True)
+    assert passed and "Overall success: Passed." in report
+    # A file of another run (the particle moved) fails.
+    moved = scene.copy()
+    p = moved.positions
+    p[0, 0] += 0.01
+    moved.positions = p
+    fosssim.write_trajectory(moved, str(path), compat=True)
+    passed, report = fosssim.grade_trajectory(scene, str(path), compat=True)
+    assert not passed and "Overall success: Failed." in report
+
+
+def test_missing_trajectory_is_reported(billiards, tmp_path):
+    passed, report = fosssim.grade_trajectory(billiards, str(tmp_path / "none.bin"))
+    assert not passed

@@ -1,0 +1,96 @@
+"""Simulators: stepping, NumPy views and setters, diagnostics, compat."""
+import numpy as np
+import pytest
+
+import fosssim
+
+
+def free_fall(n_steps=100, dt=0.01):
+    s = fosssim.Scene()
+    s.set_integrator("symplectic-euler", dt)
+    s.duration = n_steps * dt
+    s.add_particle((0.0, 10.0), velocity=(1.0, 0.0), mass=2.0)
+    s.add_gravity((0.0, -9.81))
+    return s
+
+
+def test_steps_follow_free_fall():
+    sim = fosssim.Simulator(free_fall())
+    x = sim.positions  # a view: it follows the steps
+    sim.step(50)
+    assert sim.steps_taken == 50
+    assert sim.time == pytest.approx(0.5)
+    # symplectic Euler: v exact, x = x0 + v0 t - g dt^2 k(k+1)/2
+    assert sim.velocities[0, 1] == pytest.approx(-9.81 * 0.5, abs=1e-12)
+    assert x[0, 0] == pytest.approx(0.5, abs=1e-12)
+    assert x[0, 1] == pytest.approx(10.0 - 9.81 * 0.01**2 * 50 * 51 / 2, abs=1e-12)
+
+
+def test_views_are_read_only_and_setters_validate():
+    sim = fosssim.Simulator(free_fall())
+    with pytest.raises(ValueError):
+        sim.positions[0, 0] = 5.0
+    sim.positions = np.array([[1.0, 2.0]])
+    np.testing.assert_array_equal(sim.positions, [[1.0, 2.0]])
+    with pytest.raises(fosssim.SceneError, match=r"expected an array of shape \(1, 2\)"):
+        sim.velocities = np.zeros((2, 2))
+    with pytest.raises(fosssim.SimulationError, match="non-finite"):
+        sim.velocities = np.array([[np.nan, 0.0]])
+    assert sim.masses.tolist() == [2.0]
+    assert not sim.masses.flags.writeable
+
+
+def test_view_outlives_the_name():
+    view = fosssim.Simulator(free_fall()).positions  # the view keeps its simulator alive
+    assert view.shape == (1, 2) and view[0, 1] == 10.0
+
+
+def test_run_every_and_callback_and_stop():
+    sim = fosssim.Simulator(free_fall(100))
+    seen = []
+    taken = sim.run(every=10, callback=lambda s: seen.append(s.steps_taken))
+    assert taken == 100 and seen == list(range(10, 101, 10))
+    sim2 = fosssim.Simulator(free_fall(100))
+    assert sim2.run(callback=lambda s: s.steps_taken < 30, every=10) == 30
+
+
+def test_diagnostics_columns_and_physics():
+    sim = fosssim.Simulator(free_fall(20))
+    sim.run()
+    d = sim.diagnostics()
+    assert list(d) == sim.columns
+    assert len(d["step"]) == 21  # the initial state, then every step
+    np.testing.assert_array_equal(d["step"], np.arange(21))
+    np.testing.assert_allclose(d["momentum_y"], 2.0 * -9.81 * d["time"], atol=1e-10)
+    np.testing.assert_allclose(d["energy"], d["kinetic"] + d["potential"])
+    assert (d["cost_total"][1:] > 0).all()
+    df = sim.dataframe()
+    assert list(df.columns) == sim.columns and len(df) == 21
+
+
+def test_failed_step_raises_with_the_step():
+    s = fosssim.Scene()
+    s.set_integrator("explicit-euler", 1.0)
+    s.duration = 100
+    a = s.add_particle((0, 0), mass=1)
+    b = s.add_particle((1, 0), mass=1)
+    s.add_spring(s.add_edge(a, b), k=1e6, l0=0.5)
+    sim = fosssim.Simulator(s)
+    with pytest.raises(fosssim.SimulationError, match="step"):
+        sim.run()
+
+
+def test_compat_is_an_option(assets):
+    scene = fosssim.Scene.load(str(assets / "t2m2" / "ContinuousTimeTests" / "head_on_swap.xml"))
+    a = fosssim.Simulator(scene, compat=True)
+    assert a.compat
+    a.run()
+    assert a.steps_taken == scene.num_steps
+
+
+def test_simulator_owns_a_copy_of_the_scene():
+    s = free_fall()
+    sim = fosssim.Simulator(s)
+    s.add_particle((5, 5))  # changes the Scene, not the running simulation
+    assert sim.num_particles == 1
+    sim.step()
