@@ -1,0 +1,292 @@
+"""Sweeps: one scene or several, run for every collision method, time step and parameter value,
+measured for error and cost, serially or on a Dask cluster.
+
+    table = fosssim.sweep(["assets/t2m2/HolisticTests/v_pile.xml"],
+                          methods=fosssim.sweeps.METHODS, dts=[0.01, 0.005, 0.0025])
+
+Each run is one task: it loads the scene from its XML text, applies the method, dt and
+parameters, runs the scene's duration and returns one row. Rows depend only on the task (the
+simulator is deterministic and single-threaded per task), so a run on a cluster gives the same
+table as a serial one except for the wall-time column.
+
+Columns: scene, method, dt, one column per parameter, steps, energy_drift (E_end - E_0, relative
+to the energy scale max(|E_0|, max kinetic energy)), energy_gain (the largest E(t) - E_0, same
+scale: energy that collision handling or the integrator created), momentum_drift (|p_end - p_0|
+relative to max |p|; gravity and walls change momentum honestly, so compare methods on one scene),
+contacts (impulses over the run), max_interpenetration (the deepest overlap of two disks, a disk
+and an edge or a disk and a half-plane at the end of any step, relative to the smaller radius;
+NaN above 2,000 particles), failsafe_zone_steps (steps that ended with impact zones),
+wall_per_sim_second (the steps' wall time, as timed inside the simulator, per simulated second:
+the cost; the sweep's own measuring is not counted), error (empty, or the message of a run that
+failed).
+"""
+
+import argparse
+import itertools
+import math
+import os
+import sys
+
+import numpy as np
+
+#: The five collision methods of the scene format.
+METHODS = ("none", "simple", "continuous-time", "penalty", "hybrid")
+
+#: Columns that measure the machine rather than the physics (they differ between runs).
+TIMING_COLUMNS = ("wall_per_sim_second",)
+
+#: Parameters a sweep may vary, and how each applies to a scene.
+PARAMETERS = ("cor", "maxiters", "k", "thickness", "integrator", "failsafe", "duration")
+
+
+def _apply(scene, method, dt, params):
+    import fosssim
+
+    c = scene.collision
+    settings = dict(cor=c["cor"], maxiters=c["maxiters"], failsafe=c["failsafe"])
+    # k and thickness: the scene's own when it has the same kind of penalty force, else the method's defaults.
+    if c["type"] == method:
+        settings.update(k=c["k"], thickness=c["thickness"])
+    for key in ("cor", "maxiters", "failsafe", "k", "thickness"):
+        if key in params:
+            settings[key] = params[key]
+    scene.set_collision(method, **settings)
+    scene.set_integrator(params.get("integrator", scene.integrator), dt)
+    if "duration" in params:
+        scene.duration = params["duration"]
+    unknown = set(params) - set(PARAMETERS)
+    if unknown:
+        raise fosssim.SceneError(f"sweep: unknown parameter(s) {sorted(unknown)} (valid: {', '.join(PARAMETERS)})")
+    return scene
+
+
+def _overlap(scene, x, radii, fixed, edges, planes, limit=2000):
+    """The deepest overlap at positions x, relative to the smaller radius (0 when none)."""
+    n = len(radii)
+    if n > limit:
+        return math.nan
+    worst = 0.0
+    joined = {(min(i, j), max(i, j)) for i, j, _ in edges}
+    if n > 1:
+        d = np.sqrt(((x[:, None, :] - x[None, :, :]) ** 2).sum(-1))
+        depth = (radii[:, None] + radii[None, :] - d) / np.minimum(radii[:, None], radii[None, :])
+        iu = np.triu_indices(n, 1)
+        dep = depth[iu]
+        both_fixed = fixed[iu[0]] & fixed[iu[1]]
+        dep = np.where(both_fixed, 0.0, dep)
+        for k in np.argsort(dep)[::-1][:8]:  # the deepest pairs not joined by an edge
+            if dep[k] <= 0:
+                break
+            if (iu[0][k], iu[1][k]) not in joined:
+                worst = max(worst, dep[k])
+                break
+    for p, nrm in planes:
+        nrm = np.asarray(nrm) / np.linalg.norm(nrm)
+        dist = (x - np.asarray(p)) @ nrm
+        dep = np.where(fixed, 0.0, (radii - dist) / radii)
+        worst = max(worst, dep.max(initial=0.0))
+    for i, j, r in edges:
+        a, b = x[i], x[j]
+        ab = b - a
+        t = np.clip(((x - a) @ ab) / max(ab @ ab, 1e-300), 0.0, 1.0)
+        dist = np.linalg.norm(x - (a + t[:, None] * ab), axis=1)
+        dep = (radii + r - dist) / np.minimum(radii, r)
+        dep[[i, j]] = 0.0
+        if fixed[i] and fixed[j]:
+            dep = np.where(fixed, 0.0, dep)
+        worst = max(worst, dep.max(initial=0.0))
+    return float(worst)
+
+
+def run_case(case):
+    """One task: case = dict(name, xml, method, dt, params, compat). Returns one row (a dict)."""
+    import fosssim
+
+    row = dict(scene=case["name"], method=case["method"], dt=case["dt"], **case["params"])
+    try:
+        scene = _apply(fosssim.Scene.from_xml(case["xml"], case["name"]), case["method"], case["dt"], case["params"])
+        sim = fosssim.Simulator(scene, compat=case.get("compat", False))
+        radii = scene.radii
+        fixed = np.asarray(scene.fixed, dtype=bool)
+        edges, planes = scene.edges, scene.halfplanes
+        worst = [_overlap(scene, sim.positions, radii, fixed, edges, planes)]
+
+        def look(s):
+            worst.append(_overlap(scene, s.positions, radii, fixed, edges, planes))
+
+        sim.run(every=1, callback=look)
+        d = sim.diagnostics()
+        wall = float(d["cost_total"].sum())  # the steps' own wall time, not this loop's Python
+        energy = d["energy"]
+        scale = max(abs(energy[0]), d["kinetic"].max(), 1e-300)
+        p = np.stack([d["momentum_x"], d["momentum_y"]], axis=1)
+        pscale = max(np.linalg.norm(p, axis=1).max(), 1e-300)
+        row.update(
+            steps=sim.steps_taken,
+            energy_drift=(energy[-1] - energy[0]) / scale,
+            energy_gain=max((energy - energy[0]).max(), 0.0) / scale,
+            momentum_drift=float(np.linalg.norm(p[-1] - p[0]) / pscale),
+            contacts=int(d["contacts"].sum()),
+            max_interpenetration=max(worst),
+            failsafe_zone_steps=int((d["failsafe_zones"] > 0).sum()),
+            wall_per_sim_second=wall / max(sim.time, 1e-300),
+            error="",
+        )
+    except (fosssim.SceneError, fosssim.SimulationError) as e:
+        row.update(steps=0, error=str(e))
+    return row
+
+
+def _cases(scenes, methods, dts, params, compat):
+    names = []
+    texts = []
+    import fosssim
+
+    for s in scenes:
+        if isinstance(s, fosssim.Scene):
+            names.append(s.path or s.description or "scene")
+            texts.append(s.to_xml())
+        else:
+            names.append(os.path.basename(str(s)))
+            texts.append(fosssim.Scene.load(str(s)).to_xml())
+    keys = list(params)
+    grid = list(itertools.product(*(params[k] for k in keys))) or [()]
+    cases = []
+    for (name, xml), method, dt, values in itertools.product(zip(names, texts), methods, dts, grid):
+        cases.append(dict(name=name, xml=xml, method=method, dt=float(dt), params=dict(zip(keys, values)),
+                          compat=compat))
+    return cases
+
+
+def sweep(scenes, methods=METHODS, dts=None, params=None, compat=False, scheduler=None, workers=None,
+          serial=False, client=None):
+    """Runs every scene x method x dt x parameter combination; returns a pandas DataFrame.
+
+    scenes: paths or fosssim.Scene objects. dts: time steps (default: each scene's own).
+    params: {name: [values]} for name in PARAMETERS. serial: run here, one after the other.
+    Otherwise on Dask: `client` if given, else the scheduler at `scheduler` ("tcp://host:8786"),
+    else a LocalCluster of `workers` processes (default: every core), closed afterwards.
+    """
+    import pandas as pd
+
+    scenes = [scenes] if isinstance(scenes, (str, os.PathLike)) else list(scenes)
+    params = dict(params or {})
+    if dts is None:
+        import fosssim
+
+        dts = sorted({(s if isinstance(s, fosssim.Scene) else fosssim.Scene.load(str(s))).dt for s in scenes})
+    cases = _cases(scenes, list(methods), list(dts), params, compat)
+    if serial:
+        rows = [run_case(c) for c in cases]
+    else:
+        rows = _on_dask(cases, scheduler, workers, client)
+    return pd.DataFrame(rows)
+
+
+def _on_dask(cases, scheduler, workers, client):
+    from dask.distributed import Client, LocalCluster
+
+    own_cluster = own_client = None
+    try:
+        if client is None:
+            if scheduler:
+                client = own_client = Client(scheduler)
+            else:
+                own_cluster = LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
+                                           processes=True, dashboard_address=None)
+                client = own_client = Client(own_cluster)
+        futures = client.map(run_case, cases, pure=False)
+        return client.gather(futures)
+    finally:
+        if own_client is not None:
+            own_client.close()
+        if own_cluster is not None:
+            own_cluster.close()
+
+
+def chart(table, path, metrics=("energy_drift", "max_interpenetration", "wall_per_sim_second")):
+    """One row of panels per scene: each metric against dt, one line per method (log scales)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    scenes = list(dict.fromkeys(table["scene"]))
+    fig, axes = plt.subplots(len(scenes), len(metrics), figsize=(4.2 * len(metrics), 3.4 * len(scenes)),
+                             squeeze=False)
+    for r, name in enumerate(scenes):
+        part = table[(table["scene"] == name) & (table["error"] == "")]
+        for c, metric in enumerate(metrics):
+            ax = axes[r][c]
+            for method, rows in part.groupby("method", sort=False):
+                rows = rows.sort_values("dt")
+                ax.plot(rows["dt"], rows[metric].abs().clip(lower=1e-17), marker="o", label=method)
+            ax.set_xscale("log")
+            ax.set_yscale("log")
+            ax.set_xlabel("dt (s)")
+            ax.set_title(f"{name}: |{metric}|", fontsize=9)
+            ax.grid(True, which="both", alpha=0.3)
+    axes[0][0].legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+
+
+def _parse_params(items):
+    params = {}
+    for item in items or []:
+        name, _, values = item.partition("=")
+        if not values:
+            raise SystemExit(f"fosssim-sweep: --param {item}: expected NAME=V1,V2,...")
+        parsed = []
+        for v in values.split(","):
+            try:
+                parsed.append(int(v) if name == "maxiters" else float(v) if name not in ("integrator", "failsafe") else v)
+            except ValueError:
+                raise SystemExit(f"fosssim-sweep: --param {name}: {v!r} is not a number")
+        params[name] = parsed
+    return params
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(prog="fosssim-sweep", description=__doc__.split("\n\n")[0])
+    parser.add_argument("scenes", nargs="+", help="scene files")
+    parser.add_argument("--methods", default=",".join(METHODS), help="collision methods, comma separated")
+    parser.add_argument("--dt", default=None, help="time steps, comma separated (default: each scene's)")
+    parser.add_argument("--param", action="append", metavar="NAME=V1,V2",
+                        help="a parameter to vary: " + ", ".join(PARAMETERS))
+    parser.add_argument("--compat", action="store_true", help="the course's formulas (FOSSSim --compat)")
+    parser.add_argument("--scheduler", metavar="ADDRESS", help="an existing Dask scheduler (tcp://host:8786)")
+    parser.add_argument("--workers", type=int, help="local worker processes (default: every core)")
+    parser.add_argument("--serial", action="store_true", help="no Dask: run the tasks here, one by one")
+    parser.add_argument("--csv", default="sweep.csv", help="the table (default sweep.csv)")
+    parser.add_argument("--chart", default=None, help="a PNG chart of the table")
+    args = parser.parse_args(argv)
+    import fosssim
+
+    try:
+        dts = [float(v) for v in args.dt.split(",")] if args.dt else None
+    except ValueError:
+        parser.error(f"--dt: expected numbers, got {args.dt!r}")
+    methods = [m for m in args.methods.split(",") if m]
+    bad = [m for m in methods if m not in fosssim.collision_types()]
+    if bad:
+        parser.error(f"--methods: unknown {bad} (valid: {', '.join(fosssim.collision_types())})")
+    try:
+        table = sweep(args.scenes, methods=methods, dts=dts, params=_parse_params(args.param), compat=args.compat,
+                      scheduler=args.scheduler, workers=args.workers, serial=args.serial)
+    except fosssim.SceneError as e:
+        print(f"fosssim-sweep: error: {e}", file=sys.stderr)
+        return 1
+    table.to_csv(args.csv, index=False)
+    if args.chart:
+        chart(table, args.chart)
+    print(table.drop(columns=["error"]).to_string(index=False))
+    failed = table[table["error"] != ""]
+    for _, row in failed.iterrows():
+        print(f"fosssim-sweep: {row['scene']} {row['method']} dt={row['dt']}: {row['error']}", file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,63 @@
+"""Sweeps: the table's rows follow the grid, metrics say what the physics says, and a run on a
+local Dask cluster of two worker processes gives the same table as a serial run."""
+import math
+
+import pandas as pd
+import pytest
+
+import fosssim
+from fosssim import sweeps
+
+SCENE = "t2m2/ContinuousTimeTests/head_on_swap.xml"
+
+
+def test_grid_and_metrics(assets):
+    table = fosssim.sweep([str(assets / SCENE)], methods=["none", "continuous-time"], dts=[0.01, 0.005],
+                          params={"cor": [1.0, 0.5]}, serial=True)
+    assert len(table) == 2 * 2 * 2
+    assert set(table["method"]) == {"none", "continuous-time"}
+    assert (table["error"] == "").all()
+    ct = table[(table["method"] == "continuous-time") & (table["cor"] == 1.0)]
+    # Elastic, equal masses, no forces: energy and momentum kept, one contact, no overlap left.
+    assert (ct["energy_drift"].abs() < 1e-12).all()
+    assert (ct["momentum_drift"] < 1e-12).all()
+    assert (ct["contacts"] == 1).all()
+    assert (ct["max_interpenetration"] == 0).all()
+    # Without collision handling the balls pass through each other: they overlap at some step.
+    none = table[table["method"] == "none"]
+    assert (none["contacts"] == 0).all()
+    assert (none["max_interpenetration"] > 0).any()
+    # COR 0.5 loses energy.
+    inelastic = table[(table["method"] == "continuous-time") & (table["cor"] == 0.5)]
+    assert (inelastic["energy_drift"] < -0.1).all()
+    steps = table.set_index(["method", "dt", "cor"])["steps"]
+    assert steps[("none", 0.01, 1.0)] == math.ceil(0.25 / 0.01)
+    assert steps[("none", 0.005, 1.0)] == math.ceil(0.25 / 0.005)
+
+
+def test_bad_parameter_is_a_row_error(assets):
+    table = fosssim.sweep([str(assets / SCENE)], methods=["hybrid"], dts=[0.01], params={"cor": [2.0]}, serial=True)
+    assert "cor must lie in [0, 1]" in table["error"][0]
+
+
+def test_local_cluster_gives_the_serial_table(assets):
+    pytest.importorskip("dask.distributed")
+    scenes = [str(assets / SCENE), str(assets / "t2m2/GeometricTests/stack.xml")]
+    kwargs = dict(methods=["continuous-time", "hybrid", "penalty"], dts=[0.01, 0.005])
+    serial = fosssim.sweep(scenes, serial=True, **kwargs)
+    parallel = fosssim.sweep(scenes, workers=2, **kwargs)
+    drop = list(sweeps.TIMING_COLUMNS)
+    pd.testing.assert_frame_equal(serial.drop(columns=drop), parallel.drop(columns=drop), check_exact=True)
+    assert len(serial) == 2 * 3 * 2
+
+
+def test_command_line(assets, tmp_path):
+    csv, png = tmp_path / "s.csv", tmp_path / "s.png"
+    code = sweeps.main([str(assets / SCENE), "--methods", "simple,continuous-time", "--dt", "0.01,0.02", "--serial",
+                        "--csv", str(csv), "--chart", str(png)])
+    assert code == 0
+    table = pd.read_csv(csv, keep_default_na=False)
+    assert len(table) == 4
+    assert png.read_bytes()[:4] == b"\x89PNG"
+    with pytest.raises(SystemExit):
+        sweeps.main([str(assets / SCENE), "--methods", "bogus"])
