@@ -72,13 +72,11 @@ void assemble(Builder& b, const std::string& file) {
   Scene& scene = out.scene;
   SceneMessages& messages = b.messages;
   checkRequired(b, file);
-  // A run longer than this many steps is certainly a typo (and would overflow step counters).
-  constexpr double kMaxSteps = 1e12;
   const bool timed = b.integratorOk && b.durationOk;
   if (timed && !(scene.duration / scene.dt <= kMaxSteps)) {
     messages.error(b.integratorLine, b.integratorWhere + ": duration / dt = " + shortNumber(scene.duration) + " / " +
                                          shortNumber(scene.dt) + " asks for " + shortNumber(scene.duration / scene.dt) +
-                                         " steps; at most 1e+12 (more would overflow the step counters and run for "
+                                         " steps; at most " + shortNumber(kMaxSteps) + " (more would overflow the step counters and run for "
                                          "years)");
   }
   if (timed && scene.duration / scene.dt <= kMaxSteps) checkPaths(b);

@@ -117,5 +117,7 @@ void assemble(Builder& b, const std::string& file);
 
 /// The trail positions all <particlepath> elements may keep together (memory: 16 bytes each).
 inline constexpr double kMaxTrailPoints = 1e7;
+/// The most steps a run may take: more is certainly a typo (and would overflow step counters).
+inline constexpr double kMaxSteps = 1e12;
 
 }  // namespace fosssim::io

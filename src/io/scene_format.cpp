@@ -91,7 +91,9 @@ std::string sceneFormatMarkdown() {
         "  `<scene>`, ignored repeats. Repeats of one kind are shown three times and then counted.\n"
         "  `--strict` makes warnings errors; `-q` shows a one-line count instead.\n"
         "- `FOSSSim -s scene.xml --check` checks a scene without running it.\n"
-        "- A run may take at most 1e12 steps (ceil(duration / dt)).\n\n";
+        "- A run may take at most "
+     << io::shortNumber(io::kMaxSteps) << " steps (ceil(duration / dt)); all `<particlepath>` trails together keep at most "
+     << io::withThousands(static_cast<long>(io::kMaxTrailPoints)) << " positions.\n\n";
   const char* section = "";
   for (const ElementSpec& e : io::elementTable()) {
     if (std::string(section) != e.section) {

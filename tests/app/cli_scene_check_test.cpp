@@ -8,7 +8,10 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <fcntl.h>
 #include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace fosssim::testing {
 namespace {
@@ -189,7 +192,7 @@ TEST(CliSceneCheck, RunawaySettingsAreRefusedWithTheReason) {
   const TempScene scene(kHead + "  <collision type=\"hybrid\" maxiters=\"1e9\"/>\n</scene>\n");
   const Outcome o = runFosssim({"-s", scene.path, "-d", "0", "-q"}, RunOptions{20});
   EXPECT_TRUE(exitedWith(o, 1)) << o;
-  EXPECT_TRUE(contains(o.err, ":6: <collision> attribute 'maxiters': must be at most 100000")) << o;
+  EXPECT_TRUE(contains(o.err, ":6: <collision> attribute 'maxiters': must be at most 10000,")) << o;
   // The course's largest value still loads.
   const TempScene course(kHead + "  <collision type=\"hybrid\" maxiters=\"10000\"/>\n</scene>\n", "course");
   EXPECT_TRUE(exitedWith(runFosssim({"-s", course.path, "--check"}), 0));
@@ -213,6 +216,68 @@ TEST(CliSceneCheck, LongParticlePathsAreBounded) {
   EXPECT_TRUE(exitedWith(refused, 1)) << refused;
   EXPECT_TRUE(contains(refused.err, "<particlepath> attribute 'duration': the trails would keep more than 1e+07 positions"))
       << refused;
+}
+
+/// Runs FOSSSim with its address space limited to `bytes` (setrlimit in the child); the exit
+/// status (or 128 + signal) and stderr.
+std::pair<int, std::string> runWithMemoryLimit(const std::vector<std::string>& args, rlim_t bytes) {
+  const std::string errPath = fs::temp_directory_path() / ("fosssim-check-mem-" + std::to_string(getpid()) + ".err");
+  std::vector<std::string> argvStrings = {FOSSSIM_EXECUTABLE};
+  argvStrings.insert(argvStrings.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& a : argvStrings) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int in = open("/dev/null", O_RDONLY), out = open("/dev/null", O_WRONLY);
+    const int err = open(errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666);
+    const rlimit limit{bytes, bytes};
+    if (in < 0 || out < 0 || err < 0 || dup2(in, 0) < 0 || dup2(out, 1) < 0 || dup2(err, 2) < 0 ||
+        setrlimit(RLIMIT_AS, &limit) != 0)
+      _exit(126);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  const std::string err = slurp(errPath);
+  fs::remove(errPath);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), err};
+}
+
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kSanitized = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(memory_sanitizer) || __has_feature(thread_sanitizer)
+constexpr bool kSanitized = true;
+#else
+constexpr bool kSanitized = false;
+#endif
+#else
+constexpr bool kSanitized = false;
+#endif
+
+// An allocation that fails is a clear error with exit 1, not std::bad_alloc's abort (exit 134).
+// The smallest address space in which the scene loads is found first; then a run that needs 160 MB
+// more (a trail of 1e7 positions for -m's pictures) is started in that space plus 64 MB.
+TEST(CliSceneCheck, AnAllocationFailureIsAClearErrorWithExitOne) {
+  if (kSanitized) GTEST_SKIP() << "sanitizers reserve terabytes of address space: no limit can be set";
+  const TempScene scene(
+      "<scene><duration time=\"1e5\"/><integrator type=\"explicit-euler\" dt=\"0.01\"/>"
+      "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>"
+      "<particlepath i=\"0\" duration=\"1e5\" r=\"1\" g=\"0\" b=\"0\"/></scene>\n");
+  constexpr rlim_t kMiB = 1 << 20;
+  rlim_t low = 16 * kMiB, high = 4096 * kMiB;  // --check fails at low, works at high
+  if (runWithMemoryLimit({"-s", scene.path, "--check"}, high).first != 0) GTEST_SKIP() << "cannot start in 4 GiB";
+  while (high - low > 16 * kMiB) {
+    const rlim_t mid = (low + high) / 2;
+    (runWithMemoryLimit({"-s", scene.path, "--check"}, mid).first == 0 ? high : low) = mid;
+  }
+  const std::string svg = fs::temp_directory_path() / ("fosssim-check-mem-svg-" + std::to_string(getpid()));
+  const auto [code, err] = runWithMemoryLimit({"-s", scene.path, "-d", "0", "-q", "-m", svg}, high + 64 * kMiB);
+  fs::remove_all(svg);
+  EXPECT_EQ(code, 1) << err;
+  EXPECT_TRUE(contains(err, "FOSSSim: error: out of memory")) << err;
 }
 
 }  // namespace

@@ -146,8 +146,8 @@ TEST(BadInput, ValuesOutOfRangeAreRejected) {
       {"collision", "COR", "  <collision type=\"simple\" COR=\"-0.1\"/>", 0, "[0, 1]"},
       {"collision", "k", "  <collision type=\"penalty\" k=\"-100\"/>", 0, ">= 0"},
       {"collision", "thickness", "  <collision type=\"penalty\" thickness=\"-0.01\"/>", 0, ">= 0"},
-      {"collision", "maxiters", "  <collision type=\"simple\" maxiters=\"1e10\"/>", 0, "at most 100000"},
-      {"collision", "maxiters", "  <collision type=\"hybrid\" maxiters=\"100001\"/>", 0, "run for minutes"},
+      {"collision", "maxiters", "  <collision type=\"simple\" maxiters=\"1e10\"/>", 0, "at most 10000,"},
+      {"collision", "maxiters", "  <collision type=\"hybrid\" maxiters=\"10001\"/>", 0, "12 minutes per step"},
   };
   for (const RangeCase& c : cases) {
     SCOPED_TRACE(c.text);
