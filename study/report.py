@@ -716,7 +716,7 @@ def mode_facts(data_dir, f):
         if found else "On the multi-contact problems of section 6 it behaved like the default mode in this run.")
     kinds = join(k for k, there in (("energy gains", gains), ("escapes through walls", outs), ("frozen motion", frozen))
                  if there)
-    f["compat_pick"] = (f"It keeps the course's flaws, which section 6 measured ({kinds}; listed at the top of this page)."
+    f["compat_pick"] = (f"It keeps the course's flaws, which section 6 measured ({kinds}; listed in the next section)."
                         if found else "")
     f["compat_oddity"] = (
         f"- `--compat` reproduces the course's flaws on purpose ({kinds}: section 6). Its rigid zones hold still "
