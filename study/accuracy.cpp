@@ -25,7 +25,10 @@ AccuracyCell measureAccuracy(const Problem& problem, const Method& method, doubl
   cell.metrics.energyRms = over.energyRms;
   cell.metrics.minSeparation = over.minSeparation;
   if (!cell.run.ok()) return cell;
-  if (timed) cell.wallSeconds = timeRun(file, cell.run.steps, options.timingRepeats, options.timingBudget);
+  if (timed) {
+    cell.timing = timeRunSpread(file, cell.run.steps, options.timingRepeats, options.timingBudget);
+    cell.wallSeconds = cell.timing.min;
+  }
   return cell;
 }
 
@@ -37,7 +40,8 @@ Status runAccuracy(const StudyOptions& options) {
                            "position_error", "velocity_error", "energy_error", "momentum_error", "angmom_error",
                            "period_error", "contact_time_error", "collisions", "overlap_steps", "overlap_pair_steps",
                            "max_overlap", "failsafe_steps", "energy_error_max", "energy_error_rms",
-                           "min_separation", "exact_min_separation", "omega", "message"});
+                           "min_separation", "exact_min_separation", "omega", "wall_s_median", "wall_s_max",
+                           "timing_repeats", "message"});
       !s)
     return s;
   std::vector<Problem> problems = integratorProblems(options.quick);
@@ -55,14 +59,15 @@ Status runAccuracy(const StudyOptions& options) {
             << c.metrics.velocity << c.metrics.energy << c.metrics.momentum << c.metrics.angularMomentum
             << c.metrics.period << c.metrics.contactTime << r.collisions << r.overlap.stepsWithOverlap
             << r.overlap.pairSteps << r.overlap.deepest << r.failsafeSteps << c.metrics.energyMax
-            << c.metrics.energyRms << c.metrics.minSeparation << p.exactMinSeparation << p.omega << r.message;
+            << c.metrics.energyRms << c.metrics.minSeparation << p.exactMinSeparation << p.omega
+            << c.timing.median << c.timing.max << static_cast<long>(c.timing.repeats) << r.message;
         if (Status s = csv.endRow(); !s) return s;
       }
       if (options.log) *options.log << "." << std::flush;
     }
     if (options.log) *options.log << "\n";
   }
-  return Status::ok();
+  return runAudit(options);
 }
 
 }  // namespace fosssim::study

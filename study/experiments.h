@@ -1,5 +1,7 @@
 // The study's experiments, each writing one CSV file into the output directory:
 //   accuracy.csv    error and cost of every method over a sweep of dt, per accuracy problem
+//   audit_series.csv
+//                   energy, momentum and angular momentum against time, per integrator problem and method
 //   stability.csv   the largest stable dt of every integrator against spring stiffness
 //   damped_stability.csv
 //                   the largest stable dt of every integrator on a damped spring, against damping
@@ -35,11 +37,14 @@ struct AccuracyCell {
   RunResult run;
   Metrics metrics;
   double wallSeconds = kNotApplicable;  ///< timeRun's minimum; NaN if not timed or unstable
+  TimingSpread timing{kNotApplicable, kNotApplicable, kNotApplicable, 0};  ///< all the repeats
 };
 AccuracyCell measureAccuracy(const Problem& problem, const Method& method, double dt, const StudyOptions& options,
                              bool timed);
 
 Status runAccuracy(const StudyOptions& options);
+/// audit_series.csv (audit.cpp): energy, momentum and angular momentum over time; runAccuracy calls it.
+Status runAudit(const StudyOptions& options);
 Status runStability(const StudyOptions& options);
 /// damped_stability.csv (damped_stability.h); runStability calls it.
 Status runDampedStability(const StudyOptions& options);

@@ -28,11 +28,20 @@ constexpr double kThrowMass = 1.0;
 
 class ProjectileMeasure final : public Measurement {
  public:
-  void step(const Scene& scene, const State& s) override {
-    // The start's energy m |v0|^2 / 2 - m g . x0, relative to its kinetic part.
+  void step(const Scene& scene, const State& s) override { track_.add(drift(scene, s).energy); }
+  /// Energy against the start's m |v0|^2 / 2 - m g . x0 (relative to its kinetic part); momentum
+  /// against m v(t) (relative to m |v0|); angular momentum about the origin against m x(t) × v(t)
+  /// (relative to m |v0|^3 / g, the throw's natural scale).
+  Drift drift(const Scene& scene, const State& s) const override {
     const double kinetic0 = 0.5 * kThrowMass * kThrow.v0.squaredNorm();
     const double e0 = kinetic0 - kThrowMass * kThrow.g.dot(kThrow.x0);
-    track_.add(std::abs(mechanicalEnergy(scene, s) - e0) / kinetic0);
+    const Vec2 x = at(s.x, 0), v = at(s.v, 0), xe = kThrow.position(s.time), ve = kThrow.velocity(s.time);
+    const double speed = kThrow.v0.norm();
+    Drift d;
+    d.energy = std::abs(mechanicalEnergy(scene, s) - e0) / kinetic0;
+    d.momentum = (v - ve).norm() / speed;
+    d.angularMomentum = std::abs(cross(x, v) - cross(xe, ve)) * kThrow.g.norm() / (speed * speed * speed);
+    return d;
   }
   Metrics overRun() const override {
     Metrics m;
@@ -76,6 +85,17 @@ constexpr double kRest = 1.0, kStretch = 0.5, kSpringK = 10.0, kSpringMass = 1.0
 class SpringMeasure final : public Measurement {
  public:
   explicit SpringMeasure(double b) : exact_{kSpringMass, kSpringK, b, kStretch, 0.0} {}
+  /// Momentum against m v(t) (relative to the largest exact speed, w u0); angular momentum about
+  /// the anchor, exactly 0 for a motion along the spring (relative to m l0 w u0).
+  Drift drift(const Scene&, const State& s) const override {
+    const Vec2 x = at(s.x, 1) - at(s.x, 0), v = at(s.v, 1);
+    const double vmax = exact_.omega() * kStretch;
+    Drift d;
+    d.energy = energyError(s);
+    d.momentum = (kSpringMass * v - kSpringMass * Vec2(exact_.velocity(s.time), 0)).norm() / (kSpringMass * vmax);
+    d.angularMomentum = std::abs(kSpringMass * cross(x, v)) / (kSpringMass * kRest * vmax);
+    return d;
+  }
   void step(const Scene&, const State& s) override {
     track_.add(energyError(s));
     // Signed: the bob's coordinate along the spring's starting line, negative once it has passed
@@ -167,6 +187,20 @@ class OrbitMeasure final : public Measurement {
     track_.fill(m);
     m.minSeparation = closest_;
     return m;
+  }
+
+  /// Energy against the orbit's (relative to it); momentum against 0 (relative to the start's
+  /// sum m |v|); angular momentum against the start's (relative to it).
+  Drift drift(const Scene& scene, const State& s) const override {
+    double L = 0, scale = 0;
+    for (int i = 0; i < 2; ++i) L += scene.massOf(i) * cross(at(s.x, i), at(s.v, i));
+    const double L0 = 2 * kBodyMass * cross(0.5 * kRelX, 0.5 * kRelV);  // both bodies alike about the centre
+    for (int i = 0; i < 2; ++i) scale += scene.massOf(i) * 0.5 * kRelV.norm();
+    Drift d;
+    d.energy = std::abs(mechanicalEnergy(scene, s) - energy_) / std::abs(energy_);
+    d.momentum = momentum(scene, s.v).norm() / scale;
+    d.angularMomentum = std::abs(L - L0) / std::abs(L0);
+    return d;
   }
 
   Metrics finish(const Scene& scene, const State& initial, const RunResult& run) override {

@@ -38,6 +38,14 @@ struct Metrics {
   double contactTime = kNotApplicable;      ///< measured contact time - exact contact time [s]
 };
 
+/// Relative errors of one step end against the exact motion: the audit over time. NaN where a
+/// problem has no exact value.
+struct Drift {
+  double energy = kNotApplicable;
+  double momentum = kNotApplicable;
+  double angularMomentum = kNotApplicable;
+};
+
 /// Watches one run and judges it.
 class Measurement {
  public:
@@ -49,6 +57,8 @@ class Measurement {
   /// What step() gathered over the run so far (energyMax, energyRms, minSeparation), also for a
   /// run that failed part way.
   virtual Metrics overRun() const { return {}; }
+  /// Energy, momentum and angular momentum at this step end against the exact motion's.
+  virtual Drift drift(const Scene&, const State&) const { return {}; }
 };
 
 /// The relative energy error of every step end, folded into its maximum and root mean square.

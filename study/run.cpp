@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace fosssim::study {
 namespace {
@@ -143,20 +144,31 @@ RunResult runScene(const SceneFile& file, const RunOptions& options, const StepV
   return r;
 }
 
-double timeRun(const SceneFile& file, long steps, int maxRepeats, double budgetSeconds) {
+TimingSpread timeRunSpread(const SceneFile& file, long steps, int maxRepeats, double budgetSeconds) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  TimingSpread out{nan, nan, nan, 0};
   std::unique_ptr<Simulator> sim;
-  if (!Simulator::create(file.scene, studySimulatorOptions(), sim)) return std::numeric_limits<double>::quiet_NaN();
-  double best = std::numeric_limits<double>::infinity(), spent = 0;
+  if (!Simulator::create(file.scene, studySimulatorOptions(), sim)) return out;
+  std::vector<double> times;
+  double spent = 0;
   for (int repeat = 0; repeat < std::max(1, maxRepeats) && (repeat == 0 || spent < budgetSeconds); ++repeat) {
     State state = file.initial;
     const Clock::time_point begin = Clock::now();
     for (long k = 0; k < steps; ++k)
-      if (!sim->step(file.scene, state)) return std::numeric_limits<double>::quiet_NaN();
-    const double t = seconds(begin, Clock::now());
-    best = std::min(best, t);
-    spent += t;
+      if (!sim->step(file.scene, state)) return out;
+    times.push_back(seconds(begin, Clock::now()));
+    spent += times.back();
   }
-  return best;
+  std::sort(times.begin(), times.end());
+  out.min = times.front();
+  out.median = times[times.size() / 2];
+  out.max = times.back();
+  out.repeats = static_cast<int>(times.size());
+  return out;
+}
+
+double timeRun(const SceneFile& file, long steps, int maxRepeats, double budgetSeconds) {
+  return timeRunSpread(file, steps, maxRepeats, budgetSeconds).min;
 }
 
 }  // namespace fosssim::study

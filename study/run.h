@@ -77,4 +77,12 @@ RunResult runScene(const SceneFile& file, const RunOptions& options, const StepV
 /// returns NaN.
 double timeRun(const SceneFile& file, long steps, int maxRepeats, double budgetSeconds);
 
+/// timeRun's repeats, all of them: the least, the median and the greatest wall time (NaN if a run
+/// failed), so that charts can show how much the times on a shared machine spread.
+struct TimingSpread {
+  double min = 0, median = 0, max = 0;
+  int repeats = 0;
+};
+TimingSpread timeRunSpread(const SceneFile& file, long steps, int maxRepeats, double budgetSeconds);
+
 }  // namespace fosssim::study
