@@ -139,7 +139,8 @@ TEST_F(CliFiles, WarningsDoNotFailTheRun) {
   const std::string s = write("warn.xml", "<scene><duration time=\"0.1\"/><integrator type=\"explicit-euler\" dt=\"0.01\"/>\n"
                                           "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\" spin=\"3\"/>\n"
                                           "<glue strength=\"1\"/></scene>");
-  const Outcome o = runFosssim({"-s", s, "-d", "0", "-q"});
+  // Without -q: -q shows the warnings as one line counting them (cli_scene_check_test.cpp).
+  const Outcome o = runFosssim({"-s", s, "-d", "0"});
   EXPECT_TRUE(exitedWith(o, 0)) << o;
   EXPECT_TRUE(contains(o.err, "FOSSSim: warning: " + s + ":2: <particle> attribute 'spin'")) << o;
   EXPECT_TRUE(contains(o.err, "FOSSSim: warning: " + s + ":3: <glue>")) << o;
