@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace fosssim::study {
 namespace {
 
@@ -42,6 +44,20 @@ TEST(StudyRobustness, SoftPenaltyLetsAFastDiskThrough) {
   ASSERT_TRUE(t.run.ok()) << t.run.message;
   EXPECT_EQ(t.outcome, EdgeOutcome::Tunnelled);
   EXPECT_GT(t.run.overlap.deepest, 0.02);
+}
+
+// The tunnelling speed docs/study.md states, from energy balance: the penalty spring (acting from
+// `thickness` before contact) stops a unit-mass disk after compressing by v sqrt(m/k), so the disk's
+// centre reaches the edge's line once v sqrt(m/k) > r_disk + r_edge + thickness = 0.04 m: 4 m/s at
+// k = 1e4. Below it the disk bounces, above it it goes through (a fine step: the spring resolved).
+TEST(StudyRobustness, PenaltyTunnelsAboveTheEnergyBalanceSpeed) {
+  const double vThrough = 0.04 * std::sqrt(1e4);
+  const EdgeThrow below = throwAtEdge(collisionMethod("penalty k=1e4"), 0.8 * vThrough, 1e-5);
+  ASSERT_TRUE(below.run.ok()) << below.run.message;
+  EXPECT_EQ(below.outcome, EdgeOutcome::Bounced) << edgeOutcomeName(below.outcome);
+  const EdgeThrow above = throwAtEdge(collisionMethod("penalty k=1e4"), 1.25 * vThrough, 1e-5);
+  ASSERT_TRUE(above.run.ok()) << above.run.message;
+  EXPECT_EQ(above.outcome, EdgeOutcome::Tunnelled) << edgeOutcomeName(above.outcome);
 }
 
 TEST(StudyInterpenetration, MeasuresEveryPairKindAndSkipsWhatCannotSeparate) {
