@@ -233,3 +233,31 @@ def chart_penalty_limits(data_dir, style, save):
                  "that stayed stable,\nagainst impact speed and stiffness k", fontsize=9)
     fig.tight_layout()
     save(fig, data_dir, "penalty_limits")
+
+
+def chart_newton(data_dir, save):
+    import os
+    if not os.path.exists(os.path.join(data_dir, "newton_failure.csv")):
+        return
+    rows = sd.load(data_dir, "newton_failure")
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.4), squeeze=False)
+    for ax, integ in zip(axes.flat, ("implicit-euler", "linearized-implicit-euler")):
+        mine = [r for r in rows if r["integrator"] == integ]
+        for outcome, marker, color in (("ok", "o", "#66bb6a"), ("solver-failure", "X", "#e53935"),
+                                       ("energy-blow-up", "*", "#424242")):
+            pts = [r for r in mine if r["outcome"] == outcome]
+            if pts:
+                sc = ax.scatter([r["eccentricity"] for r in pts], [r["dt_omega"] for r in pts], marker=marker, s=60,
+                                c=[r["min_separation"] / r["periapsis"] for r in pts], cmap="viridis", vmin=0, vmax=1,
+                                edgecolors=color, linewidths=1.5, label={"ok": "ran to the end",
+                                                                          "solver-failure": "Newton did not converge",
+                                                                          "energy-blow-up": "energy x1e6"}[outcome])
+        ax.set_yscale("log")
+        ax.set_xlabel("eccentricity e (started at apoapsis r = 1)")
+        ax.set_ylabel("dt · ω_p,  ω_p = √(μ / r_p³) at periapsis")
+        ax.set_title(integ, fontsize=9)
+        ax.legend(fontsize=7.5, loc="upper left")
+    fig.colorbar(sc, ax=axes.ravel().tolist(), label="closest approach / true periapsis")
+    fig.suptitle("Implicit Euler on two-body orbits (2 periods): where Newton fails against dt and the periapsis's "
+                 "stiffness; colour: how far the orbit had fallen inside its periapsis", fontsize=9)
+    save(fig, data_dir, "newton")

@@ -48,6 +48,8 @@ Status runAudit(const StudyOptions& options);
 Status runStability(const StudyOptions& options);
 /// damped_stability.csv (damped_stability.h); runStability calls it.
 Status runDampedStability(const StudyOptions& options);
+/// newton_failure.csv (newton_failure.cpp): where implicit Euler's Newton fails on orbits; runStability calls it.
+Status runNewtonFailure(const StudyOptions& options);
 Status runRobustness(const StudyOptions& options);
 /// robustness_shots.csv (shots.h); runRobustness calls it.
 Status runShots(const StudyOptions& options);

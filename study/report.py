@@ -767,6 +767,7 @@ def main(argv):
     damped, damped_facts = limits.damped_section(data_dir, rel, sys.modules[__name__])
     shots, shots_facts = limits.shots_section(data_dir, rel, sys.modules[__name__])
     penalty, penalty_facts = limits.penalty_section(data_dir, rel, sys.modules[__name__])
+    newton, newton_facts = limits.newton_section(data_dir, rel, sys.modules[__name__])
     sections = {
         "accuracy": accuracy_section(data_dir, rel),
         "damped": damped,
@@ -775,6 +776,7 @@ def main(argv):
         "robustness": robustness_section(data_dir, rel),
         "shots": shots,
         "penalty": penalty,
+        "newton": newton,
         "hybrid": hybrid_section(data_dir, rel),
         "profile": profile_section(data_dir, rel),
         "contacts": contacts.section(data_dir, rel, sys.modules[__name__]),
@@ -784,6 +786,7 @@ def main(argv):
     all_facts.update(damped_facts)
     all_facts.update(shots_facts)
     all_facts.update(penalty_facts)
+    all_facts.update(newton_facts)
     all_facts.update(contacts.facts(data_dir, sys.modules[__name__]))
     mode_facts(data_dir, all_facts)
     pick_facts(all_facts)

@@ -342,6 +342,12 @@ def document(sections, facts, elapsed):
         sections["damped"],
         sections["stability"],
         STABILITY_WORDS.format(**facts),
+        "### Where implicit Euler's Newton iteration fails\n\nTwo bodies (μ = 1) started at apoapsis r = 1 with "
+        "eccentricities from low to high, so that the periapsis r_p comes closer and its pull stiffer "
+        "(ω_p = √(μ/r_p³)), each run for two periods over a sweep of dt, with implicit Euler (Newton until the "
+        "update is below 1e-9, at most 100 iterations) and linearized implicit Euler (one Newton step).",
+        sections.get("newton", ""),
+        facts.get("newton_words", ""),
         "## 3. Collision robustness\n\nA disk (radius 0.02 m, unit mass) thrown straight at a thin "
         "fixed edge (radius 0.01 m), COR 1, for every collision method over speed x dt. At the end it "
         "has *bounced* (its own side, moving away), *tunnelled* (the far side), got *stuck* (overlapping "

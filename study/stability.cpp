@@ -114,7 +114,8 @@ Status runStability(const StudyOptions& options) {
       if (options.log) *options.log << "\n";
     }
   }
-  return runDampedStability(options);
+  if (Status s = runDampedStability(options); !s) return s;
+  return runNewtonFailure(options);
 }
 
 }  // namespace fosssim::study
