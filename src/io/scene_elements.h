@@ -9,6 +9,7 @@
 #include "fosssim/core/force.h"
 #include "scene_messages.h"
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -108,8 +109,10 @@ struct Builder {
   bool integratorOk = false, durationOk = false, collisionOk = true;
   int integratorLine = 0;
   std::string integratorWhere;
-  /// Unknown elements seen (name, line): a missing required element may be one of them, misspelt.
+  /// Unknown element names seen, with their first line: a missing required element may be one of
+  /// them, misspelt.
   std::vector<std::pair<std::string, int>> unknownElements;
+  std::map<std::string, std::string> suggestions;  ///< unknown element name -> "did you mean" (or "")
 };
 
 /// Resolves indices, checks what needs the whole file, builds the Scene, State and Appearance.

@@ -85,10 +85,15 @@ void readElement(const tinyxml2::XMLElement& e, Builder& b, std::vector<const El
       for (const ElementSpec& s : io::elementTable()) v.emplace_back(s.name);
       return v;
     }();
-    const std::string guess = io::closestName(e.Name(), names);
     // The list of valid names comes with the first unknown element only (it is long).
     const bool first = b.unknownElements.empty();
-    b.unknownElements.emplace_back(e.Name(), line);
+    // Floods repeat a few names: each name's suggestion is worked out once, and its first line kept.
+    auto known = b.suggestions.find(e.Name());
+    if (known == b.suggestions.end()) {
+      known = b.suggestions.emplace(e.Name(), io::closestName(e.Name(), names)).first;
+      b.unknownElements.emplace_back(e.Name(), line);
+    }
+    const std::string& guess = known->second;
     m.warn(line, "unknown element <" + std::string(e.Name()) + ">", "unknown elements <" + std::string(e.Name()) + ">",
            m.at(line) + "<" + e.Name() + ">: unknown element ignored" +
                (!guess.empty() ? "; did you mean <" + guess + ">?"
