@@ -72,12 +72,13 @@ std::string forceName(const Scene& scene, int index) {
 
 }  // namespace
 
-void EnergyWatch::potentials(const Scene& scene, const VecX& x, const VecX& v, std::vector<double>& out) const {
+void EnergyWatch::potentials(const Scene& scene, const VecX& x, const VecX& v, ForceContext& forces,
+                             std::vector<double>& out) const {
   out.resize(scene.forces.size());
-  for (size_t f = 0; f < scene.forces.size(); ++f) out[f] = scene.forces[f]->energy(scene, x, v);
+  for (size_t f = 0; f < scene.forces.size(); ++f) out[f] = scene.forces[f]->energyWith(scene, x, v, forces);
 }
 
-void EnergyWatch::begin(const Scene& scene, const State& start) {
+void EnergyWatch::begin(const Scene& scene, const State& start, ForceContext& forces) {
   started_ = true;
   active_ = wanted_ && closedScene(scene, start);
   largestGrowth_ = 0;
@@ -85,7 +86,7 @@ void EnergyWatch::begin(const Scene& scene, const State& start) {
   tracked_.clear();
   if (!active_) return;
   std::vector<double> potential0;
-  potentials(scene, start.x, start.v, potential0);
+  potentials(scene, start.x, start.v, forces, potential0);
   const double kinetic0 = kineticEnergy(scene, start.v);
   double magnitude = kinetic0, stored = 0;
   energy0_ = kinetic0;
@@ -101,14 +102,14 @@ void EnergyWatch::begin(const Scene& scene, const State& start) {
   steps_ = 0;
 }
 
-Status EnergyWatch::check(const Scene& scene, const State& start, const State& end) {
-  if (!started_ || start.step == 0) begin(scene, start);
+Status EnergyWatch::check(const Scene& scene, const State& start, const State& end, ForceContext& forces) {
+  if (!started_ || start.step == 0) begin(scene, start, forces);
   if (!active_) return Status::ok();
   // Spring-like potentials are left out from here on (see the header): the gain below is a
   // lower bound of the true one, so it never flags what the full sum would not.
   double energy = kineticEnergy(scene, end.v), released = 0;
   for (const Tracked& t : tracked_) {
-    const double u = scene.forces[t.force]->energy(scene, end.x, end.v);
+    const double u = scene.forces[t.force]->energyWith(scene, end.x, end.v, forces);
     energy += u;
     released += std::max(0.0, t.start - u);
   }
@@ -119,11 +120,11 @@ Status EnergyWatch::check(const Scene& scene, const State& start, const State& e
   // Written so that a NaN or infinite gain fails too (an overflowed kinetic energy). A scene
   // with no energy at all (nothing moves, no force) has scale 0 and stays at gain 0.
   if (gain <= kBlowUpGrowth * scale) return Status::ok();
-  return Status::error(explain(scene, start, end, gain, scale));
+  return Status::error(explain(scene, start, end, forces, gain, scale));
 }
 
-std::string EnergyWatch::explain(const Scene& scene, const State& start, const State& end, double gain,
-                                 double scale) const {
+std::string EnergyWatch::explain(const Scene& scene, const State& start, const State& end, ForceContext& forces,
+                                 double gain, double scale) const {
   std::ostringstream msg;
   msg << "energy blow-up: with nothing outside doing work, the mechanical energy ";
   if (std::isfinite(gain))
@@ -151,8 +152,8 @@ std::string EnergyWatch::explain(const Scene& scene, const State& start, const S
   // most). They differ when a stiff penalty layer throws two disks apart and the soft spring
   // that ties them takes up the energy: the advice is about the stiff one.
   std::vector<double> before, after;
-  potentials(scene, start.x, start.v, before);
-  potentials(scene, end.x, end.v, after);
+  potentials(scene, start.x, start.v, forces, before);
+  potentials(scene, end.x, end.v, forces, after);
   int changed = -1, stiffest = -1;
   double change = 0;
   auto rank = [&](int f) {

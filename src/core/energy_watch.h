@@ -73,7 +73,12 @@ class EnergyWatch {
   /// baseline at the first step of a run (a start state at step 0, or the first call).
   /// Fails with a message naming the fastest particle, the force whose energy changed most in
   /// this step and what to change; the caller adds step and time.
-  Status check(const Scene& scene, const State& start, const State& end);
+  /// `forces`: the caller's context for the forces' energies (a Simulator passes its own).
+  Status check(const Scene& scene, const State& start, const State& end, ForceContext& forces);
+  Status check(const Scene& scene, const State& start, const State& end) {
+    ForceContext forces;
+    return check(scene, start, end, forces);
+  }
 
   /// False when off by choice or because the scene may gain energy honestly (see above).
   bool active() const { return active_; }
@@ -81,10 +86,11 @@ class EnergyWatch {
   double largestGrowth() const { return largestGrowth_; }
 
  private:
-  void begin(const Scene& scene, const State& start);
+  void begin(const Scene& scene, const State& start, ForceContext& forces);
   /// Per-force potentials (0 for forces without one) at x, v.
-  void potentials(const Scene& scene, const VecX& x, const VecX& v, std::vector<double>& out) const;
-  std::string explain(const Scene& scene, const State& start, const State& end, double gain, double scale) const;
+  void potentials(const Scene& scene, const VecX& x, const VecX& v, ForceContext& forces, std::vector<double>& out) const;
+  std::string explain(const Scene& scene, const State& start, const State& end, ForceContext& forces, double gain,
+                      double scale) const;
 
   bool wanted_;
   bool started_ = false;

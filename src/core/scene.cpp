@@ -1,5 +1,8 @@
-// Scene helpers: step count, particle construction, sums over the scene's forces.
+// Scene helpers: step count, particle construction, finalisation, sums over the scene's forces.
 #include "fosssim/core/scene.h"
+
+#include "fosssim/core/collision_handler.h"
+#include "fosssim/core/forces.h"
 
 #include <cmath>
 
@@ -9,12 +12,6 @@ long Scene::numSteps() const {
   // The reference computes ceil(duration / dt) in double precision; so do we, so that scenes whose
   // duration is not a multiple of dt (in binary) take the same number of steps.
   return static_cast<long>(std::ceil(duration / dt));
-}
-
-bool Scene::allForcesHaveJacobians() const {
-  for (const auto& f : forces)
-    if (!f->hasJacobians()) return false;
-  return true;
 }
 
 void addParticles(Scene& scene, const std::vector<ParticleSpec>& particles) {
@@ -33,14 +30,32 @@ void addParticle(Scene& scene, double mass, bool fixed, double radius) {
   addParticles(scene, {ParticleSpec{mass, fixed, radius}});
 }
 
+void finalizeScene(Scene& scene) {
+  const CollisionEntry* entry = findCollisionType(scene.collision.type);
+  if (!entry || !entry->addsPenaltyForce) return;  // an unknown type is Simulator::create's to report
+  for (const auto& force : scene.forces)
+    if (dynamic_cast<const PenaltyForce*>(force.get())) return;
+  scene.forces.push_back(std::make_unique<PenaltyForce>(scene.collision.penaltyK, scene.collision.penaltyThickness));
+}
+
+void accumulateGradient(const Scene& scene, const VecX& x, const VecX& v, VecX& gradE, ForceContext& context) {
+  for (const auto& force : scene.forces) force->addGradientWith(scene, x, v, gradE, context);
+}
+
 void accumulateGradient(const Scene& scene, const VecX& x, const VecX& v, VecX& gradE) {
-  for (const auto& force : scene.forces) force->addGradient(scene, x, v, gradE);
+  ForceContext context;
+  accumulateGradient(scene, x, v, gradE, context);
+}
+
+double potentialEnergy(const Scene& scene, const VecX& x, const VecX& v, ForceContext& context) {
+  double e = 0;
+  for (const auto& force : scene.forces) e += force->energyWith(scene, x, v, context);
+  return e;
 }
 
 double potentialEnergy(const Scene& scene, const VecX& x, const VecX& v) {
-  double e = 0;
-  for (const auto& force : scene.forces) e += force->energy(scene, x, v);
-  return e;
+  ForceContext context;
+  return potentialEnergy(scene, x, v, context);
 }
 
 double kineticEnergy(const Scene& scene, const VecX& v) {

@@ -1,6 +1,5 @@
 #include "fosssim/core/simulator.h"
 
-#include "collision/pair_candidates.h"
 #include "energy_watch.h"
 
 #include <cmath>
@@ -20,10 +19,13 @@ Status Simulator::create(const Scene& scene, const SimulatorOptions& options,
   if (!collision) return Status::error("unknown collision type '" + scene.collision.type + "'");
   std::unique_ptr<Simulator> sim(new Simulator());
   sim->collision_ = collision;
+  sim->integratorKeyword_ = scene.integrator;
+  sim->dt_ = scene.dt;
+  sim->settings_ = scene.collision;
   sim->integrator_ = integrator->make();
   if (collision->make) sim->handler_ = collision->make(scene.collision, options.handler);
   sim->log_.polynomials.setEnabled(options.logPolynomials && collision->layout.polynomials);
-  sim->handlerOptions_ = options.handler;
+  sim->forces_ = ForceContext(options.handler.allPairs, options.handler.threads);
   sim->energyWatch_ = std::make_unique<EnergyWatch>(options.watchEnergy);
   out = std::move(sim);
   return Status::ok();
@@ -73,25 +75,34 @@ std::string blameNonFinite(const Scene& scene, const State& start, const State& 
          shortNumber(largest) + "): a smaller dt or a weaker force may help";
 }
 
+/// Equal, or both NaN (a hand-built scene's NaN setting is the same setting).
+bool same(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
+
+bool sameSettings(const CollisionSettings& a, const CollisionSettings& b) {
+  return a.type == b.type && same(a.cor, b.cor) && a.maxIterations == b.maxIterations && a.failsafe == b.failsafe &&
+         same(a.penaltyK, b.penaltyK) && same(a.penaltyThickness, b.penaltyThickness);
+}
+
 }  // namespace
 
 Status Simulator::step(const Scene& scene, State& state, StepObserver* observer) {
-  const double dt = scene.dt;
+  const double dt = dt_;
   const long stepNumber = state.step + 1;
   auto failure = [&](const std::string& what) {
     return Status::error("step " + std::to_string(stepNumber) + " (t = " + shortNumber(state.time) + "): " + what);
   };
+  if (!same(scene.dt, dt_) || scene.integrator != integratorKeyword_ || !sameSettings(scene.collision, settings_))
+    return failure("the scene's settings (integrator, dt or collision) changed since the simulator was created; "
+                   "create a new simulator for the new settings");
 
   stats_.clear();
   const StepTimer stepTimer(timing_, stats_.total);
-  // For the penalty force (the handlers know already).
-  const PairSearchScope pairSearch(PairSearchSettings{handlerOptions_.allPairs, handlerOptions_.threads});
 
   // 1. Predict: the integrator moves every particle as if nothing collided.
   start_ = state;
   {
     const StepTimer timer(timing_, stats_.integrate);
-    if (Status s = integrator_->step(scene, state, dt); !s) return failure(s.message());
+    if (Status s = integrator_->step(scene, state, dt, forces_); !s) return failure(s.message());
   }
   const bool predictionFinite = state.x.allFinite() && state.v.allFinite();  // to blame forces or response
 
@@ -107,7 +118,7 @@ Status Simulator::step(const Scene& scene, State& state, StepObserver* observer)
   state.time = start_.time + dt;
   if (Status s = checkFinite(state); !s)
     return failure(s.message() + blameNonFinite(scene, start_, state, predictionFinite, collision_->keyword));
-  if (Status s = energyWatch_->check(scene, start_, state); !s) return failure(s.message());
+  if (Status s = energyWatch_->check(scene, start_, state, forces_); !s) return failure(s.message());
   return Status::ok();
 }
 

@@ -114,8 +114,8 @@ bool report(double tau, Contact* hit, Vec2 n) {
 
 // ---------------------------------------------------------------- builders
 // Each polynomial has an in-place builder (detection writes straight into the caller's log:
-// copying a freshly built Polynomial stalls on store forwarding, which cost a third of a
-// PP query) and a value-returning public wrapper.
+// copying a freshly built Polynomial stalls on store forwarding, a cost of the order of a PP
+// query's own arithmetic) and a value-returning public wrapper.
 
 namespace {
 
@@ -234,9 +234,9 @@ Vec2 phContactVector(const PHInput& in, double tau) {
 // of PP and PH; the alpha quadratics of PE before the quartic and the quintic). With a log,
 // everything is built first, straight into the log, in the reference's order, and solved
 // the same way. Without one, only what is needed is built, into locals (a zeroed scratch
-// PolyLog would cost more than the PP solve itself).
+// PairPolynomials would cost more than the PP solve itself).
 
-bool detectPP(const PPInput& in, Contact* hit, PolyLog* log, const DetectionRules& rules) {
+bool detectPP(const PPInput& in, Contact* hit, PairPolynomials* log, const DetectionRules& rules) {
   StagedSolve solve(rules.intervals);  // holds pointers: finish() inside the scope of the polynomials
   double tau = kNever;
   if (log != nullptr) {
@@ -255,7 +255,7 @@ bool detectPP(const PPInput& in, Contact* hit, PolyLog* log, const DetectionRule
   return report(tau, hit, tau <= 1.0 ? ppContactVector(in, tau) : Vec2::Zero());
 }
 
-bool detectPE(const PEInput& in, Contact* hit, PolyLog* log, const DetectionRules& rules) {
+bool detectPE(const PEInput& in, Contact* hit, PairPolynomials* log, const DetectionRules& rules) {
   StagedSolve solve(rules.intervals);  // holds pointers: finish() inside the scope of the polynomials
   const QuinticForm form = rules.quintic;
   double tau = kNever;
@@ -289,7 +289,7 @@ bool detectPE(const PEInput& in, Contact* hit, PolyLog* log, const DetectionRule
   return report(tau, hit, tau <= 1.0 ? peContactVector(in, tau) : Vec2::Zero());
 }
 
-bool detectPH(const PHInput& in, Contact* hit, PolyLog* log, const DetectionRules& rules) {
+bool detectPH(const PHInput& in, Contact* hit, PairPolynomials* log, const DetectionRules& rules) {
   StagedSolve solve(rules.intervals);  // holds pointers: finish() inside the scope of the polynomials
   double tau = kNever;
   if (log != nullptr) {

@@ -1,9 +1,10 @@
 #include "fosssim/math/interval_solver.h"
 
-#include <cassert>
 #include <cmath>
 
+#include "fosssim/math/contract.h"
 #include "fosssim/math/real_roots.h"
+#include "staged_solve.h"
 
 namespace fosssim::math {
 namespace {
@@ -113,11 +114,11 @@ void PositiveSet::append(double a, double b) {
     if (b > hi[count - 1]) hi[count - 1] = b;
     return;
   }
-  if (count < kMaxIntervals) {
-    lo[count] = a;
-    hi[count] = b;
-    ++count;
-  }
+  // Capacity: see kMaxIntervals. Never dropped silently: a fifth stretch is a bug.
+  FOSSSIM_ASSERT(count < kMaxIntervals);
+  lo[count] = a;
+  hi[count] = b;
+  ++count;
 }
 
 PositiveSet positiveSet(const Polynomial& p, double tMax, IntervalRule rule) {
@@ -155,8 +156,8 @@ double firstCommonTime(const PositiveSet* sets, int count, double tMax, Interval
   // stretches meet: its overlap test is b.s <= a.e && a.s <= b.e).
   const bool closed = rule == IntervalRule::Reference;
   double t = 0.0;
+  FOSSSIM_ASSERT(count <= kMaxSolverPolynomials);
   int cursor[kMaxSolverPolynomials] = {};
-  assert(count <= kMaxSolverPolynomials);
   for (bool moved = true; moved;) {
     moved = false;
     for (int i = 0; i < count; ++i) {
@@ -173,26 +174,22 @@ double firstCommonTime(const PositiveSet* sets, int count, double tMax, Interval
   return t <= tMax ? t : kNever;
 }
 
+// The staged solve (staged_solve.h, what CCD uses) with every polynomial at once: one
+// implementation of the rules for both.
 double firstPositiveTime(const Polynomial* polys, int count, double tMax, IntervalRule rule) {
-  assert(count <= kMaxSolverPolynomials);
-  bool allPositiveAtStart = rule == IntervalRule::Exact;
-  for (int i = 0; i < count && allPositiveAtStart; ++i)
-    allPositiveAtStart = positiveJustAfterZero(polys[i]);
-  if (allPositiveAtStart) return 0.0;
-
+  FOSSSIM_ASSERT(count <= kMaxSolverPolynomials);
   // Cheapest (lowest degree) first, so an empty set is usually found before any iteration.
+  // (The answer does not depend on the order: it is the infimum of the sets' intersection.)
   int order[kMaxSolverPolynomials];
   for (int i = 0; i < count; ++i) {
     int j = i;
     for (; j > 0 && polys[order[j - 1]].size > polys[i].size; --j) order[j] = order[j - 1];
     order[j] = i;
   }
-  PositiveSet sets[kMaxSolverPolynomials];
-  for (int i = 0; i < count; ++i) {
-    sets[i] = positiveSet(polys[order[i]], tMax, rule);
-    if (sets[i].empty()) return kNever;
-  }
-  return firstCommonTime(sets, count, tMax, rule);
+  StagedSolve solve(rule, tMax);
+  for (int i = 0; i < count; ++i)
+    if (!solve.add(polys[order[i]])) return kNever;
+  return solve.finish();
 }
 
 }  // namespace fosssim::math

@@ -26,9 +26,9 @@ VecX gradient(const TestScene& s, const Force& f, const VecX& x, const VecX& v) 
 }
 
 Eigen::MatrixXd dense(const Triplets& t, Eigen::Index n) {
-  SparseMat m(n, n);
-  m.setFromTriplets(t.begin(), t.end());
-  return Eigen::MatrixXd(m);
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n, n);
+  for (const Triplet& e : t) m(e.row(), e.col()) += e.value();
+  return m;
 }
 
 /// Finite-difference Jacobian of the gradient with respect to x (wrtV = false) or v.

@@ -106,7 +106,7 @@ void kind(const char* label, Make make, Detect detect) {
       return hit;
     });
     std::snprintf(name, sizeof name, "%s %s log", label, near ? "near " : "scene");
-    PolyLog log;  // reused, as the simulator's per-pair scratch would be
+    PairPolynomials log;  // reused, as the simulator's per-pair scratch would be
     run(name, inputs, [&](const Input& in, volatile double* sink) {
       Contact c;
       const bool hit = detect(in, &c, &log);
@@ -119,8 +119,8 @@ void kind(const char* label, Make make, Detect detect) {
 }  // namespace
 
 int main() {
-  kind<PPInput>("PP", makePP, [](const PPInput& in, Contact* c, PolyLog* l) { return detectPP(in, c, l); });
-  kind<PEInput>("PE", makePE, [](const PEInput& in, Contact* c, PolyLog* l) { return detectPE(in, c, l); });
-  kind<PHInput>("PH", makePH, [](const PHInput& in, Contact* c, PolyLog* l) { return detectPH(in, c, l); });
+  kind<PPInput>("PP", makePP, [](const PPInput& in, Contact* c, PairPolynomials* l) { return detectPP(in, c, l); });
+  kind<PEInput>("PE", makePE, [](const PEInput& in, Contact* c, PairPolynomials* l) { return detectPE(in, c, l); });
+  kind<PHInput>("PH", makePH, [](const PHInput& in, Contact* c, PairPolynomials* l) { return detectPH(in, c, l); });
   return 0;
 }

@@ -239,7 +239,7 @@ TEST(CcdDetect, SlantedHalfPlane) {
 // ------------------------------------------------------------ logging and the fast path
 
 TEST(CcdDetect, LogHoldsAllPolynomialsEvenWhenRejectedEarly) {
-  PolyLog log;
+  PairPolynomials log;
   // Far apart and separating: the fast path would stop at once.
   EXPECT_FALSE(detectPE(pe({10, 10}, {1, 1}, 0.1, {-1, 0}, {0, 0}, {1, 0}, {0, 0}, 0.1), nullptr, &log));
   ASSERT_EQ(log.count, 4);
@@ -263,7 +263,7 @@ TEST(CcdDetect, FastPathAgreesWithLoggingPath) {
   for (int i = 0; i < 20000; ++i) {
     const double reach = (i % 3 == 0) ? 0.05 : 0.6;  // some far, some close
     Contact a, b;
-    PolyLog log;
+    PairPolynomials log;
     const PPInput p = pp({u(rng), u(rng)}, {reach * u(rng), reach * u(rng)}, 0.1 + 0.1 * u(rng),
                          {u(rng), u(rng)}, {reach * u(rng), reach * u(rng)}, 0.15);
     const bool fp = detectPP(p, &a);

@@ -369,5 +369,30 @@ TEST(IntervalSolverReference, AgreesWithTheOwnRuleAwayFromBoundaries) {
   }
 }
 
+// Capacities are contracts checked in every build (FOSSSIM_ASSERT, contract.h): going past one
+// stops the program with a message instead of dropping an interval or a coefficient silently.
+TEST(IntervalSolverDeathTest, AppendPastTheCapacityIsReportedNotDropped) {
+  PositiveSet set;
+  for (int k = 0; k < PositiveSet::kMaxIntervals; ++k) set.append(2.0 * k, 2.0 * k + 1.0);
+  EXPECT_EQ(set.count, PositiveSet::kMaxIntervals);
+  set.append(2.0 * PositiveSet::kMaxIntervals - 1.0, 100.0);  // touches the last one: merged
+  EXPECT_EQ(set.count, PositiveSet::kMaxIntervals) << "a touching interval extends the last one";
+  EXPECT_EQ(set.hi[PositiveSet::kMaxIntervals - 1], 100.0);
+  EXPECT_DEATH(set.append(1000.0, 1001.0), "contract 'count < kMaxIntervals'");
+}
+
+TEST(IntervalSolverDeathTest, MoreCoefficientsThanTheDegreeAllowsAreReported) {
+  const double seven[7] = {1, 2, 3, 4, 5, 6, 7};
+  EXPECT_DEATH(Polynomial::fromHighestFirst(seven, 7), "contract .*kMaxCoeffs");
+  const double sixAfterZeros[8] = {0, 0, 1, 2, 3, 4, 5, 6};
+  EXPECT_EQ(Polynomial::fromHighestFirst(sixAfterZeros, 8).size, 6) << "leading zeros do not count";
+}
+
+TEST(IntervalSolverDeathTest, MorePolynomialsThanTheSolverHoldsAreReported) {
+  std::vector<Polynomial> many(kMaxSolverPolynomials + 1, Polynomial::fromHighestFirst({1.0}));
+  EXPECT_EQ(firstPositiveTime(many.data(), kMaxSolverPolynomials), 0.0);
+  EXPECT_DEATH(firstPositiveTime(many.data(), kMaxSolverPolynomials + 1), "contract");
+}
+
 }  // namespace
 }  // namespace fosssim::math

@@ -20,8 +20,19 @@ inline const char* pairKindName(PairKind kind) {
   return "unknown pair kind";
 }
 
-/// One collision response. For particle-edge and particle-half-plane, j is the edge or
-/// half-plane index.
+/// A pair found colliding during a step: what detection finds and what --verify reports
+/// (Violation). For particle-edge and particle-half-plane, j is the edge or half-plane index.
+struct Collision {
+  PairKind kind = PairKind::ParticleParticle;
+  int i = 0;              ///< the particle (the lower index for particle-particle)
+  int j = 0;              ///< the other particle, the edge or the half-plane
+  double tau = 0;         ///< first contact as a fraction of the step, in [0, 1]
+  Vec2 n = Vec2::Zero();  ///< contact vector at tau, from particle i to the other object
+  double alpha = 0;       ///< particle-edge: the closest point's parameter at tau, clamped to [0, 1]
+};
+
+/// One collision response, as trajectory records hold it (the reference's record: kind, i, j,
+/// n, then the time; `time` is the tau of the Collision it answers, 0 for discrete detection).
 struct Impulse {
   PairKind kind = PairKind::ParticleParticle;
   int i = 0;                ///< the particle (the lower index for particle-particle)

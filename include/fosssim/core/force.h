@@ -5,9 +5,38 @@
 
 #include "fosssim/core/types.h"
 
+#include <memory>
+
 namespace fosssim {
 
 struct Scene;
+struct PenaltyScratch;
+
+/// What evaluating forces may use besides the scene and the state: how near pairs are searched
+/// (the same choices as HandlerOptions::allPairs and threads; the results are identical for
+/// every choice) and storage reused from call to call. A Simulator owns one and passes it to its
+/// integrator, so simulators share nothing and may step on different threads. A default context
+/// searches with the broad phase on the calling thread.
+class ForceContext {
+ public:
+  explicit ForceContext(bool allPairs = false, int threads = 1);
+  ~ForceContext();
+  ForceContext(ForceContext&&) noexcept;
+  ForceContext& operator=(ForceContext&&) noexcept;
+  ForceContext(const ForceContext&) = delete;
+  ForceContext& operator=(const ForceContext&) = delete;
+
+  bool allPairs() const { return allPairs_; }
+  int threads() const { return threads_; }
+  /// The penalty force's near-pair search and lists (src/core/forces/penalty_scratch.h),
+  /// created at first use.
+  PenaltyScratch& penaltyScratch();
+
+ private:
+  bool allPairs_;
+  int threads_;
+  std::unique_ptr<PenaltyScratch> penalty_;
+};
 
 class Force {
  public:
@@ -21,6 +50,14 @@ class Force {
 
   /// Adds -F(x, v) to gradE (size 2N).
   virtual void addGradient(const Scene& scene, const VecX& x, const VecX& v, VecX& gradE) const = 0;
+
+  /// energy() and addGradient() with the caller's context. Forces that search for near pairs
+  /// (the penalty force) override these and use the context's options and storage; for every
+  /// other force they are energy() and addGradient(). The scene's sums (accumulateGradient,
+  /// potentialEnergy) and the integrators call these.
+  virtual double energyWith(const Scene& scene, const VecX& x, const VecX& v, ForceContext& context) const;
+  virtual void addGradientWith(const Scene& scene, const VecX& x, const VecX& v, VecX& gradE,
+                               ForceContext& context) const;
 
   /// Adds -dF/dx at (x, v) as 2N x 2N triplets (nothing when hasJacobians() is false).
   virtual void addJacobianX(const Scene& scene, const VecX& x, const VecX& v, Triplets& out) const;

@@ -115,12 +115,16 @@ class VortexForce final : public Force {
 /// r_sum + thickness, E = k/2 (|n| - r_sum - thickness)^2 where n is the vector from the particle
 /// to the other object's closest point (particle-particle, particle-edge with the edge endpoints
 /// weighted 1-alpha and alpha, particle-half-plane). Gradient only, as in the reference.
+/// The near pairs are searched with the context's options and storage (energyWith,
+/// addGradientWith); energy() and addGradient() use a fresh default context (tests, tools).
 class PenaltyForce final : public Force {
  public:
   PenaltyForce(double k, double thickness) : k_(k), thickness_(thickness) {}
   const char* keyword() const override { return "collision penalty"; }
   double energy(const Scene&, const VecX& x, const VecX& v) const override;
   void addGradient(const Scene&, const VecX& x, const VecX& v, VecX& gradE) const override;
+  double energyWith(const Scene&, const VecX& x, const VecX& v, ForceContext& context) const override;
+  void addGradientWith(const Scene&, const VecX& x, const VecX& v, VecX& gradE, ForceContext& context) const override;
   bool hasJacobians() const override { return false; }
   bool hasPotential() const override { return true; }
   double stiffness() const override { return k_; }

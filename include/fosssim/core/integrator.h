@@ -15,8 +15,14 @@ namespace fosssim {
 class Integrator {
  public:
   virtual ~Integrator() = default;
-  /// Advances state.x and state.v by dt (not state.time: the step does that).
-  virtual Status step(const Scene& scene, State& state, double dt) = 0;
+  /// Advances state.x and state.v by dt (not state.time: the step does that). `forces`: the
+  /// caller's context for evaluating the scene's forces (a Simulator passes its own).
+  virtual Status step(const Scene& scene, State& state, double dt, ForceContext& forces) = 0;
+  /// The same with a fresh default context (tools and tests that step an integrator alone).
+  Status step(const Scene& scene, State& state, double dt) {
+    ForceContext forces;
+    return step(scene, state, dt, forces);
+  }
 };
 
 /// One row of the integrator table: the XML keyword and how to build the integrator.

@@ -28,7 +28,8 @@ struct HalfPlane {
 
 /// What the default mode does with contacts that impulses cannot settle within a step.
 enum class Failsafe {
-  Projection,  ///< inelastic projection per impact zone (Harmon et al. 2008); rigid zones last
+  Projection,  ///< inelastic projection per impact zone (Harmon et al. 2008); a zone still
+               ///< jammed then stops its contacts' particles, a free one moves rigidly
   Rigid,       ///< rigid impact zones at once (the course's failsafe)
 };
 
@@ -39,8 +40,9 @@ struct CollisionSettings {
   int maxIterations = 10;     ///< hybrid: impulse passes before the failsafe; <= 0 means none
                               ///< (default mode: impulse events per particle and step)
   Failsafe failsafe = Failsafe::Projection;  ///< default mode only; --compat is always rigid
-  double penaltyK = 0.0;      ///< penalty / hybrid: stiffness of the penalty force (informative;
-  double penaltyThickness = 0.0;  ///< the force itself is in Scene::forces)
+  double penaltyK = 0.0;          ///< penalty / hybrid: the penalty force's stiffness and
+  double penaltyThickness = 0.0;  ///< thickness, as the file gives them (finalizeScene builds
+                                  ///< the force in Scene::forces from them; the writer writes them)
 };
 
 /// The static description of a particle system.
@@ -68,8 +70,6 @@ struct Scene {
   double massOf(int i) const { return mass[2 * i]; }
   /// Steps in a full run: ceil(duration / dt), computed exactly as the reference does.
   long numSteps() const;
-  /// True when some force provides no Jacobian (implicit integrators then cannot be exact).
-  bool allForcesHaveJacobians() const;
 
   Scene() = default;
   Scene(Scene&&) noexcept = default;
@@ -90,10 +90,20 @@ void addParticles(Scene& scene, const std::vector<ParticleSpec>& particles);
 /// Appends one particle (convenient for small hand-made scenes).
 void addParticle(Scene& scene, double mass, bool fixed, double radius);
 
+/// Completes a scene built from its settings, once, before it runs: adds the penalty force that
+/// the collision type implies (penalty, hybrid: CollisionEntry::addsPenaltyForce) with the
+/// settings' k and thickness, last in the summation order, unless the scene has one already.
+/// The loader calls it; so should any code that builds a scene with such a collision type.
+void finalizeScene(Scene& scene);
+
 /// Sum of the gradients of all the scene's forces at (x, v): minus the total force (size 2N).
+/// `context`: the caller's options and storage for forces that search pairs (force.h); the
+/// overload without one uses a fresh default context.
+void accumulateGradient(const Scene& scene, const VecX& x, const VecX& v, VecX& gradE, ForceContext& context);
 void accumulateGradient(const Scene& scene, const VecX& x, const VecX& v, VecX& gradE);
 
-/// Total potential energy of the scene's forces that have one.
+/// Total potential energy of the scene's forces that have one (context as above).
+double potentialEnergy(const Scene& scene, const VecX& x, const VecX& v, ForceContext& context);
 double potentialEnergy(const Scene& scene, const VecX& x, const VecX& v);
 
 /// Kinetic energy 1/2 v^T M v.

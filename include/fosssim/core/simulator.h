@@ -1,12 +1,22 @@
 // The step loop's engine: one step = predict (integrator), detect and respond (collision handler),
 // verify (finite state, no energy blow-up). Built from a scene's settings through the integrator
 // and collision tables.
+//
+// What a simulator reads from its scene, and when: create() resolves every *setting* once (the
+// integrator, dt, the collision type and its parameters: COR, maxiters, failsafe); step() reads
+// the scene's *contents* (particles, geometry, forces), which it must not change either. A run
+// with other settings takes a new simulator: step() refuses a scene whose settings differ from
+// those it was created with, rather than running half on the old ones and half on the new.
+// Everything a step needs besides the scene and the state (handler scratch, the forces' pair
+// search and storage, the energy watch) belongs to the simulator, so two simulators share
+// nothing and may step on different threads.
 #pragma once
 
 #include "fosssim/core/collision_handler.h"
 #include "fosssim/core/integrator.h"
 
 #include <memory>
+#include <string>
 
 namespace fosssim {
 
@@ -29,9 +39,9 @@ class Simulator {
   /// Builds the integrator and collision handler that `scene` names. Fails on unknown keywords.
   static Status create(const Scene& scene, const SimulatorOptions& options, std::unique_ptr<Simulator>& out);
 
-  /// Advances `state` by one step of `scene` (the scene this simulator was created for).
-  /// On failure (non-finite state, solver failure, energy blow-up) the message names the step
-  /// and particle.
+  /// Advances `state` by one step of `scene` (the scene this simulator was created for; an error
+  /// if its settings changed since). On failure (non-finite state, solver failure, energy
+  /// blow-up) the message names the step and particle.
   Status step(const Scene& scene, State& state, StepObserver* observer = nullptr);
 
   /// What the last step's collision handling did.
@@ -57,12 +67,15 @@ class Simulator {
  private:
   Simulator();
   const CollisionEntry* collision_ = nullptr;
+  std::string integratorKeyword_;  ///< the settings create() read (see the top of this file)
+  double dt_ = 0;
+  CollisionSettings settings_;
   std::unique_ptr<Integrator> integrator_;
   std::unique_ptr<CollisionHandler> handler_;  ///< null for "none" and "penalty"
   CollisionLog log_;
   StepStats stats_;
   bool timing_ = false;
-  HandlerOptions handlerOptions_;  ///< allPairs and threads also reach the penalty force
+  ForceContext forces_;  ///< the forces' pair search (allPairs, threads) and storage
   State start_;  ///< the state at the beginning of the current step (scratch)
   std::unique_ptr<EnergyWatch> energyWatch_;  ///< part of the verify phase
 };

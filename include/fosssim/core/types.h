@@ -1,8 +1,9 @@
-// Basic numeric types shared by every layer above the math library.
+// Basic numeric types shared by every layer above the math library. Eigen/Core only: the sparse
+// module is included where sparse matrices are built (src/core/integrators/implicit_system.h),
+// not in every unit that includes a scene.
 #pragma once
 
 #include <Eigen/Core>
-#include <Eigen/SparseCore>
 
 #include <vector>
 
@@ -11,8 +12,22 @@ namespace fosssim {
 using Vec2 = Eigen::Vector2d;   ///< a point, displacement or force in the plane
 using Mat2 = Eigen::Matrix2d;   ///< a 2x2 block of a Jacobian
 using VecX = Eigen::VectorXd;   ///< a flat per-degree-of-freedom vector: size 2N, particle i at rows 2i, 2i+1
-using SparseMat = Eigen::SparseMatrix<double>;
-using Triplets = std::vector<Eigen::Triplet<double>>;
+
+/// One entry (row, col, value) of a sparse matrix under construction; entries at the same
+/// position are summed. It has Eigen::Triplet's interface (row(), col(), value()), so that
+/// SparseMatrix::setFromTriplets takes a list of them, without Eigen/SparseCore here.
+class Triplet {
+ public:
+  Triplet(int row, int col, double value) : row_(row), col_(col), value_(value) {}
+  int row() const { return row_; }
+  int col() const { return col_; }
+  double value() const { return value_; }
+
+ private:
+  int row_, col_;
+  double value_;
+};
+using Triplets = std::vector<Triplet>;
 
 /// The 2-vector of particle i inside a flat 2N vector.
 inline auto at(VecX& q, int i) { return q.segment<2>(2 * i); }

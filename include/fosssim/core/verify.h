@@ -11,13 +11,9 @@
 
 namespace fosssim {
 
-/// A pair that still collides somewhere during a step.
-struct Violation {
-  PairKind kind = PairKind::ParticleParticle;
-  int i = 0;        ///< the particle
-  int j = 0;        ///< the other particle, edge or half-plane
-  double tau = 0;   ///< first contact as a fraction of the step
-};
+/// A pair that still collides somewhere during a step: kind, i, j and tau (first contact as a
+/// fraction of the step) of the same record detection uses.
+using Violation = Collision;
 
 /// The rigid impact zone of a particle after the last step, or -1 (see Simulator::zoneOf).
 using ZoneOf = std::function<int(int particle)>;

@@ -29,8 +29,7 @@
 //  * Overflow is reported. A non-finite input, or a relative quantity that overflows
 //    before normalisation, gives CcdOutcome::Overflow (never a silent miss): the caller
 //    names the pair and the step.
-#ifndef FOSSSIM_MATH_CCD_EXACT_H
-#define FOSSSIM_MATH_CCD_EXACT_H
+#pragma once
 
 #include <cfloat>
 
@@ -38,38 +37,36 @@
 
 namespace fosssim::math {
 
-// A leading coefficient c of a polynomial sum_k c_k t^k (after normalisation) is dropped when
-// |c| <= kRelativeNegligibleCoefficient * max_k |c_k|. Why this is harmless: for t in [0, 1]
-// and n the highest power, |c t^n| <= |c| t^m for every m <= n, so the dropped term is at most
-// kRelativeNegligibleCoefficient * |c_max| t^m <= kRelativeNegligibleCoefficient * sum|c_k| t^k:
-// below the bound on the rounding error of evaluating the polynomial at that t
-// (kHornerErrorFactor * DBL_EPSILON * sum|c_k| t^k, polynomial.h). What it buys: a leading
-// coefficient that is only cancellation noise (a pair moving rigidly, a static edge) does not
-// raise the degree, and with it the number of spurious sign changes the root finder sees.
+/// A leading coefficient c of a polynomial sum_k c_k t^k (after normalisation) is dropped when
+/// |c| <= kRelativeNegligibleCoefficient * max_k |c_k|. Why this is harmless: for t in [0, 1]
+/// and n the highest power, |c t^n| <= |c| t^m for every m <= n, so the dropped term is at most
+/// kRelativeNegligibleCoefficient * |c_max| t^m <= kRelativeNegligibleCoefficient * sum|c_k| t^k:
+/// below the bound on the rounding error of evaluating the polynomial at that t
+/// (kHornerErrorFactor * DBL_EPSILON * sum|c_k| t^k, polynomial.h). What it buys: a leading
+/// coefficient that is only cancellation noise (a pair moving rigidly, a static edge) does not
+/// raise the degree, and with it the number of spurious sign changes the root finder sees.
 constexpr double kRelativeNegligibleCoefficient = 4.0 * DBL_EPSILON;
 
 enum class CcdOutcome { Miss, Hit, Overflow };
 
 struct ExactContact {
   double tau = kNever;  // first contact time in [0, 1], as a fraction of the step's motion
-  // UNIT vector at tau from particle 1 toward the other object: PP toward particle 2; PE
-  // toward the closest point of the segment (the endpoint at a cap); PH -m/|m|, toward the
-  // boundary.
+  /// UNIT vector at tau from particle 1 toward the other object: PP toward particle 2; PE
+  /// toward the closest point of the segment (the endpoint at a cap); PH -m/|m|, toward the
+  /// boundary.
   Vec2 normal = Vec2::Zero();
   double alpha = 0.0;  // PE: the closest point's parameter on the segment at tau, in [0, 1]
                        // (exactly 0 or 1 at a cap); 0 for PP and PH
 };
 
-// Detection. *hit (if not null) is written only on Hit. No heap allocation; early exits as
-// in ccd.h (approach line first, a swept-box test for PE).
+/// Detection. *hit (if not null) is written only on Hit. No heap allocation; early exits as
+/// in ccd.h (approach line first, a swept-box test for PE).
 CcdOutcome exactPP(const PPInput& in, ExactContact* hit);
-// Particle 1 (radius rv) against the CAPSULE of radius re around the segment x2-x3 (the
-// endpoint particles' own radii play no part: the caller tests them as PP pairs).
+/// Particle 1 (radius rv) against the CAPSULE of radius re around the segment x2-x3 (the
+/// endpoint particles' own radii play no part: the caller tests them as PP pairs).
 CcdOutcome exactPE(const PEInput& in, ExactContact* hit);
-// A zero normal cannot be normalised and gives Overflow like a non-finite one (the scene
-// loader rejects it, so only corrupted state gets here).
+/// A zero normal cannot be normalised and gives Overflow like a non-finite one (the scene
+/// loader rejects it, so only corrupted state gets here).
 CcdOutcome exactPH(const PHInput& in, ExactContact* hit);
 
 }  // namespace fosssim::math
-
-#endif  // FOSSSIM_MATH_CCD_EXACT_H

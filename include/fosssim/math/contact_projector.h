@@ -15,8 +15,7 @@
 // still never grows (each projection is an M-orthogonal projection onto a cone containing 0) and
 // tangential motion is still kept, but it is not the single projection of v~ onto the final
 // cone. A batch (all rows, then one solve) is exactly that single projection.
-#ifndef FOSSSIM_MATH_CONTACT_PROJECTOR_H
-#define FOSSSIM_MATH_CONTACT_PROJECTOR_H
+#pragma once
 
 #include <vector>
 
@@ -86,5 +85,3 @@ class ContactProjector {
 };
 
 }  // namespace fosssim::math
-
-#endif  // FOSSSIM_MATH_CONTACT_PROJECTOR_H

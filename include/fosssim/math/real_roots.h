@@ -10,8 +10,7 @@
 // Values within the rounding-error bound of Horner's rule count as zero (see
 // kHornerErrorFactor in polynomial.h): that is how a double root (tangent graze), whose
 // extremum computes to +-1e-17 instead of 0, is recognised as touching rather than crossing.
-#ifndef FOSSSIM_MATH_REAL_ROOTS_H
-#define FOSSSIM_MATH_REAL_ROOTS_H
+#pragma once
 
 #include <cfloat>
 #include <cmath>
@@ -20,53 +19,53 @@
 
 namespace fosssim::math {
 
-// Capacity for root lists: a degree-5 polynomial has at most 5 roots; one slot of slack
-// because snapping near-zero values to zero can, for numerically-zero polynomials, report a
-// touching root next to a crossing one.
+/// Capacity for root lists: a degree-5 polynomial has at most 5 roots; one slot of slack
+/// because snapping near-zero values to zero can, for numerically-zero polynomials, report a
+/// touching root next to a crossing one.
 constexpr int kMaxRoots = Polynomial::kMaxDegree + 1;
 
-// Stop the Newton iteration when the step is below this many ulps of the iterate: the next
-// step would only change the last bit, so the root is at full double precision.
+/// Stop the Newton iteration when the step is below this many ulps of the iterate: the next
+/// step would only change the last bit, so the root is at full double precision.
 constexpr double kRootStepUlps = 2.0;
 
-// Absolute floor of the Newton stopping step, as a fraction of tMax: roots within 1e-18*tMax
-// of each other are the same time for any simulation purpose, and the floor keeps roots at or
-// next to 0 from needing a thousand halvings to reach denormals.
+/// Absolute floor of the Newton stopping step, as a fraction of tMax: roots within 1e-18*tMax
+/// of each other are the same time for any simulation purpose, and the floor keeps roots at or
+/// next to 0 from needing a thousand halvings to reach denormals.
 constexpr double kRootAbsoluteTolerance = 1e-18;
 
-// Safety cap for the bracketed iteration; bisection alone needs at most ~64 steps on [0,1]
-// in double precision, so this is never reached in practice.
+/// Safety cap for the bracketed iteration; bisection alone needs at most ~64 steps on [0,1]
+/// in double precision, so this is never reached in practice.
 constexpr int kMaxRootIterations = 200;
 
-// Roots of a*t^2 + b*t + c (a != 0), ascending. Returns 0, 1 (a double root: the
-// discriminant is within its rounding error of 0) or 2. Uses q = -(b + sign(b)sqrt(D))/2,
-// roots q/a and c/q, which never subtracts nearly equal numbers.
+/// Roots of a*t^2 + b*t + c (a != 0), ascending. Returns 0, 1 (a double root: the
+/// discriminant is within its rounding error of 0) or 2. Uses q = -(b + sign(b)sqrt(D))/2,
+/// roots q/a and c/q, which never subtracts nearly equal numbers.
 int quadraticRoots(double a, double b, double c, double roots[2]);
 
-// When p(tMax) is numerically zero, moves the root closest to tMax onto tMax exactly (the
-// closed forms for degrees 1 and 2 may land an ulp away, which would decide whether a root
-// exactly at the end of the step is inside it; degree >= 3 roots come out snapped already).
+/// When p(tMax) is numerically zero, moves the root closest to tMax onto tMax exactly (the
+/// closed forms for degrees 1 and 2 may land an ulp away, which would decide whether a root
+/// exactly at the end of the step is inside it; degree >= 3 roots come out snapped already).
 void snapRootToEnd(const Polynomial& p, double tMax, double* roots, int count);
 
-// Sorted, distinct real roots of p in the closed interval [0, tMax] (tMax > 0). Roots of
-// even multiplicity (touching points) are included. Returns the count. The zero polynomial
-// and nonzero constants have no isolated roots: 0 is returned.
+/// Sorted, distinct real roots of p in the closed interval [0, tMax] (tMax > 0). Roots of
+/// even multiplicity (touching points) are included. Returns the count. The zero polynomial
+/// and nonzero constants have no isolated roots: 0 is returned.
 int realRootsInInterval(const Polynomial& p, double tMax, double roots[kMaxRoots]);
 
-// The unique root of p in (lo, hi), given fLo = p(lo) and fHi = p(hi) nonzero with opposite
-// signs. Safeguarded Newton: a Newton step that leaves the bracket or fails to halve the
-// step of two iterations ago is replaced by bisection, so convergence is guaranteed and
-// quadratic near a simple root.
+/// The unique root of p in (lo, hi), given fLo = p(lo) and fHi = p(hi) nonzero with opposite
+/// signs. Safeguarded Newton: a Newton step that leaves the bracket or fails to halve the
+/// step of two iterations ago is replaced by bisection, so convergence is guaranteed and
+/// quadratic near a simple root.
 double bracketedRoot(const Polynomial& p, double lo, double hi, double fLo, double fHi);
 
-// p(t) with values inside the Horner rounding-error bound snapped to exactly 0.
+/// p(t) with values inside the Horner rounding-error bound snapped to exactly 0.
 double evaluateSnapped(const Polynomial& p, double t);
 
-// Bernstein coefficients of p on [0, tMax] (degree n: n+1 values, b[0] = p(0),
-// b[n] ~ p(tMax)). Returns n. p must be nonzero.
+/// Bernstein coefficients of p on [0, tMax] (degree n: n+1 values, b[0] = p(0),
+/// b[n] ~ p(tMax)). Returns n. p must be nonzero.
 int bernsteinCoefficients(const Polynomial& p, double tMax, double b[Polynomial::kMaxCoeffs]);
 
-// Number of sign changes in b[0..count-1], exact zeros skipped.
+/// Number of sign changes in b[0..count-1], exact zeros skipped.
 int signVariations(const double* b, int count);
 
 // ---- The reference simulator's roots of degree 1 and 2 (IntervalRule::Reference, --compat)
@@ -86,22 +85,22 @@ int signVariations(const double* b, int count);
 // continuous-time logs (51100 pairs, 64 collisions) through this emulation reproduces every
 // recorded collision and its time bit for bit.
 
-// Imaginary parts with magnitude below this make a root real (the reference's eps).
+/// Imaginary parts with magnitude below this make a root real (the reference's eps).
 constexpr double kReferenceImaginaryTolerance = 1e-8;
 
-// The real roots of p (degree 1 or 2, finite coefficients) as the reference computes them,
-// ascending, duplicates kept (a complex pair with a tiny imaginary part gives its real part
-// twice). Returns the count, 0 to 2. When every root is at 0 (p = a t^k) the port reports
-// failure and the reference sees no roots at all: 0 is returned then too.
+/// The real roots of p (degree 1 or 2, finite coefficients) as the reference computes them,
+/// ascending, duplicates kept (a complex pair with a tiny imaginary part gives its real part
+/// twice). Returns the count, 0 to 2. When every root is at 0 (p = a t^k) the port reports
+/// failure and the reference sees no roots at all: 0 is returned then too.
 int referenceRealRoots(const Polynomial& p, double roots[2]);
 
 // ---- inline definitions (these run in every PP and PH query)
 
 inline int quadraticRoots(double a, double b, double c, double roots[2]) {
   const double disc = b * b - 4.0 * a * c;
-  // The discriminant is computed from products of size b^2 and 4|ac|; below its rounding
-  // error it carries no sign information, and the vertex value -D/(4a) is numerically zero:
-  // a double root (the same rule as evaluateSnapped applies to higher degrees).
+  /// The discriminant is computed from products of size b^2 and 4|ac|; below its rounding
+  /// error it carries no sign information, and the vertex value -D/(4a) is numerically zero:
+  /// a double root (the same rule as evaluateSnapped applies to higher degrees).
   const double discError = kHornerErrorFactor * DBL_EPSILON * (b * b + 4.0 * std::fabs(a * c));
   if (std::fabs(disc) <= discError) {
     roots[0] = -b / (2.0 * a);
@@ -137,5 +136,3 @@ inline double evaluateSnapped(const Polynomial& p, double t) {
 }
 
 }  // namespace fosssim::math
-
-#endif  // FOSSSIM_MATH_REAL_ROOTS_H

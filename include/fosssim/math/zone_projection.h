@@ -28,8 +28,7 @@
 // 2% of random over-constrained test zones do. The result then has converged = false and the
 // residual reached; its velocities are still feasible-leaning and never add energy, but contacts
 // may still approach: the caller's fallback (the rigid zone) takes over.
-#ifndef FOSSSIM_MATH_ZONE_PROJECTION_H
-#define FOSSSIM_MATH_ZONE_PROJECTION_H
+#pragma once
 
 #include <vector>
 
@@ -98,5 +97,3 @@ bool projectByEnumeration(const std::vector<double>& inverseMass, const std::vec
                           std::vector<Vec2>& v);
 
 }  // namespace fosssim::math
-
-#endif  // FOSSSIM_MATH_ZONE_PROJECTION_H

@@ -18,12 +18,9 @@ double seconds(std::chrono::steady_clock::time_point a, std::chrono::steady_cloc
 
 /// Whether collision c involves a particle marked in `mark` (an edge's endpoints included).
 bool involvesMarked(const Scene& scene, const Collision& c, const std::vector<char>& mark) {
-  if (mark[c.i]) return true;
-  switch (c.kind) {
-    case PairKind::ParticleParticle: return mark[c.j] != 0;
-    case PairKind::ParticleEdge: return mark[scene.edges[c.j].i] || mark[scene.edges[c.j].j];
-    case PairKind::ParticleHalfPlane: return false;
-  }
+  const PairParticles pair = pairParticles(scene, c.kind, c.i, c.j);
+  for (int k = 0; k < pair.count; ++k)
+    if (mark[pair.p[k]]) return true;
   return false;
 }
 
@@ -40,24 +37,11 @@ bool CollisionSearch::prepare(const Scene& scene, const VecX& qs, const VecX& qe
   return true;
 }
 
-int CollisionSearch::collectRows(const Scene& scene, int first, int end, std::vector<uint64_t>& keys,
-                                 std::vector<int>& row) const {
-  const int planes = static_cast<int>(scene.halfplanes.size());
-  const bool edges = !scene.edges.empty();
+int CollisionSearch::collectRows(int first, int end, std::vector<uint64_t>& keys, std::vector<int>& row) const {
   keys.clear();
   int i = first;
-  for (; i < end && keys.size() < blockSize_; ++i) {
-    row.clear();
-    candidates_.particlesOf(i, -1, row);
-    for (int j : row) keys.push_back(pairKey(i, PairKind::ParticleParticle, j));
-    if (edges) {
-      row.clear();
-      candidates_.edgesOf(i, -1, row);
-      for (int e : row) keys.push_back(pairKey(i, PairKind::ParticleEdge, e));
-    }
-    for (int h = 0; h < planes; ++h)
-      if (candidates_.nearPlane(i, h)) keys.push_back(pairKey(i, PairKind::ParticleHalfPlane, h));
-  }
+  for (; i < end && keys.size() < blockSize_; ++i)
+    candidates_.forEachInRow(i, row, [&](PairKind kind, int other) { keys.push_back(pairKey(i, kind, other)); });
   return i;
 }
 
@@ -104,7 +88,7 @@ void CollisionSearch::detectAll(const Scene& scene, const VecX& qs, const VecX& 
     for (int row = first; row < end;) {
       {
         const StepTimer timer(ctx.timing, w.stats.broadPhase);
-        row = collectRows(scene, row, end, w.keys, w.row);
+        row = collectRows(row, end, w.keys, w.row);
       }
       const StepTimer timer(ctx.timing, w.stats.narrowPhase);
       for (uint64_t key : w.keys)
@@ -192,7 +176,7 @@ void CollisionSearch::sweep(const Scene& scene, const VecX& qs, VecX& qe, StepCo
   for (;;) {
     if (pos == keys_.size() && row < scene.numParticles()) {
       const auto collectStart = ctx.timing ? std::chrono::steady_clock::now() : walkStart;
-      row = collectRows(scene, row, scene.numParticles(), keys_, row_);
+      row = collectRows(row, scene.numParticles(), keys_, row_);
       pos = 0;
       if (ctx.timing) rebroad += seconds(collectStart, std::chrono::steady_clock::now());
       continue;
@@ -206,13 +190,9 @@ void CollisionSearch::sweep(const Scene& scene, const VecX& qs, VecX& qe, StepCo
       extra_.pop_back();
     }
     if (!query(scene, qs, qe, key, hit, *ctx.stats)) continue;
-    int particles[3] = {hit.i, hit.j, -1};
-    int count = hit.kind == PairKind::ParticleHalfPlane ? 1 : 2;
-    if (hit.kind == PairKind::ParticleEdge) {
-      particles[1] = scene.edges[hit.j].i;
-      particles[2] = scene.edges[hit.j].j;
-      count = 3;
-    }
+    const PairParticles pair = pairParticles(scene, hit.kind, hit.i, hit.j);
+    const int* particles = pair.p;
+    const int count = pair.count;
     Vec2 before[3];
     for (int k = 0; k < count; ++k) before[k] = at(qe, particles[k]);
     onHit(hit);

@@ -63,7 +63,7 @@ class CollisionSearch {
   bool prepare(const Scene& scene, const VecX& qs, const VecX& qe, StepContext& ctx);
   /// Replaces `keys` with the candidate keys of the rows from `first` on (before `end`), in
   /// order, stopping after the row that brings them past a block's worth; returns the next row.
-  int collectRows(const Scene& scene, int first, int end, std::vector<uint64_t>& keys, std::vector<int>& row) const;
+  int collectRows(int first, int end, std::vector<uint64_t>& keys, std::vector<int>& row) const;
   /// The narrow-phase query of one candidate.
   bool query(const Scene& scene, const VecX& qs, const VecX& qe, uint64_t key, Collision& hit, StepStats& stats) const;
   void referenceSweep(const Scene& scene, const VecX& qs, const VecX& qe, StepContext& ctx,

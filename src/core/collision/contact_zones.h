@@ -55,9 +55,10 @@ constexpr double kZoneClosingFraction = 2e-10;
 /// adds all its rows; a disk landing on a pile, a few). A resting pile jammed into a V (whose
 /// answer is v = 0) contracts slowly under Gauss-Seidel; a solve that stops early keeps what it
 /// reached (safe: no energy gained) and the contacts still closing come back as events, which
-/// continue it from there: the cost follows what joins, not the size of the pile. Measured on the
-/// benchmark's piles and the flow tests: 2000 costs 4-8 times as much as 300 for the same flow;
-/// 100 is faster again but lets jammed zones fall back to rigid motion in a quarter of the steps.
+/// continue it from there: the cost follows what joins, not the size of the pile. Chosen on the
+/// benchmark's piles and the flow tests (scripts/bench): a budget several times larger costs
+/// several times as much for the same flow; a much smaller one lets jammed zones fall back to
+/// rigid motion in many steps.
 constexpr long kZoneUpdatesPerRow = 300;
 
 /// A solve looks for new neighbours only around particles whose rate it changed by more than

@@ -5,16 +5,16 @@
 namespace fosssim {
 namespace {
 
-void append(const math::PolyLog& polys, PolynomialLog* log) {
+void append(const math::PairPolynomials& polys, PolynomialLog* log) {
   for (int k = 0; k < polys.count; ++k) log->add(polys.polys[k].c.data(), polys.polys[k].size);
 }
 
 /// Runs a CCD query, logging its polynomials when asked. Without a log nothing else is built:
-/// the scratch PolyLog (four zeroed polynomials) would cost as much as a particle-particle query.
+/// the scratch PairPolynomials (four zeroed polynomials) would rival a particle-particle query.
 template <class Input, class Detect>
 bool query(const Input& in, math::Contact& contact, PolynomialLog* log, Detect&& detect) {
-  if (!log || !log->enabled()) return detect(in, &contact, static_cast<math::PolyLog*>(nullptr));
-  math::PolyLog polys;
+  if (!log || !log->enabled()) return detect(in, &contact, static_cast<math::PairPolynomials*>(nullptr));
+  math::PairPolynomials polys;
   const bool hit = detect(in, &contact, &polys);
   append(polys, log);
   return hit;

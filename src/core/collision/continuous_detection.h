@@ -10,16 +10,6 @@
 
 namespace fosssim {
 
-/// A pair found colliding during a step.
-struct Collision {
-  PairKind kind = PairKind::ParticleParticle;
-  int i = 0;           ///< the particle
-  int j = 0;           ///< the other particle, the edge or the half-plane
-  double tau = 0;      ///< first contact as a fraction of the step, in [0, 1]
-  Vec2 n = Vec2::Zero();  ///< contact vector at tau, from particle i to the other object
-  double alpha = 0;    ///< particle-edge: the closest point's parameter at tau, clamped to [0, 1]
-};
-
 class ContinuousDetector {
  public:
   explicit ContinuousDetector(const math::DetectionRules& rules) : rules_(rules) {}

@@ -68,22 +68,14 @@ Status EventHandler::handle(const Scene& scene, const State& start, State& state
 // Rows are collected in blocks of candidates and then queried: two clock reads per block, not per
 // particle (with timing on, per-row timers cost more than the sparse scenes' narrow phase).
 Status EventHandler::detectAll(const Scene& scene, StepContext& ctx) {
-  const int n = scene.numParticles(), planes = static_cast<int>(scene.halfplanes.size());
+  const int n = scene.numParticles();
   StepStats& stats = *ctx.stats;
   for (int i = 0; i < n;) {
     keys_.clear();
     {
       const StepTimer timer(ctx.timing, stats.broadPhase);
-      for (; i < n && keys_.size() < CollisionSearch::kKeysPerBlock; ++i) {
-        row_.clear();
-        candidates_.particlesOf(i, -1, row_);
-        for (int j : row_) keys_.push_back(pairKey(i, PairKind::ParticleParticle, j));
-        row_.clear();
-        if (!scene.edges.empty()) candidates_.edgesOf(i, -1, row_);
-        for (int e : row_) keys_.push_back(pairKey(i, PairKind::ParticleEdge, e));
-        for (int h = 0; h < planes; ++h)
-          if (candidates_.nearPlane(i, h)) keys_.push_back(pairKey(i, PairKind::ParticleHalfPlane, h));
-      }
+      for (; i < n && keys_.size() < CollisionSearch::kKeysPerBlock; ++i)
+        candidates_.forEachInRow(i, row_, [&](PairKind kind, int other) { keys_.push_back(pairKey(i, kind, other)); });
     }
     const StepTimer timer(ctx.timing, stats.narrowPhase);
     for (uint64_t key : keys_)

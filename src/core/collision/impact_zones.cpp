@@ -8,6 +8,8 @@
 // at one point) only translates.
 #include "impact_zones.h"
 
+#include "pair_candidates.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -47,13 +49,9 @@ bool ImpactZones::unite(int a, int b) {
 }
 
 bool ImpactZones::add(const Scene& scene, const Collision& c) {
-  int particles[3] = {c.i, c.j, 0};
-  int count = c.kind == PairKind::ParticleParticle ? 2 : 1;
-  if (c.kind == PairKind::ParticleEdge) {
-    particles[1] = scene.edges[c.j].i;
-    particles[2] = scene.edges[c.j].j;
-    count = 3;
-  }
+  const PairParticles pair = pairParticles(scene, c.kind, c.i, c.j);
+  const int* particles = pair.p;
+  const int count = pair.count;
   bool changed = false, immovable = c.kind == PairKind::ParticleHalfPlane;
   for (int k = 0; k < count; ++k) {
     changed = touch(particles[k]) || changed;

@@ -36,8 +36,6 @@ bool gridRadii(const Scene& scene) {
   return true;
 }
 
-thread_local PairSearchSettings currentSettings;
-
 }  // namespace
 
 Box PairCandidates::filed(const Box& b) const {
@@ -45,12 +43,6 @@ Box PairCandidates::filed(const Box& b) const {
   const double grow = slack_ * std::max(b.x1 - b.x0, b.y1 - b.y0);
   return Box{b.x0 - grow, b.y0 - grow, b.x1 + grow, b.y1 + grow};
 }
-
-const PairSearchSettings& currentPairSearch() { return currentSettings; }
-PairSearchScope::PairSearchScope(const PairSearchSettings& settings) : previous_(currentSettings) {
-  currentSettings = settings;
-}
-PairSearchScope::~PairSearchScope() { currentSettings = previous_; }
 
 double coordinateScale(const Scene& scene, const VecX& a, const VecX& b) {
   if (!a.allFinite() || !b.allFinite()) return std::numeric_limits<double>::infinity();

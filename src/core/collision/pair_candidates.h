@@ -39,24 +39,26 @@ inline int keyParticle(uint64_t key) { return static_cast<int>(key >> 33); }
 inline PairKind keyKind(uint64_t key) { return static_cast<PairKind>((key >> 31) & 3u); }
 inline int keyOther(uint64_t key) { return static_cast<int>(key & 0x7FFFFFFFu); }
 
-/// How the step being taken on this thread searches pairs (HandlerOptions::allPairs, threads).
-/// Simulator::step sets it for its duration; the penalty force reads it (a force sees only the
-/// scene and the state, so this is its only way to hear of the options). Defaults outside steps.
-struct PairSearchSettings {
-  bool allPairs = false;
-  int threads = 1;
+/// The particles a pair moves: the particle, then the other particle or the edge's endpoints
+/// (one particle for a half-plane).
+struct PairParticles {
+  int count = 0;
+  int p[3] = {0, 0, 0};
 };
-const PairSearchSettings& currentPairSearch();
-class PairSearchScope {
- public:
-  explicit PairSearchScope(const PairSearchSettings& settings);
-  ~PairSearchScope();
-  PairSearchScope(const PairSearchScope&) = delete;
-  PairSearchScope& operator=(const PairSearchScope&) = delete;
 
- private:
-  PairSearchSettings previous_;
-};
+inline PairParticles pairParticles(const Scene& scene, PairKind kind, int i, int other) {
+  PairParticles out;
+  out.p[0] = i;
+  switch (kind) {
+    case PairKind::ParticleParticle: out.p[1] = other, out.count = 2; break;
+    case PairKind::ParticleEdge: out.p[1] = scene.edges[other].i, out.p[2] = scene.edges[other].j, out.count = 3; break;
+    case PairKind::ParticleHalfPlane: out.count = 1; break;
+  }
+  return out;
+}
+inline PairParticles pairParticles(const Scene& scene, uint64_t key) {
+  return pairParticles(scene, keyKind(key), keyParticle(key), keyOther(key));
+}
 
 class PairCandidates {
  public:
@@ -79,6 +81,24 @@ class PairCandidates {
   /// Whether particle i may reach half-plane h.
   bool nearPlane(int i, int h) const {
     return allPairs_ || nearHalfPlane(*scene_, *qs_, *qe_, i, h, scale_, 2 * extra_);
+  }
+
+  /// Visits row i's candidates in the reference's order: visit(kind, other) for the particles
+  /// j > i, then the edges not incident to i, then the half-planes i may reach (every
+  /// half-plane with `everyPlane`), each ascending. `row` is scratch storage.
+  template <class Visit>
+  void forEachInRow(int i, std::vector<int>& row, Visit&& visit, bool everyPlane = false) const {
+    row.clear();
+    particlesOf(i, -1, row);
+    for (int j : row) visit(PairKind::ParticleParticle, j);
+    if (!scene_->edges.empty()) {
+      row.clear();
+      edgesOf(i, -1, row);
+      for (int e : row) visit(PairKind::ParticleEdge, e);
+    }
+    const int planes = static_cast<int>(scene_->halfplanes.size());
+    for (int h = 0; h < planes; ++h)
+      if (everyPlane || nearPlane(i, h)) visit(PairKind::ParticleHalfPlane, h);
   }
 
   /// Particle p's end position changed (qe as given at the build, changed in place).

@@ -13,24 +13,6 @@
 
 namespace fosssim {
 
-/// The particles a pair moves: the particle, then the other particle or the edge's endpoints.
-struct PairParticles {
-  int count = 0;
-  int p[3] = {0, 0, 0};
-};
-
-inline PairParticles pairParticles(const Scene& scene, uint64_t key) {
-  PairParticles out;
-  const int i = keyParticle(key), other = keyOther(key);
-  out.p[0] = i;
-  switch (keyKind(key)) {
-    case PairKind::ParticleParticle: out.p[1] = other, out.count = 2; break;
-    case PairKind::ParticleEdge: out.p[1] = scene.edges[other].i, out.p[2] = scene.edges[other].j, out.count = 3; break;
-    case PairKind::ParticleHalfPlane: out.count = 1; break;
-  }
-  return out;
-}
-
 /// Queries pair `key` over an interval of the step. motion(p, x, d) gives particle p's position
 /// x at the interval's start and its displacement d over the interval. On a hit, `contact`
 /// holds the time as a fraction of the interval, the unit normal from the particle toward the

@@ -117,17 +117,11 @@ std::vector<Violation> EventHandler::unresolved(const Scene& scene, const VecX& 
     }
   };
   std::vector<int> row;
-  const int n = scene.numParticles(), planes = static_cast<int>(scene.halfplanes.size());
-  for (int i = 0; i < n && (limit == 0 || found.size() < limit); ++i) {
-    row.clear();
-    candidates.particlesOf(i, -1, row);
-    for (int j : row) check(pairKey(i, PairKind::ParticleParticle, j));
-    row.clear();
-    if (!scene.edges.empty()) candidates.edgesOf(i, -1, row);
-    for (int e : row) check(pairKey(i, PairKind::ParticleEdge, e));
-    // The corners' box is not the motion: test every half-plane (they are few).
-    for (int h = 0; h < planes; ++h) check(pairKey(i, PairKind::ParticleHalfPlane, h));
-  }
+  const int n = scene.numParticles();
+  // The corners' box is not the motion: every half-plane is tested (they are few).
+  for (int i = 0; i < n && (limit == 0 || found.size() < limit); ++i)
+    candidates.forEachInRow(i, row, [&](PairKind kind, int other) { check(pairKey(i, kind, other)); },
+                            /*everyPlane=*/true);
   if (limit > 0 && found.size() > limit) found.resize(limit);
   return found;
 }

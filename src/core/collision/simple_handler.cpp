@@ -5,7 +5,7 @@
 #include "collision_handlers.h"
 #include "impulse_response.h"
 
-#include "fosssim/core/pair_geometry.h"
+#include "fosssim/math/geometry.h"
 
 #include <algorithm>
 
@@ -33,16 +33,8 @@ Status SimpleHandler::handle(const Scene& scene, const State&, State& state, Ste
     candidates_.build(scene, x, x);
     if (allPairs_) candidates_.forceAllPairs();
     keys_.clear();
-    for (int i = 0; i < scene.numParticles(); ++i) {
-      row_.clear();
-      candidates_.particlesOf(i, -1, row_);
-      for (int j : row_) keys_.push_back(pairKey(i, PairKind::ParticleParticle, j));
-      row_.clear();
-      candidates_.edgesOf(i, -1, row_);
-      for (int e : row_) keys_.push_back(pairKey(i, PairKind::ParticleEdge, e));
-      for (int h = 0; h < static_cast<int>(scene.halfplanes.size()); ++h)
-        if (candidates_.nearPlane(i, h)) keys_.push_back(pairKey(i, PairKind::ParticleHalfPlane, h));
-    }
+    for (int i = 0; i < scene.numParticles(); ++i)
+      candidates_.forEachInRow(i, row_, [&](PairKind kind, int other) { keys_.push_back(pairKey(i, kind, other)); });
   }
   const StepTimer timer(ctx.timing, ctx.stats->narrowPhase);  // responses are interleaved: counted here too
   ctx.stats->candidatePairs += static_cast<long>(keys_.size());
@@ -65,8 +57,8 @@ Status SimpleHandler::handle(const Scene& scene, const State&, State& state, Ste
         const int e = other;
         const Edge& edge = scene.edges[e];
         const Vec2 x2 = at(x, edge.i), x3 = at(x, edge.j);
-        const double alpha = std::clamp(segmentParameter(xi, x2, x3), 0.0, 1.0);
-        const Vec2 n = x2 + alpha * (x3 - x2) - xi;
+        double alpha = 0;
+        const Vec2 n = math::segmentContactVector(xi, x2, x3, &alpha);
         const double reach = scene.radius[i] + edge.radius;
         const Vec2 v2 = at(v, edge.i), v3 = at(v, edge.j);
         if (n.squaredNorm() < reach * reach && (at(v, i) - v2 - alpha * (v3 - v2)).dot(n) > 0.0) {
@@ -78,7 +70,7 @@ Status SimpleHandler::handle(const Scene& scene, const State&, State& state, Ste
       case PairKind::ParticleHalfPlane: {
         const int h = other;
         const HalfPlane& plane = scene.halfplanes[h];
-        const Vec2 n = halfPlaneContact(xi, plane.point, plane.normal);
+        const Vec2 n = math::halfPlaneContactVectorUnit(xi, plane.point, plane.normal);
         const double r = scene.radius[i];
         if (n.squaredNorm() < r * r && at(v, i).dot(n) > 0.0) {
           record(PairKind::ParticleHalfPlane, i, h, n);

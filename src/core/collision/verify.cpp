@@ -16,17 +16,14 @@ std::vector<Violation> unresolvedCollisions(const Scene& scene, const VecX& star
   search.detectAll(scene, start, end, ctx, collisions);
   auto sameZone = [&](const Collision& c) {
     const int z = zoneOf ? zoneOf(c.i) : -1;
-    if (z < 0) return false;
-    switch (c.kind) {
-      case PairKind::ParticleParticle: return zoneOf(c.j) == z;
-      case PairKind::ParticleEdge:
-        return zoneOf(scene.edges[c.j].i) == z && zoneOf(scene.edges[c.j].j) == z;
-      case PairKind::ParticleHalfPlane: return false;
-    }
-    return false;
+    const PairParticles pair = pairParticles(scene, c.kind, c.i, c.j);
+    if (z < 0 || pair.count == 1) return false;  // a half-plane is in no zone
+    for (int k = 1; k < pair.count; ++k)
+      if (zoneOf(pair.p[k]) != z) return false;
+    return true;
   };
   for (const Collision& c : collisions)
-    if ((limit == 0 || found.size() < limit) && !sameZone(c)) found.push_back(Violation{c.kind, c.i, c.j, c.tau});
+    if ((limit == 0 || found.size() < limit) && !sameZone(c)) found.push_back(c);
   return found;
 }
 

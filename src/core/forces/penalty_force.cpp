@@ -9,8 +9,8 @@
 // compares velocities to 1e-10, and contact-heavy scenes amplify last-bit differences.
 #include "fosssim/core/forces.h"
 
-#include "../collision/pair_candidates.h"
-#include "../collision/parallel_rows.h"
+#include "core/collision/parallel_rows.h"
+#include "core/forces/penalty_scratch.h"
 
 #include "fosssim/math/geometry.h"
 
@@ -20,40 +20,21 @@
 namespace fosssim {
 namespace {
 
-/// One pair within reach: n from particle i to the other object, the gap |n| - r1 - r2 - h < 0,
-/// and who takes the opposite gradient (particle a; or edge a-b at alpha; or nobody, a = -1).
-struct PenaltyPair {
-  int i;
-  Vec2 n;
-  double length, gap;
-  int a, b;
-  double alpha;
-};
-
 /// Visits every pair within reach, in the reference's order (for each particle i: particles
 /// j > i, edges not incident to i, half-planes). The broad phase proposes the pairs whose boxes
 /// (grown by the radius, half the thickness and the exactness margin) meet, in that order; the
 /// test |n| < r1 + r2 + h below is the reference's, so exactly the same pairs are visited in the
 /// same order, and the gradient sums come out the same to the last bit.
 template <class Visit>
-void forEachPenaltyPair(const Scene& scene, const VecX& x, double thickness, Visit&& visit) {
-  // The force is const and may be shared: scratch storage per calling thread, reused from call
-  // to call. (Named through plain references: a lambda running on a worker thread would see the
-  // worker's own thread_local objects.)
-  struct Scratch {
-    PairCandidates candidates;
-    std::vector<std::vector<int>> rows;
-    std::vector<std::vector<PenaltyPair>> found;
-  };
-  thread_local Scratch scratch;
+void forEachPenaltyPair(const Scene& scene, const VecX& x, double thickness, ForceContext& context, Visit&& visit) {
+  PenaltyScratch& scratch = context.penaltyScratch();
   PairCandidates& candidates = scratch.candidates;
   std::vector<std::vector<int>>& rows = scratch.rows;
   std::vector<std::vector<PenaltyPair>>& found = scratch.found;
-  const int n = scene.numParticles();
-  const PairSearchSettings& settings = currentPairSearch();
+  const int n = scene.numParticles(), threads = context.threads();
   // A negative thickness shrinks the reach; the boxes are then simply not widened.
   candidates.build(scene, x, x, std::max(0.0, 0.5 * thickness));
-  if (settings.allPairs) candidates.forceAllPairs();
+  if (context.allPairs()) candidates.forceAllPairs();
   // Rows [first, end), each pair within reach handed to `take`.
   auto scan = [&](int first, int end, std::vector<int>& row, auto&& take) {
     auto consider = [&](int i, const Vec2& d, double r1, double r2, int a, int b, double alpha) {
@@ -63,25 +44,28 @@ void forEachPenaltyPair(const Scene& scene, const VecX& x, double thickness, Vis
     for (int i = first; i < end; ++i) {
       const Vec2 xi = at(x, i);
       const double ri = scene.radius[i];
-      row.clear();
-      candidates.particlesOf(i, -1, row);
-      for (int j : row) consider(i, at(x, j) - xi, ri, scene.radius[j], j, -1, 0.0);
-      row.clear();
-      candidates.edgesOf(i, -1, row);
-      for (int k : row) {
-        const Edge& e = scene.edges[k];
-        double alpha = 0;
-        const Vec2 d = math::segmentContactVector(xi, at(x, e.i), at(x, e.j), &alpha);
-        consider(i, d, ri, e.radius, e.i, e.j, alpha);
-      }
-      for (int h = 0; h < static_cast<int>(scene.halfplanes.size()); ++h) {
-        if (!candidates.nearPlane(i, h)) continue;
-        const HalfPlane& plane = scene.halfplanes[h];
-        consider(i, math::halfPlaneContactVector(xi, plane.point, plane.normal), ri, 0.0, -1, -1, 0.0);
-      }
+      candidates.forEachInRow(i, row, [&](PairKind kind, int other) {
+        switch (kind) {
+          case PairKind::ParticleParticle:
+            consider(i, at(x, other) - xi, ri, scene.radius[other], other, -1, 0.0);
+            break;
+          case PairKind::ParticleEdge: {
+            const Edge& e = scene.edges[other];
+            double alpha = 0;
+            const Vec2 d = math::segmentContactVector(xi, at(x, e.i), at(x, e.j), &alpha);
+            consider(i, d, ri, e.radius, e.i, e.j, alpha);
+            break;
+          }
+          case PairKind::ParticleHalfPlane: {
+            const HalfPlane& plane = scene.halfplanes[other];
+            consider(i, math::halfPlaneContactVector(xi, plane.point, plane.normal), ri, 0.0, -1, -1, 0.0);
+            break;
+          }
+        }
+      });
     }
   };
-  const int ranges = rowRangesFor(n, settings.threads);
+  const int ranges = rowRangesFor(n, threads);
   if (rows.size() < static_cast<size_t>(ranges)) rows.resize(ranges), found.resize(ranges);
   if (ranges <= 1) {
     scan(0, n, rows[0], visit);
@@ -89,7 +73,7 @@ void forEachPenaltyPair(const Scene& scene, const VecX& x, double thickness, Vis
   }
   // With threads: each range of rows lists its pairs, then they are visited in row order, so
   // the sums come out exactly as with one thread.
-  forRowRanges(n, settings.threads, [&](int range, int first, int end) {
+  forRowRanges(n, threads, [&](int range, int first, int end) {
     found[range].clear();
     scan(first, end, rows[range], [&](const PenaltyPair& p) { found[range].push_back(p); });
   });
@@ -99,14 +83,25 @@ void forEachPenaltyPair(const Scene& scene, const VecX& x, double thickness, Vis
 
 }  // namespace
 
-double PenaltyForce::energy(const Scene& scene, const VecX& x, const VecX&) const {
+double PenaltyForce::energy(const Scene& scene, const VecX& x, const VecX& v) const {
+  ForceContext context;
+  return energyWith(scene, x, v, context);
+}
+
+void PenaltyForce::addGradient(const Scene& scene, const VecX& x, const VecX& v, VecX& gradE) const {
+  ForceContext context;
+  addGradientWith(scene, x, v, gradE, context);
+}
+
+double PenaltyForce::energyWith(const Scene& scene, const VecX& x, const VecX&, ForceContext& context) const {
   double e = 0;
-  forEachPenaltyPair(scene, x, thickness_, [&](const PenaltyPair& p) { e += 0.5 * k_ * p.gap * p.gap; });
+  forEachPenaltyPair(scene, x, thickness_, context, [&](const PenaltyPair& p) { e += 0.5 * k_ * p.gap * p.gap; });
   return e;
 }
 
-void PenaltyForce::addGradient(const Scene& scene, const VecX& x, const VecX&, VecX& gradE) const {
-  forEachPenaltyPair(scene, x, thickness_, [&](const PenaltyPair& p) {
+void PenaltyForce::addGradientWith(const Scene& scene, const VecX& x, const VecX&, VecX& gradE,
+                                   ForceContext& context) const {
+  forEachPenaltyPair(scene, x, thickness_, context, [&](const PenaltyPair& p) {
     if (p.length == 0.0) return;
     const Vec2 nhat = divide(p.n, p.length);
     at(gradE, p.i) -= k_ * p.gap * nhat;

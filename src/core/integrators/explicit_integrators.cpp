@@ -6,23 +6,23 @@
 
 namespace fosssim {
 
-void ExplicitForces::compute(const Scene& scene, const VecX& x, const VecX& v) {
+void ExplicitForces::compute(const Scene& scene, const VecX& x, const VecX& v, ForceContext& context) {
   acceleration.setZero(x.size());
-  accumulateGradient(scene, x, v, acceleration);
+  accumulateGradient(scene, x, v, acceleration, context);
   acceleration = -acceleration.cwiseQuotient(scene.mass);
   for (int i = 0; i < scene.numParticles(); ++i)
     if (scene.isFixed(i)) at(acceleration, i).setZero();
 }
 
-Status ExplicitEuler::step(const Scene& scene, State& state, double dt) {
-  forces_.compute(scene, state.x, state.v);
+Status ExplicitEuler::step(const Scene& scene, State& state, double dt, ForceContext& forces) {
+  forces_.compute(scene, state.x, state.v, forces);
   state.x += dt * state.v;
   state.v += dt * forces_.acceleration;
   return Status::ok();
 }
 
-Status SymplecticEuler::step(const Scene& scene, State& state, double dt) {
-  forces_.compute(scene, state.x, state.v);
+Status SymplecticEuler::step(const Scene& scene, State& state, double dt, ForceContext& forces) {
+  forces_.compute(scene, state.x, state.v, forces);
   state.v += dt * forces_.acceleration;
   state.x += dt * state.v;
   return Status::ok();

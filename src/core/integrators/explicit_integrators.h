@@ -8,12 +8,13 @@ namespace fosssim {
 /// F/m at (x, v) with fixed particles' rows zeroed; kept as a member to reuse its storage.
 struct ExplicitForces {
   VecX acceleration;  ///< 2N
-  void compute(const Scene& scene, const VecX& x, const VecX& v);
+  void compute(const Scene& scene, const VecX& x, const VecX& v, ForceContext& context);
 };
 
 class ExplicitEuler final : public Integrator {
  public:
-  Status step(const Scene& scene, State& state, double dt) override;
+  using Integrator::step;
+  Status step(const Scene& scene, State& state, double dt, ForceContext& forces) override;
 
  private:
   ExplicitForces forces_;
@@ -21,7 +22,8 @@ class ExplicitEuler final : public Integrator {
 
 class SymplecticEuler final : public Integrator {
  public:
-  Status step(const Scene& scene, State& state, double dt) override;
+  using Integrator::step;
+  Status step(const Scene& scene, State& state, double dt, ForceContext& forces) override;
 
  private:
   ExplicitForces forces_;

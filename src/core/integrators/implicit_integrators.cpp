@@ -32,10 +32,10 @@ std::string shortNumber(double value) {
 }  // namespace
 
 Status ImplicitSystem::assemble(const Scene& scene, const VecX& x, const VecX& v, double h,
-                                const VecX& dvCurrent) {
+                                const VecX& dvCurrent, ForceContext& forces) {
   // Right-hand side h F - M dv.
   rhs_.setZero(x.size());
-  accumulateGradient(scene, x, v, rhs_);
+  accumulateGradient(scene, x, v, rhs_, forces);
   rhs_ = -h * rhs_ - scene.mass.cwiseProduct(dvCurrent);
 
   jacobianX_.clear();
@@ -95,14 +95,14 @@ const VecX& ImplicitSystem::solve() {
   return delta_;
 }
 
-Status ImplicitEuler::step(const Scene& scene, State& state, double dt) {
+Status ImplicitEuler::step(const Scene& scene, State& state, double dt, ForceContext& forces) {
   if (state.x.size() == 0) return Status::ok();  // nothing to solve (and no empty factorisation)
   dv_.setZero(state.v.size());
   dx_ = dt * state.v;
   for (int iteration = 1;; ++iteration) {
     xTrial_ = state.x + dx_;
     vTrial_ = state.v + dv_;
-    if (Status s = system_.assemble(scene, xTrial_, vTrial_, dt, dv_); !s) return s;
+    if (Status s = system_.assemble(scene, xTrial_, vTrial_, dt, dv_, forces); !s) return s;
     const VecX& delta = system_.solve();
     dv_ += delta;
     dx_ = dt * (state.v + dv_);
@@ -120,11 +120,11 @@ Status ImplicitEuler::step(const Scene& scene, State& state, double dt) {
   return Status::ok();
 }
 
-Status LinearizedImplicitEuler::step(const Scene& scene, State& state, double dt) {
+Status LinearizedImplicitEuler::step(const Scene& scene, State& state, double dt, ForceContext& forces) {
   if (state.x.size() == 0) return Status::ok();
   xTrial_ = state.x + dt * state.v;
   zero_.setZero(state.v.size());
-  if (Status s = system_.assemble(scene, xTrial_, state.v, dt, zero_); !s) return s;
+  if (Status s = system_.assemble(scene, xTrial_, state.v, dt, zero_, forces); !s) return s;
   state.v += system_.solve();
   state.x += dt * state.v;
   return Status::ok();

@@ -12,15 +12,19 @@
 #include "fosssim/core/integrator.h"
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
 
 namespace fosssim {
+
+using SparseMat = Eigen::SparseMatrix<double>;
 
 class ImplicitSystem {
  public:
   /// Assembles and factors the system at (x, v) for step h, with right-hand side
   /// h F(x, v) - M dvCurrent. Returns an error if the matrix is singular.
-  Status assemble(const Scene& scene, const VecX& x, const VecX& v, double h, const VecX& dvCurrent);
+  Status assemble(const Scene& scene, const VecX& x, const VecX& v, double h, const VecX& dvCurrent,
+                  ForceContext& forces);
   /// Solves for delta with the last assembled system.
   const VecX& solve();
 
@@ -42,7 +46,8 @@ class ImplicitSystem {
 
 class ImplicitEuler final : public Integrator {
  public:
-  Status step(const Scene& scene, State& state, double dt) override;
+  using Integrator::step;
+  Status step(const Scene& scene, State& state, double dt, ForceContext& forces) override;
 
  private:
   ImplicitSystem system_;
@@ -51,7 +56,8 @@ class ImplicitEuler final : public Integrator {
 
 class LinearizedImplicitEuler final : public Integrator {
  public:
-  Status step(const Scene& scene, State& state, double dt) override;
+  using Integrator::step;
+  Status step(const Scene& scene, State& state, double dt, ForceContext& forces) override;
 
  private:
   ImplicitSystem system_;

@@ -1,0 +1,118 @@
+// What a simulator reads from its scene and what it owns (include/fosssim/core/simulator.h):
+// settings once at creation, a scene finalised once, nothing shared between simulators.
+#include "fosssim/core/simulator.h"
+#include "test_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <thread>
+
+namespace fosssim {
+namespace {
+
+using testing::addBody;
+using testing::TestScene;
+
+/// Disks dropped onto a floor in a block, touching from the start: the penalty force has many
+/// pairs within reach in every step.
+TestScene penaltyPile(int side) {
+  TestScene s;
+  s.scene.integrator = "symplectic-euler";
+  s.scene.dt = 0.001;
+  s.scene.collision.type = "penalty";
+  s.scene.collision.penaltyK = 1000.0;
+  s.scene.collision.penaltyThickness = 0.01;
+  for (int row = 0; row < side; ++row)
+    for (int col = 0; col < side; ++col)
+      addBody(s, 1.0, Vec2(0.19 * col + 0.01 * (row % 2), 0.1 + 0.19 * row), Vec2(0.1 * (col % 3) - 0.1, 0), 0.1);
+  s.scene.halfplanes.push_back(HalfPlane{Vec2(0, 0), Vec2(0, 1)});
+  s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, -9.81)));
+  finalizeScene(s.scene);
+  return s;
+}
+
+int penaltyForces(const Scene& scene) {
+  int count = 0;
+  for (const auto& f : scene.forces) count += dynamic_cast<const PenaltyForce*>(f.get()) != nullptr;
+  return count;
+}
+
+TEST(SimulatorSettings, FinalizeSceneAddsTheImpliedPenaltyForceOnceAndLast) {
+  TestScene s = penaltyPile(2);  // finalised once already
+  finalizeScene(s.scene);
+  ASSERT_EQ(penaltyForces(s.scene), 1);
+  const auto* penalty = dynamic_cast<const PenaltyForce*>(s.scene.forces.back().get());
+  ASSERT_NE(penalty, nullptr) << "the penalty force is summed last, as in the reference";
+  EXPECT_EQ(penalty->stiffness(), 1000.0);
+  EXPECT_EQ(penalty->thickness(), 0.01);
+
+  for (const char* type : {"none", "simple", "continuous-time", "no-such-type"}) {
+    TestScene other = testing::spring("symplectic-euler", 0.01, 1.0);
+    other.scene.collision.type = type;
+    finalizeScene(other.scene);
+    EXPECT_EQ(penaltyForces(other.scene), 0) << type;
+  }
+  TestScene hybrid = testing::spring("symplectic-euler", 0.01, 1.0);
+  hybrid.scene.collision.type = "hybrid";
+  finalizeScene(hybrid.scene);
+  EXPECT_EQ(penaltyForces(hybrid.scene), 1);
+}
+
+TEST(SimulatorSettings, AStepRefusesSettingsChangedAfterCreation) {
+  auto changed = [](auto&& change) {
+    TestScene s = testing::spring("symplectic-euler", 0.01, 1.0);
+    std::unique_ptr<Simulator> sim;
+    EXPECT_TRUE(Simulator::create(s.scene, SimulatorOptions{}, sim).isOk());
+    EXPECT_TRUE(sim->step(s.scene, s.state).isOk());
+    change(s.scene);
+    const State before = s.state;
+    const Status st = sim->step(s.scene, s.state);
+    if (!st.isOk()) {
+      EXPECT_EQ(s.state.x, before.x) << "nothing moves on a refused step";
+      EXPECT_EQ(s.state.step, before.step);
+    }
+    return st;
+  };
+  for (const Status& st : {changed([](Scene& sc) { sc.dt = 0.02; }),
+                           changed([](Scene& sc) { sc.integrator = "explicit-euler"; }),
+                           changed([](Scene& sc) { sc.collision.cor = 0.5; }),
+                           changed([](Scene& sc) { sc.collision.maxIterations = 3; })}) {
+    EXPECT_FALSE(st.isOk());
+    EXPECT_NE(st.message().find("settings"), std::string::npos) << st.message();
+    EXPECT_NE(st.message().find("create a new simulator"), std::string::npos) << st.message();
+  }
+  EXPECT_TRUE(changed([](Scene&) {}).isOk()) << "an unchanged scene steps on";
+}
+
+/// Runs `steps` steps of a fresh pile with the given options; the end state.
+State run(int steps, const HandlerOptions& handler) {
+  TestScene s = penaltyPile(12);
+  SimulatorOptions options;
+  options.handler = handler;
+  std::unique_ptr<Simulator> sim;
+  EXPECT_TRUE(Simulator::create(s.scene, options, sim).isOk());
+  for (int k = 0; k < steps; ++k) EXPECT_TRUE(sim->step(s.scene, s.state).isOk());
+  return s.state;
+}
+
+// Each simulator owns the penalty force's pair search (its ForceContext): simulators with
+// different options stepping at the same time on different threads, one of them forcing every
+// pair, get exactly what each gets alone.
+TEST(SimulatorSettings, SimulatorsOnDifferentThreadsShareNothing) {
+  HandlerOptions grid, every;
+  every.allPairs = true;
+  const State alone = run(40, grid);
+  State first, second;
+  std::thread a([&] { first = run(40, grid); });
+  std::thread b([&] { second = run(40, every); });
+  a.join();
+  b.join();
+  EXPECT_EQ(first.x, alone.x);
+  EXPECT_EQ(first.v, alone.v);
+  EXPECT_EQ(second.x, alone.x) << "all pairs and the broad phase find the same pairs";
+  EXPECT_EQ(second.v, alone.v);
+  EXPECT_NE(alone.x, penaltyPile(12).state.x) << "the pile moved";
+}
+
+}  // namespace
+}  // namespace fosssim
