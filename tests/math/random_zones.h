@@ -1,8 +1,7 @@
 // Test helpers shared by the zone projection and ContactProjector tests: contact rows of the three
 // kinds, a random-zone generator, and the per-zone quantities the tests check (row velocity, speed
 // scale, kinetic energy, momentum).
-#ifndef FOSSSIM_TESTS_MATH_RANDOM_ZONES_H
-#define FOSSSIM_TESTS_MATH_RANDOM_ZONES_H
+#pragma once
 
 #include <algorithm>
 #include <cmath>
@@ -92,5 +91,3 @@ inline Vec2 momentum(const std::vector<double>& invMass, const std::vector<Vec2>
 }
 
 }  // namespace fosssim::math::testing
-
-#endif  // FOSSSIM_TESTS_MATH_RANDOM_ZONES_H

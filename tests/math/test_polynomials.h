@@ -1,6 +1,5 @@
 // Test helpers: polynomials from chosen roots.
-#ifndef FOSSSIM_TESTS_MATH_TEST_POLYNOMIALS_H
-#define FOSSSIM_TESTS_MATH_TEST_POLYNOMIALS_H
+#pragma once
 
 #include <initializer_list>
 #include <vector>
@@ -37,5 +36,3 @@ inline Polynomial fromRoots(double s, std::initializer_list<double> roots) {
 }
 
 }  // namespace fosssim::math::testing
-
-#endif  // FOSSSIM_TESTS_MATH_TEST_POLYNOMIALS_H
