@@ -1,4 +1,6 @@
 """Pictures and trajectory files."""
+import shutil
+
 import numpy as np
 import pytest
 
@@ -52,3 +54,13 @@ def test_trajectory_written_then_graded(assets, tmp_path):
 def test_missing_trajectory_is_reported(billiards, tmp_path):
     passed, report = fosssim.grade_trajectory(billiards, str(tmp_path / "none.bin"))
     assert not passed
+
+
+@pytest.mark.skipif(not fosssim.has_renderer or shutil.which("ffmpeg") is None, reason="needs the renderer and ffmpeg")
+def test_movie_has_a_frame_per_state(billiards, tmp_path):
+    sim = fosssim.Simulator(billiards)
+    path = tmp_path / "run.mp4"
+    frames = sim.record_movie(str(path), steps=6, every=2, width=64, height=48)
+    assert frames == 1 + 3  # the current state, then after steps 2, 4 and 6
+    assert sim.steps_taken == 6
+    assert path.stat().st_size > 0
