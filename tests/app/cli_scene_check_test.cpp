@@ -133,22 +133,8 @@ TEST(CliSceneCheck, AFloodOfWarningsIsCounted) {
   EXPECT_TRUE(contains(o.out, "100,000 warnings") || contains(o.out, "100000 warnings")) << o;
 }
 
-/// tests/data/warnings/EXPECTED: file, then fragments, tab-separated.
-std::map<std::string, std::vector<std::string>> expectations(const std::string& dir) {
-  std::map<std::string, std::vector<std::string>> table;
-  std::ifstream in(dir + "/EXPECTED");
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> fields;
-    std::stringstream s(line);
-    for (std::string f; std::getline(s, f, '\t');) fields.push_back(f);
-    table[fields.front()] = std::vector<std::string>(fields.begin() + 1, fields.end());
-  }
-  return table;
-}
-
 TEST(CliSceneCheck, EveryUnusedInputIsAWarningAndStrictMakesItAnError) {
-  const auto table = expectations(kWarnings);
+  const auto table = readExpectations(kWarnings);
   ASSERT_GE(table.size(), 8u);
   int files = 0;
   for (const auto& entry : fs::directory_iterator(kWarnings)) {
@@ -218,31 +204,14 @@ TEST(CliSceneCheck, LongParticlePathsAreBounded) {
       << refused;
 }
 
-/// Runs FOSSSim with its address space limited to `bytes` (setrlimit in the child); the exit
-/// status (or 128 + signal) and stderr.
+/// Runs FOSSSim with its address space limited to `bytes`: the exit status (or 128 + signal) and
+/// stderr.
 std::pair<int, std::string> runWithMemoryLimit(const std::vector<std::string>& args, rlim_t bytes) {
-  const std::string errPath = fs::temp_directory_path() / ("fosssim-check-mem-" + std::to_string(getpid()) + ".err");
-  std::vector<std::string> argvStrings = {FOSSSIM_EXECUTABLE};
-  argvStrings.insert(argvStrings.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& a : argvStrings) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  const pid_t pid = fork();
-  if (pid == 0) {
-    const int in = open("/dev/null", O_RDONLY), out = open("/dev/null", O_WRONLY);
-    const int err = open(errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666);
-    const rlimit limit{bytes, bytes};
-    if (in < 0 || out < 0 || err < 0 || dup2(in, 0) < 0 || dup2(out, 1) < 0 || dup2(err, 2) < 0 ||
-        setrlimit(RLIMIT_AS, &limit) != 0)
-      _exit(126);
-    execv(argv[0], argv.data());
-    _exit(127);
-  }
-  int status = 0;
-  waitpid(pid, &status, 0);
-  const std::string err = slurp(errPath);
-  fs::remove(errPath);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), err};
+  RunOptions options;
+  options.addressSpace = bytes;
+  options.timeoutSeconds = 300;
+  const Outcome o = runFosssim(args, options);
+  return {o.exited ? o.code : 128 + o.signal, o.err};
 }
 
 #if defined(__SANITIZE_ADDRESS__)

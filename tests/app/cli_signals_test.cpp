@@ -3,6 +3,7 @@
 // and where, and the exit status is 128 + the signal (130, 143). -o of a run that did not
 // complete keeps its partial name; the final name is not written.
 #include "background_run.h"
+#include "support/xvfb.h"
 
 #include <poll.h>
 
@@ -96,46 +97,13 @@ TEST_F(CliSignals, PicturesAndTheMovieCloseOnASignal) {
   EXPECT_GE(std::atol(slurp(path("probe.txt")).c_str()), 1) << slurp(path("probe.txt"));
 }
 
-/// Starts Xvfb on a display number of its own choosing (-displayfd); ":N", or empty (then `why`).
-std::string startXvfb(pid_t& pid, std::string& why) {
-  int fds[2];
-  if (pipe(fds) != 0) return (why = "cannot create a pipe", "");
-  pid = fork();
-  if (pid == 0) {
-    const int devnull = open("/dev/null", O_RDWR);
-    dup2(devnull, 0);
-    dup2(devnull, 1);
-    dup2(devnull, 2);
-    close(fds[0]);
-    const std::string fd = std::to_string(fds[1]);
-    execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "640x480x24", "-nolisten", "tcp", "-noreset",
-           static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  close(fds[1]);
-  std::string number;
-  pollfd p{fds[0], POLLIN, 0};
-  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-  while (std::chrono::steady_clock::now() < end && number.find('\n') == std::string::npos) {
-    if (poll(&p, 1, 100) > 0) {
-      char buf[32];
-      const ssize_t n = read(fds[0], buf, sizeof buf);
-      if (n <= 0) break;
-      number.append(buf, static_cast<std::size_t>(n));
-    }
-  }
-  close(fds[0]);
-  if (pid <= 0 || number.find('\n') == std::string::npos) return (why = "Xvfb did not report a display", "");
-  return ":" + number.substr(0, number.find('\n'));
-}
-
 // A window run writes -o step by step (nothing waits in a buffer: the file grows by whole
 // records while the window runs) and closes it on a signal as a headless run does.
 TEST_F(CliSignals, WindowRunsWriteAsTheyGoAndCloseOnASignal) {
   if (!onPath("Xvfb")) GTEST_SKIP() << "Xvfb is not installed (scripts/setup installs xvfb)";
   pid_t xvfb = -1;
   std::string why;
-  const std::string display = startXvfb(xvfb, why);
+  const std::string display = startXvfb(xvfb, why, "640x480x24");
   struct Reap {
     pid_t& pid;
     ~Reap() {

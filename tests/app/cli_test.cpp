@@ -256,22 +256,8 @@ TEST(Cli, HugeFiniteCoordinatesDoNotCrashAnyHandler) {
   }
 }
 
-/// tests/data/bad/EXPECTED: file, then fragments of the message, tab-separated.
-std::map<std::string, std::vector<std::string>> expectations() {
-  std::map<std::string, std::vector<std::string>> table;
-  std::ifstream in(kBad + "/EXPECTED");
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> fields;
-    std::stringstream s(line);
-    for (std::string f; std::getline(s, f, '\t');) fields.push_back(f);
-    table[fields.front()] = std::vector<std::string>(fields.begin() + 1, fields.end());
-  }
-  return table;
-}
-
 TEST(Cli, EveryBadSceneFailsWithALocatedMessage) {
-  const auto table = expectations();
+  const auto table = readExpectations(kBad);
   ASSERT_GE(table.size(), 25u) << "tests/data/bad/EXPECTED is missing or short";
   int files = 0;
   for (const auto& entry : std::filesystem::directory_iterator(kBad)) {

@@ -13,7 +13,10 @@
 #include <filesystem>
 #include <fstream>
 #include <grp.h>
+#include <map>
+#include <sstream>
 #include <string>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
@@ -38,11 +41,27 @@ inline std::ostream& operator<<(std::ostream& os, const Outcome& o) {
 struct RunOptions {
   int timeoutSeconds = 120;
   bool asNobody = false;  ///< drop root privileges to uid/gid 65534 before running
+  rlim_t addressSpace = 0;  ///< > 0: limit the child's address space to this many bytes (RLIMIT_AS)
 };
 
 inline std::string slurp(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+/// A catalogue's EXPECTED file (tests/data/bad, tests/data/warnings): per line a file name, then
+/// fragments its message must contain, tab-separated; '#' starts a comment line.
+inline std::map<std::string, std::vector<std::string>> readExpectations(const std::string& dir) {
+  std::map<std::string, std::vector<std::string>> table;
+  std::ifstream in(dir + "/EXPECTED");
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::vector<std::string> fields;
+    std::stringstream s(line);
+    for (std::string f; std::getline(s, f, '\t');) fields.push_back(f);
+    table[fields.front()] = std::vector<std::string>(fields.begin() + 1, fields.end());
+  }
+  return table;
 }
 
 /// Runs FOSSSim with `args` (stdin from /dev/null).
@@ -61,6 +80,8 @@ inline Outcome runFosssim(const std::vector<std::string>& args, const RunOptions
     const int out = open(outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666);
     const int err = open(errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666);
     if (in < 0 || out < 0 || err < 0 || dup2(in, 0) < 0 || dup2(out, 1) < 0 || dup2(err, 2) < 0) _exit(126);
+    const rlimit limit{options.addressSpace, options.addressSpace};
+    if (options.addressSpace > 0 && setrlimit(RLIMIT_AS, &limit) != 0) _exit(126);
     if (options.asNobody && (setgroups(0, nullptr) != 0 || setgid(65534) != 0 || setuid(65534) != 0)) _exit(125);
     // The build may live where nobody cannot reach it (a checkout under /root): that is a
     // limit of the test machine: the test skips, saying so.

@@ -66,7 +66,9 @@ TEST(Stats, HeadOnCollisionKeepsMomentumAndEnergyAndCountsOneContact) {
     EXPECT_NEAR(csv.at(r, "kinetic"), 153.0, 1e-9) << "row " << r;
     EXPECT_EQ(csv.at(r, "energy"), csv.at(r, "kinetic") + csv.at(r, "potential"));
     contacts += csv.at(r, "contacts");
-    if (r > 0) EXPECT_GT(csv.at(r, "cost_total"), 0.0);
+    if (r > 0) {
+      EXPECT_GT(csv.at(r, "cost_total"), 0.0);
+    }
     EXPECT_EQ(csv.at(r, "failsafe_zones"), 0.0);
   }
   EXPECT_EQ(contacts, 1.0);

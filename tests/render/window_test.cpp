@@ -4,6 +4,7 @@
 // --keep-open), a failed step shown and reported, the status line over a black floor, and the
 // keys i (SVG), p (PNG), h (help) and r (restart).
 #include "render_test_support.h"
+#include "support/xvfb.h"
 
 #include <chrono>
 #include <csignal>
@@ -60,7 +61,7 @@ struct Child {
   }
 };
 
-pid_t spawn(const std::vector<std::string>& args, int stdoutFd = -1, int extraFd = -1, const std::string& cwd = "") {
+pid_t spawn(const std::vector<std::string>& args, int stdoutFd = -1, const std::string& cwd = "") {
   std::vector<char*> argv;
   std::vector<std::string> copy = args;
   for (auto& a : copy) argv.push_back(a.data());
@@ -71,44 +72,11 @@ pid_t spawn(const std::vector<std::string>& args, int stdoutFd = -1, int extraFd
     posix_spawn_file_actions_adddup2(&actions, stdoutFd, STDOUT_FILENO);
     posix_spawn_file_actions_adddup2(&actions, stdoutFd, STDERR_FILENO);
   }
-  (void)extraFd;  // inherited as is (not close-on-exec)
   if (!cwd.empty()) posix_spawn_file_actions_addchdir_np(&actions, cwd.c_str());
   pid_t pid = -1;
   if (posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ) != 0) pid = -1;
   posix_spawn_file_actions_destroy(&actions);
   return pid;
-}
-
-/// Starts Xvfb on a display number of its own choosing (-displayfd), returns ":N" or empty.
-std::string startXvfb(Child& xvfb, std::string& why) {
-  int fds[2];
-  if (pipe(fds) != 0) {
-    why = "cannot create a pipe";
-    return "";
-  }
-  const int devnull = open("/dev/null", O_WRONLY);
-  xvfb.pid = spawn({"Xvfb", "-displayfd", std::to_string(fds[1]), "-screen", "0", "800x600x24", "-nolisten", "tcp",
-                    "-noreset"},
-                   devnull, fds[1]);
-  close(devnull);
-  close(fds[1]);
-  std::string number;
-  pollfd p{fds[0], POLLIN, 0};
-  const auto end = Clock::now() + std::chrono::seconds(20);
-  while (Clock::now() < end && number.find('\n') == std::string::npos) {
-    if (poll(&p, 1, 100) > 0) {
-      char buf[32];
-      const ssize_t n = read(fds[0], buf, sizeof buf);
-      if (n <= 0) break;
-      number.append(buf, static_cast<std::size_t>(n));
-    }
-  }
-  close(fds[0]);
-  if (xvfb.pid <= 0 || number.find('\n') == std::string::npos) {
-    why = "Xvfb did not start (no display number reported within 20 s)";
-    return "";
-  }
-  return ":" + number.substr(0, number.find('\n'));
 }
 
 /// An XWD screenshot (the format of x11-apps' xwd): 24/32-bit TrueColor, ZPixmap.
@@ -163,7 +131,7 @@ TEST(Window, StepsWithKeysAndShowsTheScene) {
                    << "xdotool and x11-apps)";
   Child xvfb;
   std::string why;
-  const std::string display = startXvfb(xvfb, why);
+  const std::string display = startXvfb(xvfb.pid, why);
   if (display.empty()) GTEST_SKIP() << "Xvfb cannot run here: " << why;
 
   TempDir tmp;
@@ -254,7 +222,7 @@ struct Display {
           d.why = std::string(tool) + " is not installed (scripts/setup installs xvfb, xdotool and x11-apps)";
           return d;
         }
-      d.name = startXvfb(d.xvfb, d.why);
+      d.name = startXvfb(d.xvfb.pid, d.why);
     }
     return d;
   }
@@ -271,7 +239,7 @@ struct WindowRun {
     const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     std::vector<std::string> argv = {FOSSSIM_EXECUTABLE};
     argv.insert(argv.end(), args.begin(), args.end());
-    app.pid = spawn(argv, fd, -1, cwd);
+    app.pid = spawn(argv, fd, cwd);
     close(fd);
     unsetenv("DISPLAY");
   }

@@ -48,7 +48,9 @@ TEST(StudyEnergyOrder, SymplecticEulerOnTheOrbitIsFirstOrderInTheLargestError) {
     const AccuracyCell c = measureAccuracy(orbit, symplecticEuler(), dt, StudyOptions{}, false);
     ASSERT_TRUE(c.run.ok()) << c.run.message;
     EXPECT_LE(c.metrics.energy, c.metrics.energyMax);
-    if (previous > 0) EXPECT_NEAR(std::log2(previous / c.metrics.energyMax), 1.0, 0.1) << dt;
+    if (previous > 0) {
+      EXPECT_NEAR(std::log2(previous / c.metrics.energyMax), 1.0, 0.1) << dt;
+    }
     previous = c.metrics.energyMax;
   }
 }
