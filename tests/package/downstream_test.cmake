@@ -40,11 +40,17 @@ if(NOT installed STREQUAL expected)
 endif()
 
 set(flags)
-if(SANITIZE)  # the installed libraries were built with sanitizers, so the program links them too
-  list(APPEND flags "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined")
+set(build_type Release)
+if(SANITIZE)
+  # The installed libraries were built with sanitizers (Debug): the program is compiled the same
+  # way, since inline code of the public headers (destructors of scene members) compiled without
+  # the sanitizer and freed by it is reported as a bad free.
+  set(build_type Debug)
+  list(APPEND flags "-DCMAKE_CXX_FLAGS=-fsanitize=address,undefined -fno-omit-frame-pointer"
+       "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined")
 endif()
 step("configure" ${CMAKE_COMMAND} -S "${DOWNSTREAM_SOURCE}" -B "${work}/build" -G "${GENERATOR}"
-     -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=${CXX_COMPILER}
+     -DCMAKE_BUILD_TYPE=${build_type} -DCMAKE_CXX_COMPILER=${CXX_COMPILER}
      "-DCMAKE_PREFIX_PATH=${work}/prefix" -DCMAKE_FIND_PACKAGE_NO_PACKAGE_REGISTRY=ON
      "-DFOSSSIM_HEADERS=${HEADERS}" ${flags})
 step("build" ${CMAKE_COMMAND} --build "${work}/build" -j 1)
