@@ -54,15 +54,7 @@ def accuracy_section(data_dir, rel):
     order_rows, cheapest_rows = [], []
     for p in problems:
         mine = [r for r in rows if r["problem"] == p]
-        cells = []
-        for m in sd.unique(mine, "method"):
-            pts = sorted([r for r in mine if r["method"] == m and r["outcome"] == "ok" and sd.finite(r["error"])],
-                         key=lambda r: r["dt"])[:5]
-            if pts and max(r["error"] for r in pts) < 1e-12:
-                cells.append(f"{m}: exact")
-                continue
-            q = sd.order_of_convergence([r["dt"] for r in pts], [r["error"] for r in pts])
-            cells.append(f"{m}: {fmt(q)}")
+        cells = sd.order_cells(mine, "error", fmt)
         order_rows.append([mine[0]["title"], "; ".join(cells)])
         target = TARGETS.get(p, DEFAULT_TARGET)
         good = [r for r in mine if r["outcome"] == "ok" and sd.finite(r["error"]) and r["error"] <= target

@@ -211,15 +211,7 @@ def energy_order_table(acc, r):
     body = []
     for p in sd.unique([x for x in acc if x["kind"] == "integrators"], "problem"):
         mine = [x for x in acc if x["problem"] == p]
-        cells = []
-        for m in sd.unique(mine, "method"):
-            pts = sorted([x for x in mine if x["method"] == m and x["outcome"] == "ok"
-                          and sd.finite(x["energy_error_max"])], key=lambda x: x["dt"])[:5]
-            if pts and max(x["energy_error_max"] for x in pts) < 1e-12:
-                cells.append(f"{m}: exact")
-                continue
-            q = sd.order_of_convergence([x["dt"] for x in pts], [x["energy_error_max"] for x in pts])
-            cells.append(f"{m}: {r.fmt(q)}")
+        cells = sd.order_cells(mine, "energy_error_max", r.fmt)
         body.append([mine[0]["title"], "; ".join(cells)])
     return r.table(["problem", "order of the largest energy error over the run"], body)
 

@@ -90,3 +90,18 @@ def explicit_limit(blow_up=BLOW_UP):
 def highest_frequency(bobs, k):
     """Highest angular frequency of the study's row of unit masses (stability.h)."""
     return 2 * math.sqrt(k) * math.sin((2 * bobs - 1) * math.pi / (4 * bobs + 2))
+
+
+def order_cells(rows, key, fmt):
+    """"method: order" per method of one problem's rows: the observed order of `key` on the five
+    finest time steps that ran ("exact" when the error is at rounding level throughout)."""
+    cells = []
+    for m in unique(rows, "method"):
+        pts = sorted([x for x in rows if x["method"] == m and x["outcome"] == "ok" and finite(x[key])],
+                     key=lambda x: x["dt"])[:5]
+        if pts and max(x[key] for x in pts) < 1e-12:
+            cells.append(f"{m}: exact")
+            continue
+        q = order_of_convergence([x["dt"] for x in pts], [x[key] for x in pts])
+        cells.append(f"{m}: {fmt(q)}")
+    return cells
