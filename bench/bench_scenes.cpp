@@ -49,18 +49,15 @@ class Builder {
     scene.integrator = "symplectic-euler";
     scene.dt = kStep;
     scene.duration = static_cast<double>(setup.steps) * kStep;
-    scene.collision.type = collision;
+    scene.collision.type = findCollisionType(collision)->type;
     scene.collision.cor = setup.cor;
     scene.collision.maxIterations = setup.maxIterations;
     // Forces in the loader's order: springs (already added), gravity, then the penalty force.
     s_.gravity = setup.gravity;
     if (setup.gravity != 0) scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, setup.gravity)));
-    const CollisionEntry* entry = findCollisionType(collision);
-    if (entry && entry->addsPenaltyForce) {
-      scene.collision.penaltyK = setup.k;
-      scene.collision.penaltyThickness = setup.thickness;
-      scene.forces.push_back(std::make_unique<PenaltyForce>(setup.k, setup.thickness));
-    }
+    scene.collision.penaltyK = setup.k;
+    scene.collision.penaltyThickness = setup.thickness;
+    finalizeScene(scene);  // the penalty force, when the collision type has one
   }
 
  private:

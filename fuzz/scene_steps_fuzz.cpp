@@ -45,11 +45,15 @@ void runWith(const std::string& text, const fosssim::CollisionEntry& entry, bool
   fosssim::SceneFile file;
   if (!fosssim::parseScene(text, kName, file)) broken("a scene accepted once is accepted again");
   fosssim::Scene& scene = file.scene;
-  scene.collision.type = entry.keyword;
+  scene.collision.type = entry.type;
   // What the loader does for a file that names this handler: penalty and hybrid come with a
-  // penalty force (the file's <collision> may have named another type and so added none).
-  if (entry.addsPenaltyForce && !hasPenaltyForce(scene))
-    scene.forces.push_back(std::make_unique<fosssim::PenaltyForce>(entry.defaultK, entry.defaultThickness));
+  // penalty force (the file's <collision> may have named another type and so added none; then
+  // the type's defaults, as for a file that gives no k or thickness).
+  if (!hasPenaltyForce(scene)) {
+    scene.collision.penaltyK = entry.defaultK;
+    scene.collision.penaltyThickness = entry.defaultThickness;
+  }
+  fosssim::finalizeScene(scene);
 
   fosssim::SimulatorOptions options;
   options.handler.compat = compat;

@@ -100,7 +100,7 @@ RunResult runScene(const SceneFile& file, const RunOptions& options, const StepV
   const double allowed = options.energyGrowthLimit * scale;
   if (options.measureOverlap) r.overlap.add(measureOverlap(scene, r.final.x));
 
-  const bool hybrid = scene.collision.type == "hybrid";
+  const bool hybrid = scene.collision.type == CollisionType::Hybrid;
   FailsafeWatch watch;
   const long steps = options.steps >= 0 ? options.steps : scene.numSteps();
   for (long k = 0; k < steps; ++k) {

@@ -148,7 +148,7 @@ void PyScene::setCollision(const std::string& type, double cor, int maxIteration
   if (failsafe != "projection" && failsafe != "rigid")
     throw SceneError("set_collision: unknown failsafe \"" + failsafe + "\" (valid: projection, rigid)");
   CollisionSettings& c = file.scene.collision;
-  c.type = type;
+  c.type = entry->type;
   c.cor = cor;
   c.maxIterations = maxIterations;
   c.failsafe = failsafe == "rigid" ? Failsafe::Rigid : Failsafe::Projection;

@@ -74,7 +74,7 @@ void bindScene(nb::module_& m) {
       .def_prop_ro("collision", [](const PyScene& s) {
         const CollisionSettings& c = s.file.scene.collision;
         nb::dict d;
-        d["type"] = c.type, d["cor"] = c.cor, d["maxiters"] = c.maxIterations;
+        d["type"] = collisionKeyword(c.type), d["cor"] = c.cor, d["maxiters"] = c.maxIterations;
         d["failsafe"] = std::string(c.failsafe == Failsafe::Rigid ? "rigid" : "projection");
         d["k"] = c.penaltyK, d["thickness"] = c.penaltyThickness;
         return d;
@@ -175,7 +175,7 @@ void bindScene(nb::module_& m) {
         return "<fosssim.Scene " + (s.file.path.empty() ? std::string("(built)") : s.file.path) + ": " +
                std::to_string(s.file.scene.numParticles()) + " particles, " + std::to_string(s.file.scene.edges.size()) +
                " edges, " + std::to_string(s.file.scene.halfplanes.size()) + " half-planes, " + s.file.scene.integrator +
-               ", collision " + s.file.scene.collision.type + ">";
+               ", collision " + collisionKeyword(s.file.scene.collision.type) + ">";
       });
 }
 

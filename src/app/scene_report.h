@@ -25,7 +25,7 @@ inline std::string sceneSummary(const SceneFile& file) {
   return plural(s.numParticles(), "particle", "particles") + ", " + plural(static_cast<long>(s.edges.size()), "edge", "edges") +
          ", " + plural(static_cast<long>(s.halfplanes.size()), "half-plane", "half-planes") + ", " +
          plural(static_cast<long>(s.forces.size()), "force", "forces") + ", " + plural(s.numSteps(), "step", "steps") +
-         " of dt " + dt + ", " + s.integrator + ", collisions: " + s.collision.type;
+         " of dt " + dt + ", " + s.integrator + ", collisions: " + collisionKeyword(s.collision.type);
 }
 
 /// Prints the loader's messages. Returns the exit status when the program must stop here (a

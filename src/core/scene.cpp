@@ -31,8 +31,7 @@ void addParticle(Scene& scene, double mass, bool fixed, double radius) {
 }
 
 void finalizeScene(Scene& scene) {
-  const CollisionEntry* entry = findCollisionType(scene.collision.type);
-  if (!entry || !entry->addsPenaltyForce) return;  // an unknown type is Simulator::create's to report
+  if (!collisionEntry(scene.collision.type).addsPenaltyForce) return;
   for (const auto& force : scene.forces)
     if (dynamic_cast<const PenaltyForce*>(force.get())) return;
   scene.forces.push_back(std::make_unique<PenaltyForce>(scene.collision.penaltyK, scene.collision.penaltyThickness));

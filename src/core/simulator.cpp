@@ -15,8 +15,7 @@ Status Simulator::create(const Scene& scene, const SimulatorOptions& options,
                          std::unique_ptr<Simulator>& out) {
   const IntegratorEntry* integrator = findIntegrator(scene.integrator);
   if (!integrator) return Status::error("unknown integrator '" + scene.integrator + "'");
-  const CollisionEntry* collision = findCollisionType(scene.collision.type);
-  if (!collision) return Status::error("unknown collision type '" + scene.collision.type + "'");
+  const CollisionEntry* collision = &collisionEntry(scene.collision.type);
   std::unique_ptr<Simulator> sim(new Simulator());
   sim->collision_ = collision;
   sim->integratorKeyword_ = scene.integrator;

@@ -126,14 +126,14 @@ void readVortex(ElementReader& r, Builder& b) {
 
 void readCollision(ElementReader& r, Builder& b) {
   CollisionSettings& c = b.out.scene.collision;
-  c.type = r.text("type");
-  const CollisionEntry* entry = findCollisionType(c.type);
+  const std::string type = r.text("type");
+  const CollisionEntry* entry = findCollisionType(type);
   if (!entry) {
     if (r.has("type"))
-      r.fail("type", "unknown collision type \"" + c.type + "\" (valid: " + keywords(collisionTable()) + ")");
+      r.fail("type", "unknown collision type \"" + type + "\" (valid: " + keywords(collisionTable()) + ")");
     entry = &collisionTable().front();
-    c.type = entry->keyword;
   }
+  c.type = entry->type;
   c.cor = r.number("COR");
   // The reference reads maxiters as a number and truncates it.
   c.maxIterations = static_cast<int>(std::max(r.number("maxiters"), -1.0));

@@ -114,7 +114,7 @@ void writeForce(std::string& out, const Scene& scene, const Force& force, size_t
 /// The forces must be ones the format has, in its order, with the penalty force exactly the one
 /// the collision settings make.
 void checkForces(const Scene& scene) {
-  const CollisionEntry* entry = findCollisionType(scene.collision.type);
+  const CollisionEntry& entry = collisionEntry(scene.collision.type);
   int previous = 0, penalties = 0;
   for (size_t k = 0; k < scene.forces.size(); ++k) {
     const Force& f = *scene.forces[k];
@@ -127,16 +127,16 @@ void checkForces(const Scene& scene) {
     previous = rank;
     if (const auto* p = dynamic_cast<const PenaltyForce*>(&f)) {
       ++penalties;
-      if (!entry || !entry->addsPenaltyForce)
-        throw WriteError{which + ": collision type \"" + scene.collision.type + "\" has no penalty force"};
+      if (!entry.addsPenaltyForce)
+        throw WriteError{which + ": collision type \"" + entry.keyword + "\" has no penalty force"};
       if (p->stiffness() != scene.collision.penaltyK || p->thickness() != scene.collision.penaltyThickness)
         throw WriteError{which + ": k = " + formatNumber(p->stiffness()) + ", thickness = " + formatNumber(p->thickness()) +
                          " differ from the collision settings' k = " + formatNumber(scene.collision.penaltyK) +
                          ", thickness = " + formatNumber(scene.collision.penaltyThickness)};
     }
   }
-  if (entry && entry->addsPenaltyForce && penalties != 1)
-    throw WriteError{"collision type \"" + scene.collision.type + "\" needs exactly one penalty force, the scene has " +
+  if (entry.addsPenaltyForce && penalties != 1)
+    throw WriteError{"collision type \"" + std::string(entry.keyword) + "\" needs exactly one penalty force, the scene has " +
                      std::to_string(penalties)};
 }
 
@@ -148,8 +148,6 @@ void writeScene(std::string& out, const SceneFile& file) {
       static_cast<int>(scene.fixed.size()) != n)
     throw WriteError{"the initial state or the masses do not have 2 entries per particle (" + std::to_string(n) +
                      " particles)"};
-  if (!findCollisionType(scene.collision.type))
-    throw WriteError{"<collision> attribute 'type': unknown collision type \"" + scene.collision.type + "\""};
   checkForces(scene);
 
   out += "<scene>\n";
@@ -158,7 +156,7 @@ void writeScene(std::string& out, const SceneFile& file) {
   Element(out, "duration").number("time", scene.duration);
   Element(out, "integrator").text("type", scene.integrator).number("dt", scene.dt);
   const CollisionSettings& c = scene.collision;
-  Element(out, "collision").text("type", c.type).number("COR", c.cor).integer("maxiters", c.maxIterations)
+  Element(out, "collision").text("type", collisionKeyword(c.type)).number("COR", c.cor).integer("maxiters", c.maxIterations)
       .text("failsafe", c.failsafe == Failsafe::Rigid ? "rigid" : "projection").number("k", c.penaltyK)
       .number("thickness", c.penaltyThickness);
 

@@ -2,6 +2,7 @@
 // way), for every collision handler, both quintic forms and with the failsafe at work: the same
 // positions and velocities after every step, the same impulses, the same counts of collisions,
 // impulse passes and zones. Runs that log polynomials (which check every pair) end the same too.
+#include "support/collision_type.h"
 #include "fosssim/core/forces.h"
 #include "fosssim/core/simulator.h"
 #include "test_scenes.h"
@@ -25,7 +26,7 @@ TestScene mixedScene(const std::string& type, int maxIterations, unsigned seed) 
   TestScene s;
   s.scene.integrator = "symplectic-euler";
   s.scene.dt = 0.01;
-  s.scene.collision.type = type;
+  s.scene.collision.type = test::collisionType(type);
   s.scene.collision.cor = 0.5;
   s.scene.collision.maxIterations = maxIterations;
   for (int row = 0; row < 8; ++row)
@@ -154,7 +155,7 @@ TestScene pile(const std::string& type) {
   TestScene s;
   s.scene.integrator = "symplectic-euler";
   s.scene.dt = 0.01;
-  s.scene.collision.type = type;
+  s.scene.collision.type = test::collisionType(type);
   s.scene.collision.cor = 0.3;
   s.scene.collision.maxIterations = 4;
   for (int row = 0; row < 60; ++row)

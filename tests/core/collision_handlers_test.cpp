@@ -2,6 +2,7 @@
 // momentum exchange in 1D collisions, restitution, fixed (infinitely heavy) particles,
 // tunnelling through thin edges, chains that need several impulse passes, piles that need the
 // rigid-zone failsafe, and mirror symmetry.
+#include "support/collision_type.h"
 #include "fosssim/core/simulator.h"
 #include "fosssim/core/verify.h"
 #include "test_scenes.h"
@@ -20,7 +21,7 @@ TestScene collisionSetup(const std::string& type, double cor, double dt = 0.01) 
   TestScene s;
   s.scene.integrator = "symplectic-euler";
   s.scene.dt = dt;
-  s.scene.collision.type = type;
+  s.scene.collision.type = test::collisionType(type);
   s.scene.collision.cor = cor;
   s.scene.collision.maxIterations = 100;
   return s;

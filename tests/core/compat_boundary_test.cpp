@@ -16,6 +16,7 @@
 //    (rpoly's Quad and the closed-interval logic of its ContinuousTimeUtilities, in Python, not
 //    from FOSSSim's code), which also reproduces every particle-particle and half-plane
 //    collision of the conformance suite's continuous-time references bit for bit.
+#include "support/collision_type.h"
 #include "fosssim/core/simulator.h"
 #include "test_scenes.h"
 
@@ -38,7 +39,7 @@ Bounce firstBounce(const std::string& type, const std::string& integrator, bool 
   TestScene s;
   s.scene.integrator = integrator;
   s.scene.dt = 0.01;
-  s.scene.collision.type = type;
+  s.scene.collision.type = test::collisionType(type);
   s.scene.collision.cor = 1.0;
   addBody(s, 1.0, Vec2(-0.5, 0), Vec2(5, 0), 0.1);
   addBody(s, 1.0, Vec2(0, 0), Vec2(0, 0), 0.1);

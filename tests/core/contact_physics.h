@@ -3,6 +3,7 @@
 // scene is built inline with the symplectic Euler integrator (x += h v_new: free flight is exact).
 #pragma once
 
+#include "support/collision_type.h"
 #include "fosssim/core/simulator.h"
 #include "test_scenes.h"
 
@@ -24,7 +25,7 @@ inline TestScene contactScene(const std::string& type, double cor, double dt = 0
   TestScene s;
   s.scene.integrator = "symplectic-euler";
   s.scene.dt = dt;
-  s.scene.collision.type = type;
+  s.scene.collision.type = test::collisionType(type);
   s.scene.collision.cor = cor;
   s.scene.collision.maxIterations = maxIterations;
   s.scene.collision.failsafe = failsafe;

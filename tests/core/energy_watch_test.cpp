@@ -1,5 +1,6 @@
 // The energy watch (src/core/energy_watch.h): blow-ups stop with a message that names step,
 // particle, force and what to change; honest scenes, far from the origin or in other units, run.
+#include "support/collision_type.h"
 #include "fosssim/core/simulator.h"
 #include "test_scenes.h"
 
@@ -49,7 +50,7 @@ TestScene droppedBall(const std::string& collision, double k, double thickness, 
   addBody(s, 1.0 * M, Vec2(0, 1) * L, Vec2::Zero(), 0.1 * L);
   s.scene.halfplanes.push_back(HalfPlane{Vec2::Zero(), Vec2::UnitY()});
   s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, -9.81) * L / (T * T)));
-  s.scene.collision.type = collision;
+  s.scene.collision.type = test::collisionType(collision);
   s.scene.collision.cor = 1.0;
   if (collision == "penalty" || collision == "hybrid")
     s.scene.forces.push_back(std::make_unique<PenaltyForce>(k * M / (T * T), thickness * L));
@@ -68,7 +69,7 @@ TestScene springInPenaltyLayer(const std::string& integrator, double k, double L
   s.scene.edges.push_back(Edge{0, 1, 0.02 * L});
   s.scene.forces.push_back(std::make_unique<SpringForce>(0, 1, 100.0 * M / (T * T), 0.1 * L, 0.0));
   s.scene.forces.push_back(std::make_unique<PenaltyForce>(k * M / (T * T), 0.1 * L));
-  s.scene.collision.type = "penalty";
+  s.scene.collision.type = CollisionType::Penalty;
   s.scene.integrator = integrator;
   s.scene.dt = 0.01 * T;
   return s;

@@ -1,5 +1,6 @@
 // What a simulator reads from its scene and what it owns (include/fosssim/core/simulator.h):
 // settings once at creation, a scene finalised once, nothing shared between simulators.
+#include "support/collision_type.h"
 #include "fosssim/core/simulator.h"
 #include "test_scenes.h"
 
@@ -19,7 +20,7 @@ TestScene penaltyPile(int side) {
   TestScene s;
   s.scene.integrator = "symplectic-euler";
   s.scene.dt = 0.001;
-  s.scene.collision.type = "penalty";
+  s.scene.collision.type = CollisionType::Penalty;
   s.scene.collision.penaltyK = 1000.0;
   s.scene.collision.penaltyThickness = 0.01;
   for (int row = 0; row < side; ++row)
@@ -46,14 +47,14 @@ TEST(SimulatorSettings, FinalizeSceneAddsTheImpliedPenaltyForceOnceAndLast) {
   EXPECT_EQ(penalty->stiffness(), 1000.0);
   EXPECT_EQ(penalty->thickness(), 0.01);
 
-  for (const char* type : {"none", "simple", "continuous-time", "no-such-type"}) {
+  for (const char* type : {"none", "simple", "continuous-time"}) {
     TestScene other = testing::spring("symplectic-euler", 0.01, 1.0);
-    other.scene.collision.type = type;
+    other.scene.collision.type = test::collisionType(type);
     finalizeScene(other.scene);
     EXPECT_EQ(penaltyForces(other.scene), 0) << type;
   }
   TestScene hybrid = testing::spring("symplectic-euler", 0.01, 1.0);
-  hybrid.scene.collision.type = "hybrid";
+  hybrid.scene.collision.type = CollisionType::Hybrid;
   finalizeScene(hybrid.scene);
   EXPECT_EQ(penaltyForces(hybrid.scene), 1);
 }

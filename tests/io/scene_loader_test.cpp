@@ -40,7 +40,7 @@ TEST(SceneLoader, TheBaseSceneAsWritten) {
   ASSERT_EQ(s.halfplanes.size(), 1u);
   EXPECT_EQ(s.halfplanes[0].point, Vec2(0, -1));
   EXPECT_TRUE(s.forces.empty());
-  EXPECT_EQ(s.collision.type, "none");
+  EXPECT_EQ(s.collision.type, CollisionType::None);
 }
 
 TEST(SceneLoader, Defaults) {
@@ -164,7 +164,7 @@ TEST(SceneLoader, OnlyTheFirstOfSomeElementsCounts) {
   EXPECT_EQ(f.scene.dt, 0.01);
   ASSERT_TRUE(f.look.viewport.has_value());
   EXPECT_EQ(f.look.viewport->size, 3.0);
-  EXPECT_EQ(f.scene.collision.type, "simple");
+  EXPECT_EQ(f.scene.collision.type, CollisionType::Simple);
   EXPECT_EQ(f.scene.collision.cor, 0.25);
   EXPECT_TRUE(f.scene.forces.empty());  // the ignored penalty collision adds no force
   ASSERT_EQ(f.warnings.size(), 4u);

@@ -255,7 +255,7 @@ TEST(SceneWriter, SceneBuiltInCodeRoundTrips) {
   f.look.edgeColors.assign(1, kDefaultEdgeColor);
   f.scene.forces.push_back(std::make_unique<SpringForce>(0, 1, 5.0, 1.0, 0.0));
   f.scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, -1)));
-  f.scene.collision.type = "penalty";
+  f.scene.collision.type = CollisionType::Penalty;
   f.scene.collision.penaltyK = 100;
   f.scene.collision.penaltyThickness = 0.01;
   f.scene.forces.push_back(std::make_unique<PenaltyForce>(100, 0.01));
@@ -290,7 +290,7 @@ TEST(SceneWriter, RefusesWhatTheFormatCannotSay) {
   }
   {
     SceneFile f = twoParticles();  // hybrid without its penalty force
-    f.scene.collision.type = "hybrid";
+    f.scene.collision.type = CollisionType::Hybrid;
     EXPECT_NE(message(f).find("needs exactly one penalty force, the scene has 0"), std::string::npos);
   }
   {

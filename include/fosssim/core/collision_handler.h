@@ -63,6 +63,7 @@ class CollisionHandler {
 
 /// One row of the collision table: the keyword of <collision type="..."> and what it builds.
 struct CollisionEntry {
+  CollisionType type;      ///< the row's method; collisionTable()[int(type)] is this row
   const char* keyword;
   /// Builds the handler; nullptr for types without one ("none", "penalty").
   std::unique_ptr<CollisionHandler> (*make)(const CollisionSettings&, const HandlerOptions&);
@@ -74,6 +75,11 @@ struct CollisionEntry {
 };
 
 const std::vector<CollisionEntry>& collisionTable();
+/// The row of `keyword`, or nullptr when no row has it: what readers of keywords call, once.
 const CollisionEntry* findCollisionType(const std::string& keyword);
+/// The row of a method (an index, no search).
+const CollisionEntry& collisionEntry(CollisionType type);
+/// The keyword of <collision type="..."> that selects `type`.
+inline const char* collisionKeyword(CollisionType type) { return collisionEntry(type).keyword; }
 
 }  // namespace fosssim

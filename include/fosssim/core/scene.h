@@ -33,9 +33,14 @@ enum class Failsafe {
   Rigid,       ///< rigid impact zones at once (the course's failsafe)
 };
 
-/// How collisions are handled. The keyword selects an entry of collisionTable().
+/// The collision handling methods, in the order of collisionTable() (collision_handler.h), which
+/// maps each to its keyword of <collision type="..."> and to what it builds. A scene holds the
+/// method, not its keyword: the keyword is looked up once, where it is read (loader, Python).
+enum class CollisionType { None, Simple, ContinuousTime, Hybrid, Penalty };
+
+/// How collisions are handled.
 struct CollisionSettings {
-  std::string type = "none";  ///< "none", "simple", "continuous-time", "penalty" or "hybrid"
+  CollisionType type = CollisionType::None;
   double cor = 1.0;           ///< coefficient of restitution, 1 elastic .. 0 inelastic
   int maxIterations = 10;     ///< hybrid: impulse passes before the failsafe; <= 0 means none
                               ///< (default mode: impulse events per particle and step)

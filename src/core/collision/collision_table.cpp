@@ -2,6 +2,8 @@
 #include "collision_handlers.h"
 #include "event_handler.h"
 
+#include "fosssim/math/contract.h"
+
 namespace fosssim {
 namespace {
 
@@ -29,17 +31,24 @@ const std::vector<CollisionEntry>& collisionTable() {
   static const RecordLayout kImpulses{true, false, false};
   static const RecordLayout kEverything{true, true, true};
   static const std::vector<CollisionEntry> table = {
-      {"none", nullptr, false, 0.0, 0.0, kNothing, "no collision handling"},
-      {"simple", makeSimple, false, 0.0, 0.0, kImpulses,
+      {CollisionType::None, "none", nullptr, false, 0.0, 0.0, kNothing, "no collision handling"},
+      {CollisionType::Simple, "simple", makeSimple, false, 0.0, 0.0, kImpulses,
        "discrete: overlapping, approaching pairs at the end of the step get an impulse"},
-      {"continuous-time", makeContinuousTime, false, 0.0, 0.0, kEverything,
+      {CollisionType::ContinuousTime, "continuous-time", makeContinuousTime, false, 0.0, 0.0, kEverything,
        "every pair tested along its motion during the step; impulses applied at once, one pass"},
-      {"hybrid", makeHybrid, true, 10.0, 0.1, kEverything,
+      {CollisionType::Hybrid, "hybrid", makeHybrid, true, 10.0, 0.1, kEverything,
        "iterative impulses (maxiters passes), then rigid impact zones; adds a weak penalty force"},
-      {"penalty", nullptr, true, 100.0, 0.01, kNothing,
+      {CollisionType::Penalty, "penalty", nullptr, true, 100.0, 0.01, kNothing,
        "a penalty force pushes apart pairs closer than their radii plus a thickness"},
   };
   return table;
+}
+
+const CollisionEntry& collisionEntry(CollisionType type) {
+  const auto& table = collisionTable();
+  const auto index = static_cast<size_t>(type);
+  FOSSSIM_ASSERT(index < table.size() && table[index].type == type);
+  return table[index];
 }
 
 const CollisionEntry* findCollisionType(const std::string& keyword) {
