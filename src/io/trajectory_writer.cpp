@@ -44,9 +44,9 @@ std::string firstNonFinite(const State& state, const CollisionLog& log, const Re
   if (layout.impulses)
     for (std::size_t k = 0; k < log.impulses.size(); ++k) {
       const Impulse& im = log.impulses[k];
-      if (std::isfinite(im.n.x()) && std::isfinite(im.n.y()) && std::isfinite(im.time)) continue;
+      if (std::isfinite(im.n.x()) && std::isfinite(im.n.y()) && std::isfinite(im.tau)) continue;
       what << "impulse " << k << " (" << pairKindName(im.kind) << ", " << im.i << " and " << im.j << ": n = ("
-           << im.n.x() << ", " << im.n.y() << "), time " << im.time << ")";
+           << im.n.x() << ", " << im.n.y() << "), tau " << im.tau << ")";
       return what.str();
     }
   if (layout.polynomials)
@@ -83,7 +83,7 @@ Status TrajectoryWriter::encode(const State& state, const CollisionLog& log, std
   bool finite = state.x.allFinite() && state.v.allFinite();
   if (finite && layout_.impulses)
     for (const Impulse& im : log.impulses)
-      finite = finite && std::isfinite(im.n.x()) && std::isfinite(im.n.y()) && std::isfinite(im.time);
+      finite = finite && std::isfinite(im.n.x()) && std::isfinite(im.n.y()) && std::isfinite(im.tau);
   if (finite && layout_.polynomials)
     for (int k = 0; k < log.polynomials.size() && finite; ++k)
       finite = allFinite(log.polynomials.coefficients(k), static_cast<std::size_t>(log.polynomials.length(k)));
@@ -100,7 +100,7 @@ Status TrajectoryWriter::encode(const State& state, const CollisionLog& log, std
       put<std::int32_t>(record, im.j);
       put(record, im.n.x());
       put(record, im.n.y());
-      put(record, im.time);
+      put(record, im.tau);
     }
   }
   if (layout_.polynomials) {

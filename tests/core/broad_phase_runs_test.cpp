@@ -99,7 +99,7 @@ void expectIdenticalRuns(const std::string& type, int maxIterations, unsigned se
       EXPECT_EQ(a[m].i, b[m].i);
       EXPECT_EQ(a[m].j, b[m].j);
       EXPECT_EQ(a[m].n, b[m].n);
-      EXPECT_EQ(a[m].time, b[m].time);
+      EXPECT_EQ(a[m].tau, b[m].tau);
     }
     const StepStats& sf = fast.sim->stats();
     const StepStats& sr = reference.sim->stats();

@@ -328,7 +328,7 @@ TEST(ContactPhysics, ScalingLengthsScalesTheTrajectory) {
     for (const auto& step : unit.impulses) {
       total += step.size();
       // A contact at a step's end may fall into either step by rounding: the scene avoids them.
-      for (const Impulse& i : step) ASSERT_TRUE(i.time > 1e-6 && i.time < 1 - 1e-6) << "contact at " << i.time;
+      for (const Impulse& i : step) ASSERT_TRUE(i.tau > 1e-6 && i.tau < 1 - 1e-6) << "contact at " << i.tau;
     }
     EXPECT_GE(total, 3u) << type << ": the scene should have several contacts";
     for (double scale : {1e-6, 1e-3, 1e3, 1e6}) {
@@ -341,7 +341,7 @@ TEST(ContactPhysics, ScalingLengthsScalesTheTrajectory) {
           ASSERT_EQ(a.kind, b.kind) << "step " << k + 1;
           ASSERT_EQ(a.i, b.i) << "step " << k + 1;
           ASSERT_EQ(a.j, b.j) << "step " << k + 1;
-          ASSERT_NEAR(a.time, b.time, 1e-9) << "step " << k + 1;
+          ASSERT_NEAR(a.tau, b.tau, 1e-9) << "step " << k + 1;
           ASSERT_LT((a.n.normalized() - b.n.normalized()).norm(), 1e-9) << "step " << k + 1;
         }
         const double tol = 1e-9 * std::max(1.0, unit.x[k].cwiseAbs().maxCoeff());

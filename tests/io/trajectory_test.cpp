@@ -97,7 +97,7 @@ TEST(Trajectory, ReaderReadsHandPackedRecords) {
   EXPECT_EQ(im.i, 0);
   EXPECT_EQ(im.j, 5);
   EXPECT_EQ(im.n, Vec2(-1, 0));
-  EXPECT_EQ(im.time, 0.5);
+  EXPECT_EQ(im.tau, 0.5);
   ASSERT_EQ(records[0].log.polynomials.size(), 1);
   EXPECT_EQ(records[0].log.polynomials.length(0), 2);
   EXPECT_EQ(records[0].log.polynomials.coefficients(0)[1], 8.0);

@@ -32,13 +32,13 @@ struct Collision {
 };
 
 /// One collision response, as trajectory records hold it (the reference's record: kind, i, j,
-/// n, then the time; `time` is the tau of the Collision it answers, 0 for discrete detection).
+/// n, then the contact time: the tau of the Collision it answers, 0 for discrete detection).
 struct Impulse {
   PairKind kind = PairKind::ParticleParticle;
   int i = 0;                ///< the particle (the lower index for particle-particle)
   int j = 0;                ///< the other particle, edge or half-plane
   Vec2 n = Vec2::Zero();    ///< contact vector (unnormalised), from particle i to the other object
-  double time = 0.0;        ///< collision time as a fraction of the step (0 for discrete detection)
+  double tau = 0.0;         ///< contact time as a fraction of the step (0 for discrete detection)
 };
 
 /// Polynomial coefficient lists (highest power first) stored back to back: no allocation per

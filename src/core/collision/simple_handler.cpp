@@ -1,6 +1,6 @@
 // The "simple" handler: discrete detection at the end of the step. In the reference's pair order,
 // a pair collides when it overlaps and approaches; its response changes velocities at once (later
-// pairs see it) and leaves positions alone. Impulses are recorded with time 0. The broad phase
+// pairs see it) and leaves positions alone. Impulses are recorded with tau 0. The broad phase
 // (pair_candidates.h) skips pairs that provably do not overlap.
 #include "collision_handlers.h"
 #include "impulse_response.h"
