@@ -14,7 +14,7 @@ Status addPictureOutputs(const Options& options, const SceneFile&, ObserverList&
   if (options.svgDir.empty()) return Status::ok();
   render::FrameOutputs outputs(options.frameWidth, options.frameHeight, options.frameEvery);
   std::unique_ptr<render::SvgFrames> svg;
-  if (Status s = render::SvgFrames::open(options.svgDir, svg); !s) return s;
+  if (Status s = render::SvgFrames::open(options.svgDir, svg); !s) return Status::error("-m: " + s.message());
   outputs.add(std::move(svg));
   observers.items.push_back(std::make_unique<PictureOutputs>(std::move(outputs)));
   return Status::ok();

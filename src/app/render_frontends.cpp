@@ -8,12 +8,64 @@
 #include "fosssim/render/glut_window.h"
 #include "fosssim/render/raster_frames.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
 #include <vector>
 
 namespace fosssim::app {
+namespace {
+
+/// The render library's messages name what failed (a folder, ffmpeg, the movie file); the command
+/// line adds the option that asked for it.
+Status flagged(const std::string& option, Status s) {
+  return s ? s : Status::error(option + ": " + s.message());
+}
+
+/// One line saying what movieTiming() chose, e.g. "movie.mp4: 50 fps, a frame every 2 steps
+/// (0.02 s of the scene): real time; 203 frames from t = 0, 4.06 s".
+std::string describeMovie(const std::string& path, const render::MovieTiming& timing, double requestedFps, double dt,
+                          int frameEvery, long steps, bool titleCard) {
+  const long stepsPerFrame = std::max(frameEvery, 1) * timing.every;
+  const long scene = 1 + steps / stepsPerFrame;  // t = 0, then every stepsPerFrame steps
+  const long card = titleCard ? std::max(1L, std::lround(render::kTitleSeconds * timing.fps)) : 0;
+  char text[512];
+  char pace[96];
+  if (timing.realTime && timing.every > 1)
+    std::snprintf(pace, sizeof pace, "real time (frames left out to stay at most %g fps)", render::kMaxRealTimeFps);
+  else if (timing.realTime)
+    std::snprintf(pace, sizeof pace, "real time");
+  else if (requestedFps > 0)
+    std::snprintf(pace, sizeof pace, "%.3g x real time (--fps; leave it out for real time)", timing.speed);
+  else
+    std::snprintf(pace, sizeof pace, "%.3g x real time (real time would be under %g fps)", timing.speed,
+                  render::kMinRealTimeFps);
+  char cardText[64] = "";
+  if (card > 0)
+    std::snprintf(cardText, sizeof cardText, " after a %.3g s title card", static_cast<double>(card) / timing.fps);
+  std::snprintf(text, sizeof text,
+                "%s: %.4g fps, a frame every %ld step%s (%.4g s of the scene): %s; %ld frames from t = 0, %.3g s%s",
+                path.c_str(), timing.fps, stepsPerFrame, stepsPerFrame == 1 ? "" : "s",
+                dt * static_cast<double>(stepsPerFrame), pace, scene, static_cast<double>(scene) / timing.fps,
+                cardText);
+  return text;
+}
+
+/// --movie's ffmpeg, started on `writePath` (the staged name) once the frames can be drawn.
+Status openMovie(const Options& options, const std::string& writePath, const render::RasterSettings& raster,
+                 std::unique_ptr<render::MovieWriter>& out) {
+  if (render::findOnPath("ffmpeg").empty())
+    return Status::error("--movie needs ffmpeg, which is not on PATH: install it (scripts/setup does, or "
+                         "apt-get install ffmpeg), or write PNG frames with -g 1 instead");
+  const std::string folder = std::filesystem::path(writePath).parent_path().string();
+  if (Status s = render::createDirectory(folder, "the movie \"" + options.movie + "\""); !s)
+    return flagged("--movie", s);
+  return flagged("--movie", render::MovieWriter::open(writePath, raster.width, raster.height, raster.fps, out));
+}
+
+}  // namespace
 
 Status addPictureOutputs(const Options& options, const SceneFile& file, ObserverList& observers) {
   render::FrameOutputs outputs(options.frameWidth, options.frameHeight, options.frameEvery);
@@ -21,7 +73,7 @@ Status addPictureOutputs(const Options& options, const SceneFile& file, Observer
   std::optional<StagedFile> movie;
   if (!options.svgDir.empty()) {
     std::unique_ptr<render::SvgFrames> svg;
-    if (Status s = render::SvgFrames::open(options.svgDir, svg); !s) return s;
+    if (Status s = render::SvgFrames::open(options.svgDir, svg); !s) return flagged("-m", s);
     outputs.add(std::move(svg));
     places.push_back("SVG in \"" + options.svgDir + "\"");
   }
@@ -34,9 +86,6 @@ Status addPictureOutputs(const Options& options, const SceneFile& file, Observer
     if (!options.movie.empty()) {
       movie.emplace();
       if (Status s = StagedFile::prepare(options.movie, "--movie", *movie); !s) return s;
-      raster.movie = movie->writePath();
-    }
-    if (!options.movie.empty()) {
       // --fps 0 (the default) is real time; say what the movie will be.
       const render::MovieTiming timing = render::movieTiming(options.fps, file.scene.dt, options.frameEvery);
       raster.fps = timing.fps;
@@ -44,12 +93,17 @@ Status addPictureOutputs(const Options& options, const SceneFile& file, Observer
       raster.titleCard = options.titleCard;
       if (!options.quiet)
         std::fprintf(stderr, "FOSSSim: movie %s\n",
-                     render::describeMovie(options.movie, timing, options.fps, file.scene.dt, options.frameEvery,
-                                           file.scene.numSteps(), options.titleCard)
+                     describeMovie(options.movie, timing, options.fps, file.scene.dt, options.frameEvery,
+                                   file.scene.numSteps(), options.titleCard)
                          .c_str());
     }
     std::unique_ptr<render::RasterFrames> frames;
-    if (Status s = render::RasterFrames::open(raster, frames); !s) return s;
+    if (Status s = render::RasterFrames::open(raster, frames); !s) return flagged(options.pngs ? "-g" : "--movie", s);
+    if (movie) {
+      std::unique_ptr<render::MovieWriter> writer;
+      if (Status s = openMovie(options, movie->writePath(), raster, writer); !s) return s;
+      frames->setMovie(std::move(writer));
+    }
     outputs.add(std::move(frames));
   }
   if (!outputs.empty())

@@ -42,14 +42,14 @@ Status createDirectory(const std::string& dir, const std::string& what) {
   if (dir.empty()) return Status::ok();  // the current directory
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  if (ec) return Status::error(what + ": cannot create the folder \"" + dir + "\": " + ec.message());
+  if (ec) return Status::error("cannot create the folder \"" + dir + "\" for " + what + ": " + ec.message());
   if (!std::filesystem::is_directory(dir, ec))
-    return Status::error(what + ": \"" + dir + "\" exists and is not a folder");
+    return Status::error("\"" + dir + "\" exists and is not a folder: it cannot hold " + what);
   return Status::ok();
 }
 
 Status SvgFrames::open(const std::string& dir, std::unique_ptr<SvgFrames>& out) {
-  if (Status s = createDirectory(dir, "-m"); !s) return s;
+  if (Status s = createDirectory(dir, "the SVG frames"); !s) return s;
   out.reset(new SvgFrames(dir));
   return Status::ok();
 }

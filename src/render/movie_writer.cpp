@@ -96,9 +96,9 @@ MovieWriter::~MovieWriter() {
 Status MovieWriter::open(const std::string& path, int width, int height, double fps, std::unique_ptr<MovieWriter>& out) {
   const std::string ffmpeg = findOnPath("ffmpeg");
   if (ffmpeg.empty())
-    return Status::error("--movie needs ffmpeg, which is not on PATH: install it (scripts/setup does, or "
-                         "apt-get install ffmpeg), or write PNG frames with -g 1 instead");
-  if (!(fps > 0)) return Status::error("--movie: the frame rate must be positive");
+    return Status::error("writing the movie \"" + path + "\" needs ffmpeg, which is not on PATH: install it "
+                         "(scripts/setup does, or apt-get install ffmpeg)");
+  if (!(fps > 0)) return Status::error("the movie \"" + path + "\": the frame rate must be positive");
   const std::string size = std::to_string(width) + "x" + std::to_string(height);
   char rate[32];
   std::snprintf(rate, sizeof rate, "%g", fps);
@@ -118,7 +118,8 @@ Status MovieWriter::open(const std::string& path, int width, int height, double 
   argv.push_back(nullptr);
 
   int pipeFds[2];
-  if (pipe(pipeFds) != 0) return Status::error(std::string("--movie: cannot create a pipe: ") + std::strerror(errno));
+  if (pipe(pipeFds) != 0)
+    return Status::error("the movie \"" + path + "\": cannot create a pipe to ffmpeg: " + std::strerror(errno));
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, pipeFds[0], STDIN_FILENO);
@@ -137,22 +138,25 @@ Status MovieWriter::open(const std::string& path, int width, int height, double 
   ::close(pipeFds[0]);
   if (rc != 0) {
     ::close(pipeFds[1]);
-    return Status::error("--movie: cannot start " + ffmpeg + ": " + std::strerror(rc));
+    return Status::error("the movie \"" + path + "\": cannot start " + ffmpeg + ": " + std::strerror(rc));
   }
   out.reset(new MovieWriter(path, pipeFds[1], pid, width, height));
   return Status::ok();
 }
 
 Status MovieWriter::write(const Image& frame) {
-  if (fd_ < 0) return Status::error("--movie: the movie \"" + path_ + "\" is already closed");
+  if (fd_ < 0) return Status::error("the movie \"" + path_ + "\" is already closed");
   if (frame.width != width_ || frame.height != height_)
-    return Status::error("--movie: frame size differs from the movie's");
+    return Status::error("the movie \"" + path_ + "\": a " + std::to_string(frame.width) + "x" +
+                         std::to_string(frame.height) + " frame in a " + std::to_string(width_) + "x" +
+                         std::to_string(height_) + " movie");
   int error = 0;
   if (!writeAll(fd_, frame.rgb.data(), frame.rgb.size(), error)) {
     Status closed = close();
     std::string why = error == EPIPE ? "ffmpeg stopped reading" : std::strerror(error);
     if (!closed) why += " (" + closed.message() + ")";
-    return Status::error("--movie: cannot write frame " + std::to_string(frames_ + 1) + " of \"" + path_ + "\": " + why);
+    return Status::error("cannot write frame " + std::to_string(frames_ + 1) + " of the movie \"" + path_ + "\": " +
+                         why);
   }
   ++frames_;
   return Status::ok();
@@ -169,12 +173,14 @@ Status MovieWriter::close() {
   do r = waitpid(pid_, &status, 0);
   while (r < 0 && errno == EINTR);
   pid_ = -1;
-  if (r < 0) return Status::error("--movie: lost the ffmpeg process: " + std::string(std::strerror(errno)));
+  if (r < 0)
+    return Status::error("the movie \"" + path_ + "\": lost the ffmpeg process: " + std::string(std::strerror(errno)));
   if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return Status::ok();
   if (WIFEXITED(status))
-    return Status::error("--movie: ffmpeg failed writing \"" + path_ + "\" (exit status " +
+    return Status::error("ffmpeg failed writing the movie \"" + path_ + "\" (exit status " +
                          std::to_string(WEXITSTATUS(status)) + "; its message is above)");
-  return Status::error("--movie: ffmpeg was killed by signal " + std::to_string(WTERMSIG(status)));
+  return Status::error("ffmpeg was killed by signal " + std::to_string(WTERMSIG(status)) +
+                       " while writing the movie \"" + path_ + "\"");
 }
 
 }  // namespace fosssim::render

@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <filesystem>
 
 namespace fosssim::render {
 
@@ -13,15 +11,8 @@ Status RasterFrames::open(const RasterSettings& settings, std::unique_ptr<Raster
   std::unique_ptr<RasterFrames> r(new RasterFrames());
   r->settings_ = settings;
   if (!settings.pngDir.empty())
-    if (Status s = createDirectory(settings.pngDir, "-g"); !s) return s;
+    if (Status s = createDirectory(settings.pngDir, "the PNG frames"); !s) return s;
   if (Status s = OffscreenRenderer::create(settings.width, settings.height, r->renderer_); !s) return s;
-  if (!settings.movie.empty()) {
-    const std::string parent = std::filesystem::path(settings.movie).parent_path().string();
-    if (Status s = createDirectory(parent, "--movie"); !s) return s;
-  }
-  if (!settings.movie.empty())
-    if (Status s = MovieWriter::open(settings.movie, settings.width, settings.height, settings.fps, r->movie_); !s)
-      return s;
   out = std::move(r);
   return Status::ok();
 }
@@ -75,31 +66,6 @@ MovieTiming movieTiming(double requestedFps, double dt, int frameEvery) {
   t.fps = rate / static_cast<double>(t.every);
   t.speed = 1;
   return t;
-}
-
-std::string describeMovie(const std::string& path, const MovieTiming& timing, double requestedFps, double dt,
-                          int frameEvery, long steps, bool titleCard) {
-  const long stepsPerFrame = std::max(frameEvery, 1) * timing.every;
-  const long scene = 1 + steps / stepsPerFrame;  // t = 0, then every stepsPerFrame steps
-  const long card = titleCard ? std::max(1L, std::lround(kTitleSeconds * timing.fps)) : 0;
-  char text[512];
-  char pace[96];
-  if (timing.realTime && timing.every > 1)
-    std::snprintf(pace, sizeof pace, "real time (frames left out to stay at most %g fps)", kMaxRealTimeFps);
-  else if (timing.realTime)
-    std::snprintf(pace, sizeof pace, "real time");
-  else if (requestedFps > 0)
-    std::snprintf(pace, sizeof pace, "%.3g x real time (--fps; leave it out for real time)", timing.speed);
-  else
-    std::snprintf(pace, sizeof pace, "%.3g x real time (real time would be under %g fps)", timing.speed, kMinRealTimeFps);
-  char cardText[64] = "";
-  if (card > 0) std::snprintf(cardText, sizeof cardText, " after a %.3g s title card", static_cast<double>(card) / timing.fps);
-  std::snprintf(text, sizeof text,
-                "%s: %.4g fps, a frame every %ld step%s (%.4g s of the scene): %s; %ld frames from t = 0, %.3g s%s",
-                path.c_str(), timing.fps, stepsPerFrame, stepsPerFrame == 1 ? "" : "s",
-                dt * static_cast<double>(stepsPerFrame), pace, scene, static_cast<double>(scene) / timing.fps,
-                cardText);
-  return text;
 }
 
 Status RasterFrames::finish() { return movie_ ? movie_->close() : Status::ok(); }

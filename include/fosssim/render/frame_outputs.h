@@ -97,7 +97,8 @@ class FrameOutputs {
   std::vector<std::unique_ptr<PictureSink>> sinks_;
 };
 
-/// Creates `dir` and its parents if needed; `what` names the option in the message (e.g. "-g").
+/// Creates `dir` and its parents if needed; `what` names what the folder is for in the message
+/// (e.g. "the PNG frames").
 Status createDirectory(const std::string& dir, const std::string& what);
 
 }  // namespace fosssim::render

@@ -13,8 +13,7 @@ namespace fosssim::render {
 struct RasterSettings {
   int width = 512, height = 512;
   std::string pngDir;  ///< write dir/frame%05d.png (created if needed); empty: no PNG files
-  std::string movie;   ///< pipe into ffmpeg writing this file; empty: no movie
-  double fps = 30;     ///< the movie's frame rate
+  double fps = 30;     ///< the movie's frame rate (the one its MovieWriter was opened with)
   long movieEvery = 1; ///< the movie keeps frames movieEvery, 2 movieEvery, ... of the sequence
   bool titleCard = false;  ///< the movie opens with titleCard() for kTitleSeconds
 };
@@ -40,16 +39,14 @@ struct MovieTiming {
 /// kMinRealTimeFps the movie plays at that rate, faster than real time.
 MovieTiming movieTiming(double requestedFps, double dt, int frameEvery);
 
-/// One line saying what movieTiming() chose, e.g. "movie.mp4: 50 fps, a frame every 2 steps
-/// (0.02 s of the scene): real time, 4.04 s for 200 steps".
-std::string describeMovie(const std::string& path, const MovieTiming& timing, double requestedFps, double dt,
-                          int frameEvery, long steps, bool titleCard);
-
 class RasterFrames final : public PictureSink {
  public:
-  /// Sets up everything before the run starts, so that a missing ffmpeg or an unwritable folder
-  /// is reported before any step is taken.
+  /// Sets up the PNG folder and the off-screen renderer before the run starts, so that an
+  /// unwritable folder or a missing OpenGL is reported before any step is taken.
   static Status open(const RasterSettings& settings, std::unique_ptr<RasterFrames>& out);
+  /// The frames also go into `movie`, opened by the caller (MovieWriter::open, at the settings'
+  /// size and fps), so that the caller can tell a failing movie from failing PNG frames.
+  void setMovie(std::unique_ptr<MovieWriter> movie) { movie_ = std::move(movie); }
   /// The movie opens with the title card (when asked for) and the initial state.
   Status start(const SceneFile& file, const Picture& initial) override;
   bool wants(long number) const override;
