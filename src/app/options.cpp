@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <sstream>
 
 #ifndef FOSSSIM_VERSION
@@ -216,6 +217,20 @@ std::string unknownWord(const CLI::App& app, const std::string& word) {
   return "unknown option \"" + word + "\"" + (best.empty() ? "" : " (did you mean " + best + "?)") + hint;
 }
 
+/// CLI11 gives a short option's value straight after its letter, so "-q=1" is the flag -q and
+/// then "-=1", an unknown word: the word it came from names the flag. Empty for other words.
+std::string shortFlagWithValue(const std::string& leftover, int argc, char** argv) {
+  if (leftover.rfind("-=", 0) != 0) return "";
+  const std::string value = leftover.substr(1);  // "=1"
+  for (int k = 1; k < argc; ++k) {
+    const std::string w = argv[k];
+    if (w.size() > value.size() + 1 && w[0] == '-' && w[1] != '-' &&
+        w.compare(w.size() - value.size(), value.size(), value) == 0)
+      return "option -" + w.substr(w.size() - value.size() - 1, 1) + " takes no value";
+  }
+  return "";
+}
+
 bool parseInt(const std::string& text, long lo, long hi, int& out) {
   long v = 0;
   if (!cli::parseInteger(text, lo, hi, v)) return false;
@@ -269,6 +284,18 @@ class Judge {
       return fail("option --frame-size takes WxH with sizes from 1 to " + std::to_string(kMaxFrameSide) + ", got \"" +
                   v + "\"");
     return true;
+  }
+  /// --movie: a movie that ffmpeg writes from frames. An image name (out.png) or an image sequence
+  /// pattern would make ffmpeg write one picture (or numbered files) and fail at the second frame.
+  bool movie(const std::vector<std::string>& given) {
+    if (!single("--movie", given, o_.movie)) return false;
+    if (o_.movie.empty()) return true;
+    std::string ext = std::filesystem::path(o_.movie).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    for (const char* movie : {".mp4", ".mov", ".mkv", ".webm", ".avi", ".gif"})
+      if (ext == movie) return true;
+    return fail("option --movie takes a movie file ending in .mp4, .mov, .mkv, .webm, .avi or .gif, got \"" + o_.movie +
+                "\"" + (ext == ".png" ? " (PNG frames: -g 1)" : ext == ".svg" ? " (SVG frames: -m DIR)" : ""));
   }
   bool fps(const std::vector<std::string>& given) {
     std::string v;
@@ -367,7 +394,8 @@ bool parseOptions(int argc, char** argv, Options& o, std::string& error) {
     return false;
   }
   if (!app.remaining().empty()) {
-    error = unknownWord(app, app.remaining().front());
+    error = shortFlagWithValue(app.remaining().front(), argc, argv);
+    if (error.empty()) error = unknownWord(app, app.remaining().front());
     return false;
   }
   Judge judge(o, error);
@@ -380,7 +408,7 @@ bool parseOptions(int argc, char** argv, Options& o, std::string& error) {
                      "an integer from 1 to " + std::to_string(kMaxThreads)) ||
       !judge.frameSize(g.frameSize) ||
       !judge.integer("--frame-every", g.frameEvery, maxFrameEvery, o.frameEvery, "a positive integer") ||
-      !judge.single("--png-dir", g.pngDir, o.pngDir) || !judge.single("--movie", g.movie, o.movie) ||
+      !judge.single("--png-dir", g.pngDir, o.pngDir) || !judge.movie(g.movie) ||
       !judge.single("--stats", g.stats, o.stats) ||
       !judge.fps(g.fps))
     return false;

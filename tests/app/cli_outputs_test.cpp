@@ -62,6 +62,12 @@ TEST_F(CliOutputs, AnOutputThatIsTheSceneIsRefused) {
   for (const std::string& out : {scene, (dir_ / "." / "scene.xml").string(), path("symlink.bin"), path("hardlink.bin")}) {
     SCOPED_TRACE(out);
     expectRefused(with({"-o", out}), scene, "-o \"" + out + "\" is the same file");
+  }
+  // --movie takes movie names only (MovieNamesMustBeMovies): links to the scene with such a name.
+  fs::create_symlink(scene, path("symlink.mp4"));
+  fs::create_hard_link(scene, path("hardlink.mkv"));
+  for (const std::string& out : {path("symlink.mp4"), path("hardlink.mkv")}) {
+    SCOPED_TRACE(out);
     expectRefused(with({"--movie", out}), scene, "--movie \"" + out + "\" is the same file");
   }
   // -o's partial name: "x.bin" is written as "x.partial.bin" until the run completes.
@@ -187,6 +193,30 @@ TEST_F(CliOutputs, AHugeTrajectoryIsAnnouncedAtOnce) {
   }
 }
 
+// An image name makes ffmpeg write the first frame as a picture and fail at the second ("Cannot
+// write more than one file with the same name"), a pattern writes numbered pictures under the
+// partial name, other endings leave ffmpeg without a format: --movie refuses them before the run.
+TEST_F(CliOutputs, MovieNamesMustBeMovies) {
+  const std::string scene = meeting("m.xml", "continuous-time", 0.1);
+  const std::string before = slurp(scene);
+  const std::vector<std::pair<std::string, std::string>> names = {
+      {"out.png", " (PNG frames: -g 1)"}, {"frame%03d.png", " (PNG frames: -g 1)"},
+      {"out.svg", " (SVG frames: -m DIR)"}, {"out.jpg", ""}, {"out.txt", ""}, {"movie", ""}, {"movie.", ""},
+      {scene, ""}};
+  for (const auto& [name, hint] : names) {
+    SCOPED_TRACE(name);
+    const std::string out = name == scene ? scene : path(name);
+    const Outcome o = runFosssim({"-s", scene, "-d", "0", "-q", "--frame-size", "32x32", "--movie", out});
+    EXPECT_TRUE(exitedWith(o, 2)) << o;
+    EXPECT_TRUE(contains(o.err, "option --movie takes a movie file ending in .mp4, .mov, .mkv, .webm, .avi or .gif, "
+                                "got \"" + out + "\"" + hint + "\n"))
+        << o;
+  }
+  EXPECT_EQ(slurp(scene), before);
+  // Nothing was written: the folder holds the scene only.
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);
+}
+
 // ffmpeg reads "-name" as an option and "proto:name" as a protocol ("pipe:1" is its stdout):
 // FOSSSim hands it every name as a file.
 TEST_F(CliOutputs, MovieNamesAreFilesWhateverTheyLookLike) {
@@ -194,7 +224,9 @@ TEST_F(CliOutputs, MovieNamesAreFilesWhateverTheyLookLike) {
   const std::string scene = meeting("m.xml", "continuous-time", 0.1);
   const fs::path before = fs::current_path();
   fs::current_path(dir_);  // relative names, as a user types them
-  for (const std::string name : {"-movie.mkv", "pipe:1.mkv", "file:x.mkv", "a:b.mkv"}) {
+  // and every ending --movie accepts is a movie ffmpeg writes (in any case).
+  for (const std::string name : {"-movie.mkv", "pipe:1.mkv", "file:x.mkv", "a:b.mkv", "m.mp4", "m.MOV", "m.webm",
+                                 "m.avi", "m.gif"}) {
     SCOPED_TRACE(name);
     const Outcome o = runFosssim({"-s", scene, "-d", "0", "-q", "--frame-size", "32x32", "--movie=" + name});
     if (contains(o.err, "built without the renderer")) {

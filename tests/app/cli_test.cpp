@@ -148,6 +148,10 @@ TEST(Cli, ValuesAfterAnEqualsSign) {
   expectUsageError({"-s", goodScene(), "--fps=fast", "--movie", "m.mp4"}, "option --fps takes a frame rate");
   // Flags take no value: "--compat=0" would read as "not compat" to some and be ignored by others.
   expectUsageError({"-s", goodScene(), "--compat=0"}, "option --compat takes no value");
+  for (const char* flag : {"-q", "-h"}) {  // CLI11 reads "-q=1" as -q and an unknown word "-=1"
+    expectUsageError({"-s", goodScene(), std::string(flag) + "=1"}, "option " + std::string(flag) + " takes no value");
+    expectUsageError({"-s", goodScene(), "-d", "0", std::string(flag) + "=0"}, "takes no value");
+  }
 }
 
 TEST(Cli, NearMissesAreSuggested) {
