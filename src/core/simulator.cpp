@@ -101,7 +101,9 @@ Status Simulator::step(const Scene& scene, State& state, StepObserver* observer)
   start_ = state;
   {
     const StepTimer timer(timing_, stats_.integrate);
-    if (Status s = integrator_->step(scene, state, dt, forces_); !s) return failure(s.message());
+    const Status s = integrator_->step(scene, state, dt, forces_);
+    stats_.newtonIterations = integrator_->newtonIterations();  // failed solves too: how far Newton got
+    if (!s) return failure(s.message());
   }
   const bool predictionFinite = state.x.allFinite() && state.v.allFinite();  // to blame forces or response
 

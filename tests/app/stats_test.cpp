@@ -70,8 +70,28 @@ TEST(Stats, HeadOnCollisionKeepsMomentumAndEnergyAndCountsOneContact) {
       EXPECT_GT(csv.at(r, "cost_total"), 0.0);
     }
     EXPECT_EQ(csv.at(r, "failsafe_zones"), 0.0);
+    EXPECT_EQ(csv.at(r, "newton_iterations"), 0.0);  // explicit Euler solves nothing
   }
   EXPECT_EQ(contacts, 1.0);
+}
+
+// The example spring stays on the x axis with its free end right of the anchor, where the spring
+// force -k (x - l0) is affine: Newton's first update solves implicit Euler's equation exactly and
+// the second is round-off, so every step takes exactly 2 iterations; linearized implicit Euler is
+// one Newton step by definition. Row 0 (the initial state) took none.
+TEST(Stats, NewtonIterationsOfTheImplicitIntegrators) {
+  for (const auto& [example, expected] : {std::pair{"spring_implicit", 2.0}, {"spring_linearized_implicit", 1.0}}) {
+    const std::string path = scratch(std::string(example) + ".csv");
+    const Outcome o = runFosssim({"-s", std::string(FOSSSIM_SOURCE_DIR "/assets/examples/") + example + ".xml", "-d",
+                                  "0", "-q", "--stats", path});
+    ASSERT_TRUE(o.exited && o.code == 0) << o;
+    const Csv csv = readCsv(slurp(path));
+    std::remove(path.c_str());
+    ASSERT_EQ(csv.rows.size(), 301u) << example;  // 3 s at dt = 0.01, and the initial state
+    EXPECT_EQ(csv.at(0, "newton_iterations"), 0.0);
+    for (size_t r = 1; r < csv.rows.size(); ++r)
+      EXPECT_EQ(csv.at(r, "newton_iterations"), expected) << example << " row " << r;
+  }
 }
 
 TEST(Stats, PotentialEnergyPerForceHasAColumnEach) {

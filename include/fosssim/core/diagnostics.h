@@ -42,7 +42,7 @@ void measureStep(const Scene& scene, const State& state, const CollisionLog& log
 
 /// Column names, in row order: step, time, kinetic, potential, energy, one potential_<k>_<force>
 /// per force, momentum_x, momentum_y, angular_momentum, contacts, failsafe_zones,
-/// zone_particles, rigid_zones, candidate_pairs, then the phase costs in seconds cost_integrate,
+/// zone_particles, rigid_zones, candidate_pairs, newton_iterations, then the phase costs in seconds cost_integrate,
 /// cost_broad_phase, cost_narrow_phase, cost_response, cost_failsafe, cost_total.
 std::vector<std::string> diagnosticColumns(const Scene& scene);
 

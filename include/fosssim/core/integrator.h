@@ -23,7 +23,18 @@ class Integrator {
     ForceContext forces;
     return step(scene, state, dt, forces);
   }
+  /// Newton iterations the last step took (failed steps included): implicit Euler's count, 1 for
+  /// linearized implicit Euler (one Newton step by definition), 0 for methods that solve nothing.
+  /// Simulator::step copies it into StepStats::newtonIterations.
+  virtual int newtonIterations() const { return 0; }
 };
+
+/// Implicit Euler's Newton iteration stops when the update's Euclidean norm falls below this
+/// (the reference's criterion)...
+constexpr double kNewtonTolerance = 1e-9;
+/// ...and a step that has not converged after this many iterations fails with a message instead
+/// of looping forever (the reference had no limit).
+constexpr int kMaxNewtonIterations = 100;
 
 /// One row of the integrator table: the XML keyword and how to build the integrator.
 struct IntegratorEntry {

@@ -17,6 +17,7 @@ struct StepStats {
   long candidatePairs = 0;   ///< pairs handed to the narrow phase (all kinds, all passes)
   long queries[3] = {0, 0, 0};  ///< narrow-phase queries by PairKind (particle-particle, -edge, -half-plane)
   long collisions = 0;       ///< collisions found by the impulse phase (all passes)
+  int newtonIterations = 0;  ///< Newton iterations of the integrator's solve (Integrator::newtonIterations)
   int impulsePasses = 0;     ///< hybrid: detection passes of the impulse phase
   bool failsafeUsed = false; ///< hybrid: the rigid impact-zone failsafe ran
   int failsafeRounds = 0;    ///< hybrid: rigid moves of the failsafe (each followed by a detection)

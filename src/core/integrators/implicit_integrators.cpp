@@ -16,12 +16,6 @@
 namespace fosssim {
 namespace {
 
-/// Newton stops when the update's Euclidean norm falls below this (the reference's criterion).
-constexpr double kNewtonTolerance = 1e-9;
-/// A step whose Newton iteration has not converged after this many iterations fails with a
-/// message instead of looping forever (the reference had no limit).
-constexpr int kMaxNewtonIterations = 100;
-
 /// %g: "last update 3.2e-07", not to_string's "0.000000".
 std::string shortNumber(double value) {
   char buffer[32];
@@ -96,10 +90,12 @@ const VecX& ImplicitSystem::solve() {
 }
 
 Status ImplicitEuler::step(const Scene& scene, State& state, double dt, ForceContext& forces) {
+  iterations_ = 0;
   if (state.x.size() == 0) return Status::ok();  // nothing to solve (and no empty factorisation)
   dv_.setZero(state.v.size());
   dx_ = dt * state.v;
   for (int iteration = 1;; ++iteration) {
+    iterations_ = iteration;
     xTrial_ = state.x + dx_;
     vTrial_ = state.v + dv_;
     if (Status s = system_.assemble(scene, xTrial_, vTrial_, dt, dv_, forces); !s) return s;
@@ -121,7 +117,8 @@ Status ImplicitEuler::step(const Scene& scene, State& state, double dt, ForceCon
 }
 
 Status LinearizedImplicitEuler::step(const Scene& scene, State& state, double dt, ForceContext& forces) {
-  if (state.x.size() == 0) return Status::ok();
+  solved_ = state.x.size() > 0;
+  if (!solved_) return Status::ok();
   xTrial_ = state.x + dt * state.v;
   zero_.setZero(state.v.size());
   if (Status s = system_.assemble(scene, xTrial_, state.v, dt, zero_, forces); !s) return s;

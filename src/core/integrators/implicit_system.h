@@ -48,20 +48,24 @@ class ImplicitEuler final : public Integrator {
  public:
   using Integrator::step;
   Status step(const Scene& scene, State& state, double dt, ForceContext& forces) override;
+  int newtonIterations() const override { return iterations_; }
 
  private:
   ImplicitSystem system_;
   VecX dx_, dv_, xTrial_, vTrial_;
+  int iterations_ = 0;
 };
 
 class LinearizedImplicitEuler final : public Integrator {
  public:
   using Integrator::step;
   Status step(const Scene& scene, State& state, double dt, ForceContext& forces) override;
+  int newtonIterations() const override { return solved_ ? 1 : 0; }
 
  private:
   ImplicitSystem system_;
   VecX xTrial_, zero_;
+  bool solved_ = false;  ///< the last step solved its system (not so for a scene without particles)
 };
 
 }  // namespace fosssim
