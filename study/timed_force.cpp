@@ -34,6 +34,14 @@ void TimedForce::addGradient(const Scene& scene, const VecX& x, const VecX& v, V
   ++into_->calls;
 }
 
+void TimedForce::addGradientWith(const Scene& scene, const VecX& x, const VecX& v, VecX& gradE,
+                                 ForceContext& context) const {
+  const Clock::time_point begin = Clock::now();
+  inner_->addGradientWith(scene, x, v, gradE, context);
+  into_->gradient += since(begin);
+  ++into_->calls;
+}
+
 void TimedForce::addJacobianX(const Scene& scene, const VecX& x, const VecX& v, Triplets& out) const {
   const Clock::time_point begin = Clock::now();
   inner_->addJacobianX(scene, x, v, out);

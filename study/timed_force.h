@@ -24,11 +24,20 @@ class TimedForce final : public Force {
   double energy(const Scene& scene, const VecX& x, const VecX& v) const override {
     return inner_->energy(scene, x, v);
   }
+  /// The caller's context goes through to the wrapped force: the penalty force searches its
+  /// near pairs with the simulator's options and storage, exactly as it would unwrapped.
+  double energyWith(const Scene& scene, const VecX& x, const VecX& v, ForceContext& context) const override {
+    return inner_->energyWith(scene, x, v, context);
+  }
   void addGradient(const Scene& scene, const VecX& x, const VecX& v, VecX& gradE) const override;
+  void addGradientWith(const Scene& scene, const VecX& x, const VecX& v, VecX& gradE,
+                       ForceContext& context) const override;
   void addJacobianX(const Scene& scene, const VecX& x, const VecX& v, Triplets& out) const override;
   void addJacobianV(const Scene& scene, const VecX& x, const VecX& v, Triplets& out) const override;
   bool hasJacobians() const override { return inner_->hasJacobians(); }
   bool hasPotential() const override { return inner_->hasPotential(); }
+  bool mayAddEnergy() const override { return inner_->mayAddEnergy(); }
+  double stiffness() const override { return inner_->stiffness(); }
 
  private:
   std::unique_ptr<Force> inner_;
