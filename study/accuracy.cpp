@@ -12,7 +12,7 @@ AccuracyCell measureAccuracy(const Problem& problem, const Method& method, doubl
                              bool timed) {
   AccuracyCell cell;
   SceneFile file;
-  if (Status s = problem.scene(method, dt).load(problem.name + ".xml", file); !s) {
+  if (Status s = problem.scene(method, dt).build(problem.name + ".xml", file); !s) {
     cell.run.outcome = Outcome::Error;
     cell.run.message = s.message();
     return cell;
@@ -67,7 +67,22 @@ Status runAccuracy(const StudyOptions& options) {
     }
     if (options.log) *options.log << "\n";
   }
+  if (Status s = writeProblemSetups(problems, options); !s) return s;
   return runAudit(options);
+}
+
+Status writeProblemSetups(const std::vector<Problem>& problems, const StudyOptions& options) {
+  CsvWriter csv;
+  if (Status s = csv.open(options.outDir + "/problems.csv", {"problem", "name", "value"}); !s) return s;
+  // The study's own marks, quoted by the page's definitions: the blow-up mark of every run.
+  csv << "study" << "blow_up" << RunOptions{}.energyGrowthLimit;
+  if (Status s = csv.endRow(); !s) return s;
+  for (const Problem& p : problems)
+    for (const auto& [name, value] : p.setup) {
+      csv << p.name << name << value;
+      if (Status s = csv.endRow(); !s) return s;
+    }
+  return Status::ok();
 }
 
 }  // namespace fosssim::study

@@ -31,7 +31,7 @@ Status runAudit(const StudyOptions& options) {
     const double dt = auditStep(p.name);
     for (const Method& m : p.methods) {
       SceneFile file;
-      if (Status s = p.scene(m, dt).load(p.name + ".xml", file); !s) return s;
+      if (Status s = p.scene(m, dt).build(p.name + ".xml", file); !s) return s;
       const std::unique_ptr<Measurement> measure = p.measure();
       const long steps = file.scene.numSteps();
       const long every = std::max(1L, steps / kSamples);

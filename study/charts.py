@@ -345,6 +345,7 @@ def main(argv):
     charts_limits.chart_energy_order(data_dir, style, save)
     charts_limits.chart_penalty_limits(data_dir, style, save)
     charts_limits.chart_newton(data_dir, save)
+    charts_limits.chart_newton_iterations(data_dir, save)
     if os.path.exists(os.path.join(data_dir, "audit_series.csv")):
         charts_limits.chart_audit(data_dir, style, save)
     chart_robustness(data_dir)

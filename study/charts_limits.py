@@ -6,11 +6,15 @@
                        mode (robustness_shots.csv)
     energy_order       the largest energy error over a run against dt, per integrator problem,
                        with symplectic Euler's end-point error for comparison (accuracy.csv)
+    newton             where implicit Euler's Newton fails on orbits (newton_failure.csv)
+    newton_iterations  Newton's iterations per step against dt and stiffness, on a swinging spring
+                       and on the orbits (newton_iterations.csv, newton_failure.csv)
 """
 import math
 
 import matplotlib.pyplot as plt
 from matplotlib.patches import Patch
+from matplotlib.ticker import ScalarFormatter
 
 import study_data as sd
 
@@ -181,6 +185,17 @@ def chart_audit(data_dir, style, save):
     save(fig, data_dir, "audit")
 
 
+def tunnel_speed(row):
+    """(radii + thickness)·√(k/m) of a robustness.csv row: by energy balance, a faster disk compresses
+    the penalty spring by more than the thickness plus the radii and goes through."""
+    return (row["disk_radius"] + row["edge_radius"] + row["thickness"]) * math.sqrt(row["penalty_k"] / row["disk_mass"])
+
+
+def contact_limit(row):
+    """2·√(m/k): the largest stable step of the penalty contact spring (symplectic Euler's 2/ω)."""
+    return 2 * math.sqrt(row["disk_mass"] / row["penalty_k"])
+
+
 def penalty_limits(rows):
     """Per penalty stiffness and impact speed (robustness.csv, head-on shots at a thin edge): the
     largest dt at which the run stayed stable and the largest at which the disk bounced."""
@@ -213,14 +228,14 @@ def chart_penalty_limits(data_dir, style, save):
     limits = penalty_limits(rows)
     dts = sorted(set(r["dt"] for r in rows))
     fig, ax = plt.subplots(figsize=(8.5, 5.4))
-    reach, thickness = 0.03, 0.01
     for m, (k, speeds, stable, bounced) in limits.items():
         color, marker = style(m)
+        first = next(r for r in rows if r["method"] == m)
         ax.plot(speeds, bounced, color=color, marker=marker, ms=5, lw=1.4, label=f"{m}: largest dt that bounced")
         ax.plot(speeds, stable, color=color, marker=marker, mfc="none", ms=5, lw=0.9, ls=":",
                 label=f"{m}: largest dt that stayed stable")
-        ax.axvline((reach + thickness) * math.sqrt(k), color=color, lw=0.8, ls="--")
-        ax.axhline(2 / math.sqrt(k), color=color, lw=0.8, ls="-.")
+        ax.axvline(tunnel_speed(first), color=color, lw=0.8, ls="--")
+        ax.axhline(contact_limit(first), color=color, lw=0.8, ls="-.")
     ax.plot([], [], color="0.4", ls="--", lw=0.8, label="theory: goes through above v = (radii + thickness)·√(k/m)")
     ax.plot([], [], color="0.4", ls="-.", lw=0.8, label="theory: contact spring stable for dt < 2·√(m/k)")
     ax.set_xscale("log")
@@ -261,3 +276,57 @@ def chart_newton(data_dir, save):
     fig.suptitle("Implicit Euler on two-body orbits (2 periods): where Newton fails against dt and the periapsis's "
                  "stiffness; colour: how far the orbit had fallen inside its periapsis", fontsize=9)
     save(fig, data_dir, "newton")
+
+
+def chart_newton_iterations(data_dir, save):
+    import os
+    if not os.path.exists(os.path.join(data_dir, "newton_iterations.csv")):
+        return
+    rows = sd.load(data_dir, "newton_iterations")
+    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.4))
+    spring = [r for r in rows if r["rest_length"] > 0]
+    colors = plt.cm.viridis([i / max(1, len(sd.unique(spring, "k")) - 1) * 0.9
+                             for i in range(len(sd.unique(spring, "k")))])
+    for color, k in zip(colors, sd.unique(spring, "k")):
+        mine = sorted([r for r in spring if r["k"] == k], key=lambda r: r["dt"])
+        left.plot([r["dt"] for r in mine], [r["mean_iterations"] for r in mine], "o-", color=color,
+                  label=f"k = {k:g} (ω = {mine[0]['omega']:.3g}/s): mean")
+        left.plot([r["dt"] for r in mine], [r["max_iterations"] for r in mine], "v:", color=color, ms=4)
+        failed = [r for r in mine if r["outcome"] != "ok"]
+        if failed:
+            left.scatter([r["dt"] for r in failed], [r["max_iterations"] for r in failed], marker="X", s=80,
+                         color="#e53935", zorder=5)
+    control = [r for r in rows if r["rest_length"] == 0]
+    if control:
+        left.plot(sorted(sd.unique(control, "dt")), [max(r["max_iterations"] for r in control if r["dt"] == d)
+                                                      for d in sorted(sd.unique(control, "dt"))],
+                  "s--", color="0.5", label="rest length 0 (linear), most over every k")
+    left.plot([], [], "kv:", ms=4, label="most in one step")
+    left.set_xscale("log")
+    left.set_xlabel("time step dt [s]")
+    left.set_ylabel("Newton iterations per step")
+    left.legend(fontsize=7, loc="upper left")
+    left.set_title("A particle between two fixed anchors on springs of rest length 1 (nonlinear)", fontsize=9)
+    if os.path.exists(os.path.join(data_dir, "newton_failure.csv")):
+        orbits = [r for r in sd.load(data_dir, "newton_failure") if r["integrator"] == "implicit-euler"]
+        es = sd.unique(orbits, "eccentricity")
+        for i, e in enumerate(es):
+            mine = sorted([r for r in orbits if r["eccentricity"] == e], key=lambda r: r["dt_omega"])
+            color = plt.cm.plasma(i / max(1, len(es) - 1) * 0.85)
+            right.plot([r["dt_omega"] for r in mine], [r["mean_iterations"] for r in mine], "o-", color=color,
+                       label=f"e = {e:.2f}: mean until the end or the failure")
+            failed = [r for r in mine if r["outcome"] == "solver-failure"]
+            right.scatter([r["dt_omega"] for r in failed], [r["max_iterations"] for r in failed], marker="X", s=60,
+                          color=color, edgecolors="#e53935")
+        right.scatter([], [], marker="X", color="0.5", edgecolors="#e53935", label="failed step (the limit)")
+        right.set_xscale("log")
+        right.set_yscale("log")
+        right.yaxis.set_major_formatter(ScalarFormatter())
+        right.set_xlabel("dt · ω_p,  ω_p = √(μ / r_p³) at periapsis")
+        right.set_ylabel("Newton iterations per step")
+        right.legend(fontsize=7, loc="center left")
+        right.set_title("Two-body orbits (2 periods)", fontsize=9)
+    fig.suptitle("Implicit Euler: Newton iterations per step against dt and stiffness (solid: mean over the steps "
+                 "done; red X: the step where Newton gave up)", fontsize=9)
+    fig.tight_layout()
+    save(fig, data_dir, "newton_iterations")

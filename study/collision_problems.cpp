@@ -88,12 +88,16 @@ Problem disks(bool quick) {
   Problem p = collisionProblem("disks", "Elastic collision of two disks (masses 1 and 2, oblique)",
                                "position error at the end [m]", quick);
   p.scene = [](const Method& m, double dt) {
-    SceneXml x;
+    SceneBuilder x;
     x.duration(1.0).method(m, dt);
     for (const Disk& d : {kDisk1, kDisk2}) x.particle(d.x, d.v, d.m, false, d.r);
     return x;
   };
   p.measure = [] { return std::make_unique<DisksMeasure>(); };
+  p.setup = {{"m1", kDisk1.m},      {"m2", kDisk2.m},      {"r", kDisk1.r},       {"x1", kDisk1.x.x()},
+             {"y1", kDisk1.x.y()},  {"x2", kDisk2.x.x()},  {"y2", kDisk2.x.y()},  {"v1", kDisk1.v.x()},
+             {"v2", kDisk2.v.x()},  {"duration", 1.0},     {"contact_time", twoDisks().time},
+             {"cor", p.methods.front().collision.cor}};
   return p;
 }
 
@@ -102,6 +106,7 @@ Problem disks(bool quick) {
 // bounce and stops before a second one for every COR.
 
 FloorBounce bounce(double cor) { return FloorBounce{Vec2(0, 1), Vec2(1, 0), 9.81, 0.1, cor}; }
+constexpr double kBounceMass = 1.0;
 
 class BounceMeasure final : public Measurement {
  public:
@@ -136,13 +141,16 @@ Problem floorBounce(bool quick, double cor, const char* name) {
   for (Method& m : p.methods) m.collision.cor = cor;
   p.scene = [](const Method& m, double dt) {
     const FloorBounce b = bounce(m.collision.cor);
-    SceneXml x;
+    SceneBuilder x;
     x.duration(0.8).method(m, dt).gravity(Vec2(0, -b.g));
-    x.particle(b.x0, b.v0, 1.0, false, b.r);
+    x.particle(b.x0, b.v0, kBounceMass, false, b.r);
     x.halfplane(Vec2(0, 0), Vec2(0, 1));
     return x;
   };
   p.measure = [cor] { return std::make_unique<BounceMeasure>(cor); };
+  const FloorBounce b = bounce(cor);
+  p.setup = {{"x0", b.x0.x()}, {"y0", b.x0.y()}, {"vx", b.v0.x()},   {"vy", b.v0.y()},        {"g", b.g},
+             {"r", b.r},       {"mass", kBounceMass}, {"duration", 0.8}, {"contact_time", b.contactTime()}};
   return p;
 }
 
@@ -187,13 +195,15 @@ Problem cradle(bool quick) {
   Problem p =
       collisionProblem("cradle", "Newton's cradle (5 disks, 0.02 gaps)", "position error at the end [m]", quick);
   p.scene = [](const Method& m, double dt) {
-    SceneXml x;
+    SceneBuilder x;
     x.duration(kCradleTime).method(m, dt);
     for (int i = 0; i < kCradle; ++i)
       x.particle(Vec2(cradleStart(i), 0), Vec2(i == 0 ? kCradleSpeed : 0, 0), 1.0, false, kCradleR);
     return x;
   };
   p.measure = [] { return std::make_unique<CradleMeasure>(); };
+  p.setup = {{"disks", kCradle},        {"r", kCradleR},          {"gap", kCradleGap},
+             {"first_gap", kFirstGap},  {"speed", kCradleSpeed},  {"duration", kCradleTime}};
   return p;
 }
 
@@ -215,17 +225,21 @@ class BreakMeasure final : public Measurement {
 Problem billiards(bool quick) {
   Problem p = collisionProblem("billiards", "Billiard break (cue + 15 disks, COR 1)",
                                "relative kinetic energy error at the end", quick);
-  p.scene = [](const Method& m, double dt) {
-    constexpr double r = 0.1, spacing = 2 * r + 0.02;
-    SceneXml x;
-    x.duration(0.5).method(m, dt);
-    x.particle(Vec2(-0.5, 0), Vec2(5, 0), 1.0, false, r);  // the cue disk
-    for (int row = 0; row < 5; ++row)
+  constexpr double r = 0.1, gap = 0.02, cueSpeed = 5, duration = 0.5;
+  constexpr int rows = 5;
+  p.scene = [=](const Method& m, double dt) {
+    constexpr double spacing = 2 * r + gap;
+    SceneBuilder x;
+    x.duration(duration).method(m, dt);
+    x.particle(Vec2(-0.5, 0), Vec2(cueSpeed, 0), 1.0, false, r);  // the cue disk
+    for (int row = 0; row < rows; ++row)
       for (int k = 0; k <= row; ++k)
         x.particle(Vec2(row * spacing * std::sqrt(3.0) / 2, (k - row / 2.0) * spacing), Vec2(0, 0), 1.0, false, r);
     return x;
   };
   p.measure = [] { return std::make_unique<BreakMeasure>(); };
+  p.setup = {{"rack", rows * (rows + 1) / 2}, {"r", r},          {"gap", gap},
+             {"speed", cueSpeed},              {"duration", duration}, {"cor", p.methods.front().collision.cor}};
   return p;
 }
 

@@ -68,7 +68,7 @@ ContactResult runContactProblem(const ContactProblem& problem, ContactMode mode,
   long done = std::numeric_limits<long>::max();  // steps every shot completed
   for (int shot = 0; shot < problem.shots; ++shot) {
     SceneFile file;
-    if (Status s = problem.scene(collision, shot).load(problem.name + ".xml", file); !s) {
+    if (Status s = problem.scene(collision, shot).build(problem.name + ".xml", file); !s) {
       r.outcome = Outcome::Error;
       r.message = s.message();
       return r;

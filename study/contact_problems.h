@@ -87,7 +87,7 @@ struct ContactProblem {
   /// Walls, a floor or edges hold the particles in (ContactJudge::outside says when one left).
   bool contained = false;
   /// The scene of one shot for a collision type ("continuous-time" or "hybrid").
-  std::function<SceneXml(const std::string& collision, int shot)> scene;
+  std::function<SceneBuilder(const std::string& collision, int shot)> scene;
   std::function<std::unique_ptr<ContactJudge>()> judge;
 };
 

@@ -16,11 +16,11 @@ constexpr double kDt = 0.01;
 const Vec2 kGravity(0, -9.81);
 
 /// The scene's heading: integrator, step, collision type with its COR (hybrid: penalty k = 0).
-SceneXml heading(const std::string& collision, double cor, double duration) {
+SceneBuilder heading(const std::string& collision, double cor, double duration) {
   CollisionChoice c{collision};
   c.cor = cor;
   if (collision == "hybrid") c.k = 0;
-  SceneXml x;
+  SceneBuilder x;
   x.duration(duration).integrator("symplectic-euler", kDt).collision(c);
   return x;
 }
@@ -69,7 +69,7 @@ ContactProblem jointDrop(bool quick) {
                              "rebound speed / impact speed at the first bounce");
   p.contained = true;
   p.scene = [quick](const std::string& collision, int) {
-    SceneXml x = heading(collision, 1.0, quick ? 0.4 : 1.5);
+    SceneBuilder x = heading(collision, 1.0, quick ? 0.4 : 1.5);
     x.gravity(kGravity);
     for (int k = 0; k < 3; ++k) x.particle(Vec2(k - 1.0, 0), Vec2::Zero(), 1.0, true, 0.02);
     x.edge(0, 1, 0.02);
@@ -93,7 +93,7 @@ ContactProblem touchingRack(bool quick) {
   p.isolated = true;
   p.scene = [quick](const std::string& collision, int) {
     const double d = 2 * kRackR + 1e-12;  // centre distance of touching neighbours
-    SceneXml x = heading(collision, 1.0, quick ? 0.3 : 0.8);
+    SceneBuilder x = heading(collision, 1.0, quick ? 0.3 : 0.8);
     x.particle(Vec2(-1, 0), Vec2(5, 0), 1.0, false, kRackR);
     for (int row = 0; row < 5; ++row)
       for (int j = 0; j <= row; ++j)
@@ -131,7 +131,7 @@ ContactProblem corridor(bool quick) {
                              "speed at the end / speed at the start");
   p.contained = true;
   p.scene = [quick](const std::string& collision, int) {
-    SceneXml x = heading(collision, 1.0, quick ? 0.3 : 2.0);
+    SceneBuilder x = heading(collision, 1.0, quick ? 0.3 : 2.0);
     x.particle(Vec2(0, 0.25), Vec2(10, -100), 1.0, false, 0.05);
     x.halfplane(Vec2(0, 0), Vec2(0, 1));
     x.halfplane(Vec2(0, 0.5), Vec2(0, -1));
@@ -173,7 +173,7 @@ ContactProblem slot(bool quick) {
   p.shots = quick ? 4 : 30;
   p.scene = [quick](const std::string& collision, int shot) {
     Lcg rng(1000u + static_cast<unsigned>(shot));
-    SceneXml x = heading(collision, 1.0, quick ? 0.1 : 0.5);
+    SceneBuilder x = heading(collision, 1.0, quick ? 0.1 : 0.5);
     for (double y : {0.0, 0.1}) {
       const int a = x.particle(Vec2(-50, y), Vec2::Zero(), 1.0, true, 0.005);
       const int b = x.particle(Vec2(50, y), Vec2::Zero(), 1.0, true, 0.005);
@@ -218,7 +218,7 @@ ContactProblem cradle(bool quick) {
                              "last ball's speed / first ball's speed");
   p.isolated = true;
   p.scene = [quick](const std::string& collision, int) {
-    SceneXml x = heading(collision, 1.0, quick ? 0.15 : 0.3);
+    SceneBuilder x = heading(collision, 1.0, quick ? 0.15 : 0.3);
     x.particle(Vec2(-0.5, 0), Vec2(kCradleSpeed, 0), 1.0, false, 0.1);
     for (int k = 0; k < 4; ++k) x.particle(Vec2(k * (0.2 + 1e-12), 0), Vec2::Zero(), 1.0, false, 0.1);
     return x;
@@ -297,7 +297,7 @@ ContactProblem pileInV(int columns, int rows, double duration) {
       problem("pile", "Pile in a V: " + std::to_string(columns * rows) + " disks poured under gravity (COR 0.5)");
   p.contained = true;
   p.scene = [=](const std::string& collision, int) {
-    SceneXml x = heading(collision, 0.5, duration);
+    SceneBuilder x = heading(collision, 0.5, duration);
     x.gravity(kGravity);
     x.halfplane(Vec2::Zero(), Vec2(1, 1));
     x.halfplane(Vec2::Zero(), Vec2(-1, 1));

@@ -4,7 +4,7 @@
 #include "experiments.h"
 #include "problems.h"
 #include "run.h"
-#include "scene_xml.h"
+#include "scene_builder.h"
 
 #include <algorithm>
 #include <cmath>
@@ -42,14 +42,14 @@ constexpr double kGrown = 1e5, kDecayed = 1e-12, kNeutral = 1.01;
 DampedProbe probeDamped(const std::string& integrator, double omega, double gamma, double dt, long steps) {
   DampedProbe out;
   const double k = omega * omega, b = 2 * gamma;  // unit mass
-  SceneXml x;
+  SceneBuilder x;
   x.integrator(integrator, dt).duration(steps * dt);
   const int anchor = x.particle(Vec2(0, 0), Vec2(0, 0), 1.0, true, 0.05);
   const int bob = x.particle(Vec2(kRest + kStretch, 0), Vec2(0, 0), 1.0, false, 0.05);
   x.spring(x.edge(anchor, bob), k, kRest, b);
   SceneFile file;
   std::unique_ptr<Simulator> sim;
-  Status s = x.load("damped-spring.xml", file);
+  Status s = x.build("damped-spring.xml", file);
   if (s) s = Simulator::create(file.scene, studySimulatorOptions(), sim);
   if (!s) {
     out.message = s.message();

@@ -1,10 +1,14 @@
 // The study's experiments, each writing one CSV file into the output directory:
 //   accuracy.csv    error and cost of every method over a sweep of dt, per accuracy problem
+//   problems.csv    each accuracy problem's set-up and exact answers, for the report's table
 //   audit_series.csv
 //                   energy, momentum and angular momentum against time, per integrator problem and method
 //   stability.csv   the largest stable dt of every integrator against spring stiffness
 //   damped_stability.csv
 //                   the largest stable dt of every integrator on a damped spring, against damping
+//   newton_failure.csv, newton_iterations.csv
+//                   implicit Euler's Newton: where it fails on orbits, its iterations per step
+//                   against dt and stiffness
 //   robustness.csv  outcome of a fast disk against a thin edge, per collision method, speed and dt
 //   robustness_shots.csv
 //                   random shots at edge faces, ends, joints and slots, judged by energy, both modes
@@ -43,6 +47,8 @@ AccuracyCell measureAccuracy(const Problem& problem, const Method& method, doubl
                              bool timed);
 
 Status runAccuracy(const StudyOptions& options);
+/// problems.csv: every problem's Problem::setup (set-up and exact answers); runAccuracy calls it.
+Status writeProblemSetups(const std::vector<Problem>& problems, const StudyOptions& options);
 /// audit_series.csv (audit.cpp): energy, momentum and angular momentum over time; runAccuracy calls it.
 Status runAudit(const StudyOptions& options);
 Status runStability(const StudyOptions& options);
@@ -50,6 +56,12 @@ Status runStability(const StudyOptions& options);
 Status runDampedStability(const StudyOptions& options);
 /// newton_failure.csv (newton_failure.cpp): where implicit Euler's Newton fails on orbits; runStability calls it.
 Status runNewtonFailure(const StudyOptions& options);
+/// newton_iterations.csv (newton_iterations.cpp): implicit Euler's Newton iterations per step on a
+/// particle between two stiff springs against k and dt, with a linear control; runStability calls it.
+Status runNewtonIterations(const StudyOptions& options);
+/// One run of that experiment: its springs of stiffness k and rest length 1 (or 0: the linear
+/// control) with implicit Euler at step dt. RunResult::newtonIterations holds the iterations.
+RunResult runTwoSprings(double k, double restLength, double dt);
 Status runRobustness(const StudyOptions& options);
 /// robustness_shots.csv (shots.h); runRobustness calls it.
 Status runShots(const StudyOptions& options);

@@ -51,7 +51,7 @@ Status runHybridCost(const StudyOptions& options) {
   if (options.log) *options.log << "hybrid cost: " << columns * rows << " disks" << std::flush;
   for (const Method& m : methods) {
     SceneFile file;
-    if (Status s = pileScene(m, dt, columns, rows).load("pile.xml", file); !s) return s;
+    if (Status s = pileScene(m, dt, columns, rows).build("pile.xml", file); !s) return s;
     RunOptions ro;
     ro.phaseTimings = true;
     const RunResult r = runScene(file, ro);

@@ -67,12 +67,14 @@ Problem projectile(bool quick) {
   Problem p = integratorProblem("projectile", "Projectile under gravity (2 s flight)", "position error at the end [m]",
                                 sweep(quick, {0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 5e-4, 2e-4, 1e-4}));
   p.scene = [](const Method& m, double dt) {
-    SceneXml x;
+    SceneBuilder x;
     x.duration(2.0).method(m, dt).gravity(kThrow.g);
     x.particle(kThrow.x0, kThrow.v0, kThrowMass);
     return x;
   };
   p.measure = [] { return std::make_unique<ProjectileMeasure>(); };
+  p.setup = {{"mass", kThrowMass}, {"x0", kThrow.x0.x()}, {"y0", kThrow.x0.y()}, {"vx", kThrow.v0.x()},
+             {"vy", kThrow.v0.y()}, {"gx", kThrow.g.x()}, {"gy", kThrow.g.y()}, {"duration", 2.0}};
   return p;
 }
 
@@ -141,7 +143,7 @@ Problem spring(bool quick, double b) {
                                 "position error at the end [m]",
                                 sweep(quick, {0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 5e-4, 2e-4, 1e-4}));
   p.scene = [b, damped](const Method& m, double dt) {
-    SceneXml x;
+    SceneBuilder x;
     x.duration(damped ? 5.0 : 10.0).method(m, dt);
     const int anchor = x.particle(Vec2(0, 0), Vec2(0, 0), 1.0, true, 0.05);
     const int bob = x.particle(Vec2(kRest + kStretch, 0), Vec2(0, 0), kSpringMass, false, 0.05);
@@ -151,6 +153,8 @@ Problem spring(bool quick, double b) {
   p.measure = [b] { return std::make_unique<SpringMeasure>(b); };
   p.omega = std::sqrt(kSpringK / kSpringMass);
   if (!damped) p.exactMinSeparation = kRest - kStretch;
+  p.setup = {{"mass", kSpringMass}, {"k", kSpringK}, {"rest", kRest}, {"stretch", kStretch}, {"b", b},
+             {"duration", damped ? 5.0 : 10.0}};
   return p;
 }
 
@@ -239,7 +243,7 @@ Problem orbit(bool quick) {
                                 sweep(quick, {0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 5e-4, 2e-4, 1e-4}));
   p.scene = [](const Method& m, double dt) {
     const KeplerOrbit orbit(mu(), kRelX, kRelV);
-    SceneXml x;
+    SceneBuilder x;
     x.duration(2 * orbit.period()).method(m, dt);
     // Each body sits opposite the other about the resting centre of mass (equal masses).
     const int a = x.particle(-0.5 * kRelX, -0.5 * kRelV, kBodyMass, false, 0.02);
@@ -250,6 +254,10 @@ Problem orbit(bool quick) {
   p.measure = [] { return std::make_unique<OrbitMeasure>(); };
   const KeplerOrbit exact(mu(), kRelX, kRelV);
   p.exactMinSeparation = exact.semiMajorAxis() * (1 - exact.eccentricity());
+  p.setup = {{"mass", kBodyMass}, {"G", kG},           {"mu", mu()},
+             {"rx", kRelX.x()},  {"ry", kRelX.y()},    {"vx", kRelV.x()},
+             {"vy", kRelV.y()},  {"periods", 2.0},     {"a", exact.semiMajorAxis()},
+             {"e", exact.eccentricity()}, {"period", exact.period()}};
   return p;
 }
 

@@ -2,10 +2,10 @@
 
 namespace fosssim::study {
 
-SceneXml pileScene(const Method& method, double dt, int columns, int rows) {
+SceneBuilder pileScene(const Method& method, double dt, int columns, int rows) {
   constexpr double r = 0.1, spacing = 2 * r + 0.02;
   const double halfWidth = 0.5 * (columns * spacing + 0.1);
-  SceneXml x;
+  SceneBuilder x;
   x.duration(1.5).method(method, dt).gravity(Vec2(0, -9.81));
   x.halfplane(Vec2(0, 0), Vec2(0, 1));
   x.halfplane(Vec2(-halfWidth, 0), Vec2(1, 0));

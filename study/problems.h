@@ -4,7 +4,7 @@
 #pragma once
 
 #include "run.h"
-#include "scene_xml.h"
+#include "scene_builder.h"
 
 #include <algorithm>
 #include <cmath>
@@ -88,10 +88,13 @@ struct Problem {
   std::vector<Method> methods;
   std::vector<double> dts;
   /// The scene for a method and a time step.
-  std::function<SceneXml(const Method&, double dt)> scene;
+  std::function<SceneBuilder(const Method&, double dt)> scene;
   std::function<std::unique_ptr<Measurement>()> measure;
   double omega = kNotApplicable;          ///< angular frequency of a linear oscillator (springs)
   double exactMinSeparation = kNotApplicable;  ///< the exact closest approach (orbit: periapsis)
+  /// The set-up's numbers and the exact answer's (from closed_forms.h), by name, for the report's
+  /// table of problems (problems.csv): the page types none of them.
+  std::vector<std::pair<std::string, double>> setup;
 };
 
 /// A problem with its heading filled in; its maker adds the scene and the measurement.

@@ -17,7 +17,7 @@ namespace {
 
 struct ProfileCase {
   std::string scene;  ///< what the scene is
-  SceneXml xml;
+  SceneBuilder builder;
   Method method;
 };
 
@@ -34,7 +34,7 @@ ProfileCase fromProblem(const std::vector<Problem>& problems, const std::string&
       const Method m = find(p.methods, label);
       return ProfileCase{p.title, p.scene(m, dt), m};
     }
-  return ProfileCase{name, SceneXml(), Method{}};
+  return ProfileCase{name, SceneBuilder(), Method{}};
 }
 
 std::vector<ProfileCase> cases(bool quick) {
@@ -103,7 +103,7 @@ Status runProfile(const StudyOptions& options) {
     SceneFile file;
     double spent = 0;
     for (int repeat = 0; repeat < 3 && (repeat == 0 || spent < 1.0); ++repeat) {
-      if (Status s = c.xml.load("profile.xml", file); !s) return s;
+      if (Status s = c.builder.build("profile.xml", file); !s) return s;
       std::vector<ForceTime> times(file.scene.forces.size());
       keywords.clear();
       for (size_t f = 0; f < file.scene.forces.size(); ++f) {

@@ -17,6 +17,8 @@ import study_data as sd  # noqa: E402
 import report_text as text  # noqa: E402
 import report_contacts as contacts  # noqa: E402
 import report_limits as limits  # noqa: E402
+import report_newton as newton_report  # noqa: E402
+import report_setup as setup  # noqa: E402
 
 
 def fmt(x, digits=2):
@@ -92,6 +94,7 @@ FACTS = {}  # numbers the sections find on the way, for the prose
 
 def stability_section(data_dir, rel):
     rows = sd.load(data_dir, "stability")
+    blow_up = setup.facts(data_dir, sys.modules[__name__]).get("blow_up", "—")  # the study's mark (problems.csv)
     out = []
     body = []
     for system in sd.unique(rows, "system"):
@@ -109,7 +112,8 @@ def stability_section(data_dir, rel):
             else:
                 measured = "no stable dt found"
             reasons = sorted({r["failure"] for r in pts if isinstance(r["failure"], str) and r["failure"]})
-            body.append([system, integ, measured, text.STABILITY_THEORY[integ], ", ".join(reasons) or "—"])
+            body.append([system, integ, measured, text.STABILITY_THEORY[integ].format(blow_up=blow_up),
+                         ", ".join(reasons) or "—"])
     out.append(table(["system", "integrator", "measured limit ω_max·dt (over all k)", "theory",
                       "how the unstable runs ended"], body))
     ratio = [r["omega_max"] / math.sqrt(r["k"]) for r in rows if r["bobs"] > 1]
@@ -759,7 +763,7 @@ def main(argv):
     damped, damped_facts = limits.damped_section(data_dir, rel, sys.modules[__name__])
     shots, shots_facts = limits.shots_section(data_dir, rel, sys.modules[__name__])
     penalty, penalty_facts = limits.penalty_section(data_dir, rel, sys.modules[__name__])
-    newton, newton_facts = limits.newton_section(data_dir, rel, sys.modules[__name__])
+    newton, newton_facts = newton_report.section(data_dir, rel, sys.modules[__name__])
     sections = {
         "accuracy": accuracy_section(data_dir, rel),
         "damped": damped,
@@ -768,7 +772,7 @@ def main(argv):
         "robustness": robustness_section(data_dir, rel),
         "shots": shots,
         "penalty": penalty,
-        "newton": newton,
+        **newton,
         "hybrid": hybrid_section(data_dir, rel),
         "profile": profile_section(data_dir, rel),
         "contacts": contacts.section(data_dir, rel, sys.modules[__name__]),
@@ -779,6 +783,7 @@ def main(argv):
     all_facts.update(shots_facts)
     all_facts.update(penalty_facts)
     all_facts.update(newton_facts)
+    all_facts.update(setup.facts(data_dir, sys.modules[__name__]))
     all_facts.update(contacts.facts(data_dir, sys.modules[__name__]))
     mode_facts(data_dir, all_facts)
     pick_facts(all_facts)

@@ -276,7 +276,7 @@ def audit_section(data_dir, rel, r):
 
 def penalty_section(data_dir, rel, r):
     """Penalty contact's limits against stiffness and impact speed (from robustness.csv)."""
-    from charts_limits import penalty_limits
+    from charts_limits import contact_limit, penalty_limits, tunnel_speed
     rows = [x for x in sd.load(data_dir, "robustness") if x["collision"] == "penalty"]
     if not rows:
         return "", {}
@@ -290,13 +290,15 @@ def penalty_section(data_dir, rel, r):
         lost = [x["speed"] for x in rows if x["method"] == m and x["dt"] == finest and x["outcome"] != "bounced"]
         through = min(lost) if lost else math.nan
         held = [v for v, b in zip(speeds, bounced) if sd.finite(b)]
-        body.append([m, r.fmt(through, 3), r.fmt(0.04 * math.sqrt(k), 3),
+        first = next(x for x in rows if x["method"] == m)
+        limit = contact_limit(first)
+        body.append([m, r.fmt(through, 3), r.fmt(tunnel_speed(first), 3),
                      r.fmt(max(held), 3) if held else "—",
-                     stable_words(stable[0]) if sd.finite(stable[0]) else "—", r.fmt(2 / math.sqrt(k), 2)])
-        if sd.finite(stable[0]) and stable[0] > 2 / math.sqrt(k):
+                     stable_words(stable[0]) if sd.finite(stable[0]) else "—", r.fmt(limit, 2)])
+        if sd.finite(stable[0]) and stable[0] > limit:
             words.append(f"{m} stayed stable up to dt = {r.fmt(stable[0], 2)} s"
                          f"{' (the largest tried)' if stable[0] >= coarsest else ''} at {r.fmt(speeds[0], 2)} m/s, "
-                         f"above its contact spring's limit {r.fmt(2 / math.sqrt(k), 2)} s (a contact shorter than "
+                         f"above its contact spring's limit {r.fmt(limit, 2)} s (a contact shorter than "
                          "a few steps has no time to oscillate)")
     out = [r.image(rel, "penalty_limits", "penalty: largest stable and bouncing dt against speed and stiffness"),
            r.table(["method", f"slowest speed that did not bounce at dt = {r.fmt(finest)} s [m/s]",
@@ -305,39 +307,3 @@ def penalty_section(data_dir, rel, r):
                     "contact spring's limit 2·√(m/k) [s]"], body)]
     f = {"penalty_limit_words": ("; ".join(words) + ".") if words else ""}
     return "\n\n".join(out), f
-
-
-def newton_section(data_dir, rel, r):
-    """Where implicit Euler's Newton fails on orbits of rising eccentricity (newton_failure.csv)."""
-    import os
-    if not os.path.exists(os.path.join(data_dir, "newton_failure.csv")):
-        return "", {"newton_words": ""}
-    rows = sd.load(data_dir, "newton_failure")
-    imp = [x for x in rows if x["integrator"] == "implicit-euler"]
-    failed = [x for x in imp if x["outcome"] == "solver-failure"]
-    ran = [x for x in imp if x["outcome"] == "ok"]
-    body = []
-    for e in sorted(set(x["eccentricity"] for x in imp)):
-        mine = sorted([x for x in imp if x["eccentricity"] == e], key=lambda x: x["dt"])
-        ok = [x["dt"] for x in mine if x["outcome"] == "ok"]
-        bad = [x["dt"] for x in mine if x["outcome"] == "solver-failure"]
-        body.append([f"{e:.2f}", r.fmt(mine[0]["periapsis"], 3), r.fmt(mine[0]["omega_periapsis"], 3),
-                     r.fmt(max(ok), 2) if ok else "none", r.fmt(min(bad), 2) if bad else "none",
-                     r.fmt(max(x["min_separation"] / x["periapsis"] for x in mine if x["outcome"] != "ok"), 2)
-                     if bad else "—"])
-    inside = [x for x in failed if x["min_separation"] < x["periapsis"]]
-    lin = [x for x in rows if x["integrator"] == "linearized-implicit-euler"]
-    lin_bad = [x for x in lin if x["outcome"] == "ok" and x["min_separation"] < 0.5 * x["periapsis"]]
-    words = (f"Newton failed in {len(failed)} of {len(imp)} runs"
-             + (f"; the largest dt·ω_p that ran to the end was {r.fmt(max(x['dt_omega'] for x in ran), 3)} and "
-                f"the smallest that failed {r.fmt(min(x['dt_omega'] for x in failed), 3)}" if ran and failed else "")
-             + (f". Every failed run had first fallen inside its true periapsis" if failed and len(inside) == len(failed)
-                else f". {len(inside)} of the {len(failed)} failed runs had first fallen inside their true periapsis"
-                if failed else "")
-             + f". Linearized implicit Euler never stops with a solver failure, yet {len(lin_bad)} of its {len(lin)} runs came "
-             "within half the true periapsis (no sign of trouble in its output). The simulator does not report "
-             "Newton's iteration counts, so this maps failures, not iterations.")
-    out = [r.image(rel, "newton", "where implicit Euler's Newton fails"),
-           r.table(["eccentricity", "true periapsis r_p", "ω_p = √(μ/r_p³) [1/s]", "largest dt that ran to the end [s]",
-                    "smallest dt that failed [s]", "closest approach / r_p of the failed runs (largest)"], body)]
-    return "\n\n".join(out), {"newton_words": words}

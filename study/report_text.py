@@ -8,7 +8,7 @@ literal here is the set-up of each experiment and the physics behind it.
 
 STABILITY_THEORY = {
     # (cells of a Markdown table: a literal | is written \\|)
-    "explicit-euler": "never stable: \\|1 + iω dt\\| > 1 (the measured value is where the growth reached x1e6 within the probe)",
+    "explicit-euler": "never stable: \\|1 + iω dt\\| > 1 (the measured value is where the growth reached x{blow_up} within the probe)",
     "symplectic-euler": "stable for ω dt < 2",
     "implicit-euler": "stable for every dt: \\|1/(1 − iω dt)\\| < 1",
     "linearized-implicit-euler": "stable for every dt (the same as implicit Euler on a linear spring)",
@@ -148,19 +148,19 @@ METHODS = """\
 ## What is compared
 
 - **Integrators** (accuracy and stability): explicit Euler, symplectic Euler, implicit Euler
-  (Newton's method until the update is below 1e-9, at most 100 iterations) and linearized implicit
-  Euler (one Newton step), as in the scene format.
+  (Newton's method until the update is below {newton_tolerance}, at most {newton_limit} iterations) and
+  linearized implicit Euler (one Newton step), as in the scene format.
 - **Collision methods** (with symplectic Euler, in the default mode): `simple` (discrete, at the
   end of the step), `continuous-time` (contacts in time order within the step, one impulse each;
   a particle that has used up its quota of impulse events in a step hands its contacts to the
-  failsafe's impact zones), `hybrid` with its defaults (the same with a quota of maxiters = 10
-  events per particle, plus a penalty layer k = 10, thickness 0.1), `hybrid k=0` (the same
-  without the penalty layer's strength), and `penalty` at k = 1e2 (the default), 1e4 and 1e6
-  (thickness 0.01).
+  failsafe's impact zones), `hybrid` with its defaults (the same with a quota of maxiters =
+  {hybrid_maxiters} events per particle, plus a penalty layer k = {hybrid_k}, thickness {hybrid_thickness}),
+  `hybrid k=0` (the same without the penalty layer's strength), and `penalty` at k = {penalty_ks}
+  (thickness {penalty_thickness}).
 - **Unstable** means: the simulator reported a non-finite state (its error names the step and the
-  particle), an implicit solve failed, or the mechanical energy moved by more than **1e6 times** its
-  starting scale (max of |E0|, kinetic and |potential|). A run is stopped there and reported, never
-  crashed on. 1e6 marks a blow-up, not an accuracy limit: a run can be wildly wrong (energy x1e4)
+  particle), an implicit solve failed, or the mechanical energy moved by more than **{blow_up} times**
+  its starting scale (max of |E0|, kinetic and |potential|). A run is stopped there and reported,
+  never crashed on. {blow_up} marks a blow-up, not an accuracy limit: a run can be wildly wrong (energy x1e4)
   and still "ok"; its error then says so.
 """
 
@@ -170,16 +170,7 @@ PROBLEMS = """\
 Every answer below is derived from the physics, independently of the simulator; the tests in
 `tests/study/closed_forms_test.cpp` check each one against its own equation.
 
-| problem | set-up | exact answer | error measured |
-|---|---|---|---|
-| projectile | unit mass, x0 = 0, v0 = (3, 10) m/s, g = (0, −9.81) m/s², 2 s | x(t) = x0 + v0 t + g t²/2, v(t) = v0 + g t | position error at the end |
-| undamped spring | unit mass on a spring (k = 10 N/m, rest length 1 m) to a fixed anchor, stretched by 0.5 m, 10 s | u(t) = u0 cos ωt, ω = √(k/m) | position error at the end; energy error |
-| damped spring | the same with b = 1 N·s/m, 5 s | m u'' + b u' + k u = 0: γ = b/2m, ω_d = √(ω² − γ²), u = e^(−γt)(u0 cos ω_d t + (v0 + γu0)/ω_d sin ω_d t) (critical and over-damped forms in `closed_forms.cpp`) | position error; error of the energy against m u'²/2 + k u²/2 of the exact solution |
-| two-body orbit | masses 0.5 + 0.5, G = 1 (μ = G(m1 + m2) = 1), relative position (1, 0), relative velocity (0.25, 0.8), 2 periods | vis-viva: ε = v²/2 − μ/r, a = −μ/2ε = 0.770; h = r × v; e = √(1 + 2εh²/μ²) = 0.41; period T = 2π√(a³/μ) = 4.25 s; position from Kepler's equation M = E − e sin E, M = M0 + 2πt/T | separation error at the end; energy, angular momentum and momentum drift; period of the first revolution |
-| two disks | masses 1 and 2, radii 0.1, at (−0.5, 0) and (0.5, 0.1), velocities (1, 0) and (−1, 0), COR 1, 1 s | contact at the first root of \\|d + w t\\| = r1 + r2; along the contact normal n the approach speed u becomes −COR·u: J = (1 + COR) u / (1/m1 + 1/m2), v1 −= J n/m1, v2 += J n/m2; free flight before and after | position error at the end; contact-time error |
-| floor bounce, COR 0, 0.5, 1 | unit mass, radius 0.1, from (0, 1) at (1, 0) m/s under gravity onto the half-plane y ≥ 0, 0.8 s (one bounce) | contact when y = r: t_c = (v_y0 + √(v_y0² + 2g(y0 − r)))/g = 0.428 s; the normal velocity becomes −COR·v_y(t_c); free flight after (COR 0: rests on the floor) | position error at the end; contact-time error |
-| Newton's cradle | five unit disks (r = 0.1) in a row with 0.02 m gaps, the first at 1 m/s from 0.1 m away, 0.5 s | hard elastic disks pass the momentum on one contact at a time: each disk crosses its gap and stops, the last leaves at 1 m/s | position error at the end; energy and momentum error |
-| billiard break | a cue disk at 5 m/s into a 15-disk rack (0.02 m gaps), no cushions, COR 1, 0.5 s | momentum and kinetic energy are conserved | relative kinetic-energy error; momentum error |
+{problems_table}
 
 A measured contact time is the first step end at which the disk's velocity differs from its free
 flight by more than half the exact change (so it has the resolution of one step; a penalty force,
@@ -200,16 +191,16 @@ ACCURACY_WORDS = """\
   dt = {explicit_gain_dt}). {explicit_rule_words} Implicit Euler damps the energy away (the
   undamped spring loses {implicit_loss} % of it at that dt).
 - **Implicit Euler on the orbit fails** {orbit_failure}: Newton's method does not converge in
-  100 iterations near the close approach and the simulator reports it.{orbit_collapse_words} Linearized implicit Euler runs
+  {newton_limit} iterations near the close approach and the simulator reports it.{orbit_collapse_words} Linearized implicit Euler runs
   on at those steps and returns nonsense (separation errors of tens to hundreds of metres, energy
   gains of thousands of times), without any sign of trouble.
 {collision_words}
 {layer_words}
 {billiard_words}
 - **Penalty ignores COR** (it is a conservative spring: every floor bounce is elastic) and a soft
-  one lets disks through: at k = 1e2 (the default) the falling disk passes through the floor and the
-  two disks through each other. A stiff one is only stable for ω·dt < 2 with ω = √(k/m) (the
-  undamped limit of section 2): k = 1e6 on unit masses needs dt < 2e-3.
+  one lets disks through: at k = {penalty_default_k} (the default) the falling disk passes through the floor
+  and the two disks through each other. A stiff one is only stable for ω·dt < 2 with ω = √(k/m) (the
+  undamped limit of section 2): k = {penalty_stiffest} on unit masses needs dt < {penalty_stiffest_dt}.
 {cradle_note}
 - For collision problems the "order" in the table is erratic (including negative values): where
   the contact falls inside a step changes with dt, so errors do not fall on a straight line.
@@ -224,17 +215,18 @@ STABILITY_WORDS = """\
   (closed form {symplectic_critical_exact}/ω); heavily damped, both limits approach dt = 1/γ.
   Both implicit methods held at every step tried, up to ω dt = {damped_top}.
 - Without damping (the second table; springs of stiffness k on unit masses, bisection on ω_max·dt to
-  0.1 %) symplectic Euler's limit is ω_max·dt = 2, where ω_max is the fastest mode: √(k/m) for one
-  spring and {row_ratio}·√(k/m) for a row of ten, so a chain of springs needs about half the step.
+  {stab_bisection} %) symplectic Euler's limit is ω_max·dt = 2, where ω_max is the fastest mode: √(k/m) for
+  one spring and {row_ratio}·√(k/m) for a row of {row_bobs}, so a chain of springs needs about half the step.
   Explicit Euler's energy grows by 1 + (ω dt)² every step at every dt; the table's value is only
-  where that growth reached the study's blow-up mark (x1e6 within 10 periods of the fastest mode).
+  where that growth reached the study's blow-up mark (x{blow_up} within {stab_periods} periods of the fastest
+  mode).
 """
 
 ROBUSTNESS_WORDS = """\
 ### What it says
 
 - **`simple` tunnels** as soon as one step carries the disk across the contact band (the first
-  miss at speed·dt = {simple_band} m; the band is the disk's plus the edge's diameter, 0.06 m): the
+  miss at speed·dt = {simple_band} m; the band is the disk's plus the edge's diameter, {edge_band} m): the
   red triangle above the dashed line. {simple_stuck}
 - {ccd_robust}
 - **Random shots, judged by energy** (the fourth chart and the third table; {shots_per_target} shots at each
@@ -243,12 +235,20 @@ ROBUSTNESS_WORDS = """\
   {shots_compat}
 - **`penalty` tunnels whenever the disk is fast enough to compress the penalty spring by the
   thickness plus the radii**: by energy balance (second chart) the compression is v·√(m/k), so it
-  goes through above v = (r_disk + r_edge + thickness)·√(k/m) = 0.4, 4 and 40 m/s for k = 1e2,
-  1e4, 1e6, whatever the step; a large step only makes it worse (it skips the spring){penalty_unstable}.
+  goes through above v = (r_disk + r_edge + thickness)·√(k/m) = {penalty_speeds} m/s for k =
+  {penalty_k_list}, whatever the step; a large step only makes it worse (it skips the spring){penalty_unstable}.
   A disk that does bounce sinks in by v·√(m/k) − thickness, up to the whole radii sum just below
   the tunnelling speed (third chart and second table: where penalty stops bouncing against speed,
   stiffness and dt). {penalty_limit_words}
 """
+
+NEWTON_INTRO = """\
+### Where implicit Euler's Newton iteration fails
+
+Two bodies (μ = {newton_mu}) started at apoapsis r = {newton_apoapsis} with eccentricities from low to \
+high, so that the periapsis r_p comes closer and its pull stiffer (ω_p = √(μ/r_p³)), each run for \
+{newton_periods} periods over a sweep of dt, with implicit Euler (Newton until the update is below \
+{newton_tolerance}, at most {newton_limit} iterations) and linearized implicit Euler (one Newton step)."""
 
 HYBRID_INTRO = """\
 {box_disks} disks dropped into a box (three half-planes) under gravity, COR 0.5, dt = {box_dt} s,
@@ -308,8 +308,8 @@ PICK = """\
 ODDITIES = """\
 ## Things in the simulator that look wrong or cost more than they should
 
-{billiard_oddity}{layer_oddity}{shots_oddity}{compat_oddity}- Implicit Euler fails on the orbit {orbit_failure}: Newton does not converge in 100
-  iterations. Linearized implicit Euler returns large errors there, silently.
+{billiard_oddity}{layer_oddity}{shots_oddity}{compat_oddity}- Implicit Euler fails on the orbit {orbit_failure}: Newton does not converge in
+  {newton_limit} iterations. Linearized implicit Euler returns large errors there, silently.
 {oddity_broad}{oddity_stats}"""
 
 
@@ -322,8 +322,8 @@ def document(sections, facts, elapsed):
         INTRO.format(elapsed=when),
         PICK.format(**facts),
         MODES.format(**facts),
-        METHODS,
-        PROBLEMS,
+        METHODS.format(**facts),
+        PROBLEMS.format(**facts),
         "## 1. Accuracy against cost\n\nOne chart per problem: the error (log) against the wall time per "
         "simulated second (log) for every method over its sweep of dt. Circled points are the Pareto "
         "front: no other run of any method is both cheaper and more accurate.",
@@ -342,14 +342,15 @@ def document(sections, facts, elapsed):
         sections["damped"],
         sections["stability"],
         STABILITY_WORDS.format(**facts),
-        "### Where implicit Euler's Newton iteration fails\n\nTwo bodies (μ = 1) started at apoapsis r = 1 with "
-        "eccentricities from low to high, so that the periapsis r_p comes closer and its pull stiffer "
-        "(ω_p = √(μ/r_p³)), each run for two periods over a sweep of dt, with implicit Euler (Newton until the "
-        "update is below 1e-9, at most 100 iterations) and linearized implicit Euler (one Newton step).",
+        NEWTON_INTRO.format(**facts) if sections.get("newton") else "",
         sections.get("newton", ""),
         facts.get("newton_words", ""),
-        "## 3. Collision robustness\n\nA disk (radius 0.02 m, unit mass) thrown straight at a thin "
-        "fixed edge (radius 0.01 m), COR 1, for every collision method over speed x dt. At the end it "
+        "### Implicit Euler's Newton iterations per step" if sections.get("newton_iterations") else "",
+        sections.get("newton_iterations", ""),
+        facts.get("newton_iteration_words", ""),
+        f"## 3. Collision robustness\n\nA disk (radius {facts['edge_disk_radius']} m, mass "
+        f"{facts['edge_disk_mass']} kg) thrown straight at a thin fixed edge (radius {facts['edge_radius']} m), "
+        f"COR {facts['edge_cor']}, for every collision method over speed x dt. At the end it "
         "has *bounced* (its own side, moving away), *tunnelled* (the far side), got *stuck* (overlapping "
         "the edge, or stopped on its own side), or the run was *unstable*. The second chart shows how "
         "deep the penalty methods let it sink, the third where penalty stops bouncing, and the fourth judges "

@@ -3,13 +3,15 @@
 #include "csv.h"
 #include "experiments.h"
 
+#include "fosssim/core/collision_handler.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace fosssim::study {
 namespace {
 
-constexpr double kDiskRadius = 0.02, kEdgeRadius = 0.01, kReach = kDiskRadius + kEdgeRadius;
+constexpr double kDiskRadius = 0.02, kEdgeRadius = 0.01, kReach = kDiskRadius + kEdgeRadius, kDiskMass = 1.0;
 
 }  // namespace
 
@@ -23,22 +25,22 @@ const char* edgeOutcomeName(EdgeOutcome outcome) {
   return "unstable";
 }
 
-SceneXml edgeThrowScene(const Method& method, double speed, double dt, double* startHeight) {
+SceneBuilder edgeThrowScene(const Method& method, double speed, double dt, double* startHeight) {
   const double h = kReach + std::max(0.1, 5.37 * speed * dt);
   if (startHeight) *startHeight = h;
-  SceneXml x;
+  SceneBuilder x;
   x.duration(2 * h / speed).method(method, dt);
   const int a = x.particle(Vec2(-1, 0), Vec2(0, 0), 1.0, true, kEdgeRadius);
   const int b = x.particle(Vec2(1, 0), Vec2(0, 0), 1.0, true, kEdgeRadius);
   x.edge(a, b, kEdgeRadius);
-  x.particle(Vec2(0, h), Vec2(0, -speed), 1.0, false, kDiskRadius);
+  x.particle(Vec2(0, h), Vec2(0, -speed), kDiskMass, false, kDiskRadius);
   return x;
 }
 
 EdgeThrow throwAtEdge(const Method& method, double speed, double dt) {
   EdgeThrow out;
   SceneFile file;
-  if (Status s = edgeThrowScene(method, speed, dt, &out.startHeight).load("thin-edge.xml", file); !s) {
+  if (Status s = edgeThrowScene(method, speed, dt, &out.startHeight).build("thin-edge.xml", file); !s) {
     out.run.outcome = Outcome::Error;
     out.run.message = s.message();
     return out;
@@ -62,7 +64,7 @@ Status runRobustness(const StudyOptions& options) {
   if (Status s = csv.open(options.outDir + "/robustness.csv",
                           {"method", "collision", "k", "speed", "dt", "speed_dt", "outcome", "steps", "exit_speed_ratio",
                            "max_overlap", "max_overlap_rel", "overlap_steps", "collisions", "run_outcome",
-                           "message"});
+                           "disk_radius", "edge_radius", "disk_mass", "penalty_k", "thickness", "maxiters", "default_k", "cor", "message"});
       !s)
     return s;
   std::vector<double> speeds, dts;
@@ -73,6 +75,9 @@ Status runRobustness(const StudyOptions& options) {
   for (int e = options.quick ? -12 : -16; e <= -4; e += dtStep) dts.push_back(std::pow(10.0, e / 4.0));
   for (const Method& m : collisionMethods()) {
     if (options.log) *options.log << "robustness: " << m.label << std::flush;
+    SceneFile settings;  // the method's settings as the scene resolves them (the table's defaults)
+    if (Status s = edgeThrowScene(m, 1.0, 1e-3).build("thin-edge.xml", settings); !s) return s;
+    const CollisionSettings& c = settings.scene.collision;
     for (double speed : speeds) {
       for (double dt : dts) {
         const EdgeThrow t = throwAtEdge(m, speed, dt);
@@ -82,7 +87,8 @@ Status runRobustness(const StudyOptions& options) {
         csv << m.label << m.collision.type << (m.collision.k >= 0 ? m.collision.k : kNotApplicable) << speed << dt
             << speed * dt << edgeOutcomeName(outcome) << r.steps << exitRatio << r.overlap.deepest
             << r.overlap.deepest / kReach << r.overlap.stepsWithOverlap << r.collisions << outcomeName(r.outcome)
-            << r.message;
+            << kDiskRadius << kEdgeRadius << kDiskMass << c.penaltyK << c.penaltyThickness << c.maxIterations
+            << collisionEntry(c.type).defaultK << c.cor << r.message;
         if (Status s = csv.endRow(); !s) return s;
       }
       if (options.log) *options.log << "." << std::flush;

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "run.h"
-#include "scene_xml.h"
+#include "scene_builder.h"
 
 namespace fosssim::study {
 
@@ -27,7 +27,7 @@ struct EdgeThrow {
 /// The scene: edge from (-1, 0) to (1, 0) between fixed particles, the disk at (0, h) moving down at
 /// `speed`, h = 0.03 + max(0.1, 5.37 speed dt) (an offset that does not land on the edge exactly);
 /// the duration lets free flight end as far below the edge as it started above.
-SceneXml edgeThrowScene(const Method& method, double speed, double dt, double* startHeight = nullptr);
+SceneBuilder edgeThrowScene(const Method& method, double speed, double dt, double* startHeight = nullptr);
 
 EdgeThrow throwAtEdge(const Method& method, double speed, double dt);
 

@@ -40,7 +40,10 @@ void addPhases(StepStats& sum, const StepStats& s) {
 /// this tells failsafe use and zone membership from the outside, whatever the handler counts.
 class FailsafeWatch final : public StepObserver {
  public:
-  void midStep(const CollisionLog&, State& state) override { mid_ = state.x; }
+  const State* midStep(const CollisionLog&, const State& state) override {
+    mid_ = state.x;
+    return nullptr;  // watching only: the step goes on from the handler's own state
+  }
   /// Particles whose end position differs from the mid-step one.
   int moved(const State& end) const {
     int n = 0;
@@ -107,6 +110,7 @@ RunResult runScene(const SceneFile& file, const RunOptions& options, const StepV
     const Clock::time_point begin = Clock::now();
     const Status s = sim->step(scene, r.final, hybrid ? &watch : nullptr);
     r.stepSeconds += seconds(begin, Clock::now());
+    r.mostNewtonIterations = std::max(r.mostNewtonIterations, sim->stats().newtonIterations);
     if (!s) {
       r.outcome = classify(s.message());
       r.message = s.message();
@@ -115,6 +119,7 @@ RunResult runScene(const SceneFile& file, const RunOptions& options, const StepV
     ++r.steps;
     const StepStats& st = sim->stats();
     addPhases(r.phases, st);
+    r.newtonIterations += st.newtonIterations;
     r.collisions += std::max<long>(static_cast<long>(sim->log().impulses.size()), st.collisions);
     r.impulsePasses += st.impulsePasses;
     // The course's hybrid is seen from outside (FailsafeWatch); the default mode's handlers call no

@@ -51,6 +51,8 @@ struct RunResult {
   long impulsePasses = 0;   ///< hybrid: detection passes, summed over steps
   long zoneSum = 0;         ///< hybrid: impact zones, summed over failsafe steps
   int largestZone = 0;      ///< hybrid: particles in the largest impact zone of the run
+  long newtonIterations = 0;     ///< the integrator's Newton iterations, summed over completed steps
+  int mostNewtonIterations = 0;  ///< the most in one step, the failed step included
   StepStats phases;         ///< per-phase timings and counters summed over steps
   OverlapTally overlap;
   double energy0 = 0, energyEnd = 0;

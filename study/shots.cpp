@@ -150,7 +150,7 @@ double shotClearance(const Shot& shot, const Vec2& centre) {
   return d - kReach;
 }
 
-SceneXml shotScene(const Shot& shot, const Method& method) {
+SceneBuilder shotScene(const Shot& shot, const Method& method) {
   Method m = method;
   m.collision.cor = shot.cor;
   double duration = 0;
@@ -158,7 +158,7 @@ SceneXml shotScene(const Shot& shot, const Method& method) {
     duration = kSlotCrossings * 2 * shot.offset / (shot.speed * std::abs(std::sin(shot.angle)));
   else
     duration = 3.5 * approach(shot) / shot.speed;  // out again by at least COR x 2.5 x the approach
-  SceneXml x;
+  SceneBuilder x;
   x.duration(duration).method(m, shot.dt);
   std::vector<Vec2> ends;  // fixed particles, shared where edges meet
   auto endpoint = [&](const Vec2& p) {
@@ -178,7 +178,7 @@ SceneXml shotScene(const Shot& shot, const Method& method) {
 ShotResult fireShot(const Shot& shot, const Method& method, bool compat) {
   ShotResult out;
   SceneFile file;
-  if (Status s = shotScene(shot, method).load("shot.xml", file); !s) {
+  if (Status s = shotScene(shot, method).build("shot.xml", file); !s) {
     out.run.outcome = Outcome::Error;
     out.run.message = s.message();
     return out;

@@ -7,7 +7,7 @@
 #pragma once
 
 #include "run.h"
-#include "scene_xml.h"
+#include "scene_builder.h"
 
 #include "fosssim/core/status.h"
 
@@ -40,7 +40,7 @@ double shotClearance(const Shot& shot, const Vec2& centre);
 
 /// The scene: the fixed edges, the disk starting 0.3 m plus three steps of flight before its aim
 /// point, for long enough to leave as far after a bounce (slot: six crossings of the slot).
-SceneXml shotScene(const Shot& shot, const Method& method);
+SceneBuilder shotScene(const Shot& shot, const Method& method);
 
 enum class ShotOutcome {
   Bounced,     ///< on its own side, clear of the edges, energy within COR's bounds (0.1 % leeway)

@@ -7,8 +7,8 @@
 
 namespace fosssim::study {
 
-SceneXml springRow(int bobs, double k, const std::string& integrator, double dt) {
-  SceneXml x;
+SceneBuilder springRow(int bobs, double k, const std::string& integrator, double dt) {
+  SceneBuilder x;
   x.integrator(integrator, dt).duration(1.0);  // the probe sets its own number of steps
   int previous = x.particle(Vec2(0, 0), Vec2(0, 0), 1.0, true, 0.05);
   for (int i = 1; i <= bobs; ++i) {
@@ -26,14 +26,21 @@ double highestFrequency(int bobs, double k) {
   return 2 * std::sqrt(k) * std::sin((2 * bobs - 1) * M_PI / (4 * bobs + 2));
 }
 
+namespace {
+/// A probe runs this many periods of the fastest mode (at least 200 steps)...
+constexpr double kHorizonPeriods = 10;
+/// ...and the bisection on omega dt stops when its bracket's ratio is below this.
+constexpr double kBisectionRatio = 1.001;
+}  // namespace
+
 long stabilityHorizon(double omegaMax, double dt) {
-  const double periods = 10 * 2 * M_PI / omegaMax;
+  const double periods = kHorizonPeriods * 2 * M_PI / omegaMax;
   return std::max(200L, static_cast<long>(std::ceil(periods / dt)));
 }
 
 RunResult probeStability(int bobs, double k, const std::string& integrator, double dt) {
   SceneFile file;
-  if (Status s = springRow(bobs, k, integrator, dt).load("spring-row.xml", file); !s) {
+  if (Status s = springRow(bobs, k, integrator, dt).build("spring-row.xml", file); !s) {
     RunResult r;
     r.outcome = Outcome::Error;
     r.message = s.message();
@@ -68,7 +75,7 @@ StabilityLimit findStabilityLimit(int bobs, double k, const std::string& integra
     return out;
   }
   double lo = sLow, hi = sHigh;
-  while (hi / lo > 1.001) {
+  while (hi / lo > kBisectionRatio) {
     const double mid = std::sqrt(lo * hi);
     RunResult r;
     if (probe(mid, &r)) {
@@ -89,7 +96,7 @@ Status runStability(const StudyOptions& options) {
   if (Status s = csv.open(options.outDir + "/stability.csv",
                           {"system", "bobs", "integrator", "k", "omega_max", "largest_stable_dt",
                            "smallest_unstable_dt", "capped", "dt_tried_max", "dt_tried_min", "failure",
-                           "failure_step", "probes", "message"});
+                           "failure_step", "probes", "horizon_periods", "bisection_ratio", "message"});
       !s)
     return s;
   // omega dt: far below and far above every limit (quick: fewer steps in the lowest probe)
@@ -107,7 +114,7 @@ Status runStability(const StudyOptions& options) {
         csv << system << bobs << m.integrator << k << omega << limit.largestStable << limit.smallestUnstable
             << (limit.capped ? 1L : 0L) << sHigh / omega << sLow / omega
             << (failed ? outcomeName(limit.failure.outcome) : "") << (failed ? limit.failure.final.step : 0L)
-            << limit.probes << (failed ? limit.failure.message : std::string());
+            << limit.probes << kHorizonPeriods << kBisectionRatio << (failed ? limit.failure.message : std::string());
         if (Status s = csv.endRow(); !s) return s;
         if (options.log) *options.log << "." << std::flush;
       }
@@ -115,7 +122,8 @@ Status runStability(const StudyOptions& options) {
     }
   }
   if (Status s = runDampedStability(options); !s) return s;
-  return runNewtonFailure(options);
+  if (Status s = runNewtonFailure(options); !s) return s;
+  return runNewtonIterations(options);
 }
 
 }  // namespace fosssim::study

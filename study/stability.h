@@ -4,7 +4,7 @@
 #pragma once
 
 #include "run.h"
-#include "scene_xml.h"
+#include "scene_builder.h"
 
 #include <string>
 
@@ -13,7 +13,7 @@ namespace fosssim::study {
 /// A row of `bobs` unit masses on the x axis joined by springs of stiffness k and rest length 1,
 /// the first one to a fixed anchor; released from rest with alternating displacements of 1e-4
 /// (which puts energy into the highest mode too). bobs = 1 is a single spring.
-SceneXml springRow(int bobs, double k, const std::string& integrator, double dt);
+SceneBuilder springRow(int bobs, double k, const std::string& integrator, double dt);
 
 /// Highest angular frequency of springRow: the stiffness matrix k T (T tridiagonal 2, -1 with a
 /// last diagonal entry 1) has eigenvalues 4 k sin^2((2j - 1) pi / (4 bobs + 2)), j = 1..bobs.

@@ -36,8 +36,9 @@ TEST(StudyExperiments, QuickMatrixWritesEveryCsvFile) {
   ASSERT_TRUE(runHybridCost(options).isOk());
   ASSERT_TRUE(runProfile(options).isOk());
   ASSERT_TRUE(runContacts(options).isOk());
-  for (const char* name : {"accuracy", "audit_series", "stability", "damped_stability", "robustness",
-                           "robustness_shots", "hybrid", "profile", "contacts_series", "contacts_summary"})
+  for (const char* name : {"accuracy", "problems", "audit_series", "stability", "damped_stability",
+                           "newton_failure", "newton_iterations", "robustness", "robustness_shots", "hybrid",
+                           "profile", "contacts_series", "contacts_summary"})
     EXPECT_GT(lines((dir / (std::string(name) + ".csv")).string()), 2) << name;
   std::filesystem::remove_all(dir);
 }

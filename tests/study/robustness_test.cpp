@@ -62,7 +62,7 @@ TEST(StudyRobustness, PenaltyTunnelsAboveTheEnergyBalanceSpeed) {
 
 TEST(StudyInterpenetration, MeasuresEveryPairKindAndSkipsWhatCannotSeparate) {
   SceneFile file;
-  SceneXml x;
+  SceneBuilder x;
   x.duration(1).integrator("symplectic-euler", 0.01);
   x.particle(Vec2(0, 0.05), Vec2(0, 0), 1, false, 0.1);     // 0.05 into the floor
   x.particle(Vec2(0.15, 0.05), Vec2(0, 0), 1, false, 0.1);  // 0.05 into particle 0, 0.05 into the floor
@@ -70,7 +70,7 @@ TEST(StudyInterpenetration, MeasuresEveryPairKindAndSkipsWhatCannotSeparate) {
   const int b = x.particle(Vec2(-0.95, 0.5), Vec2(0, 0), 1, true, 0.1);  // fixed pair: skipped
   x.edge(a, b, 0.01);  // its own ends are not counted against it
   x.halfplane(Vec2(0, 0), Vec2(0, 2));  // unnormalised normal
-  ASSERT_TRUE(x.load("overlap.xml", file).isOk());
+  ASSERT_TRUE(x.build("overlap.xml", file).isOk());
   const Overlap o = measureOverlap(file.scene, file.initial.x);
   EXPECT_EQ(o.pairs, 3);
   EXPECT_NEAR(o.deepest, 0.05, 1e-12);

@@ -27,7 +27,7 @@ TEST(StudyShots, DrawsAreRepeatableAndStartClearOfTheEdges) {
       EXPECT_GE(a.cor, 0.5);
       EXPECT_LE(a.cor, 1.0);
       SceneFile file;
-      ASSERT_TRUE(shotScene(a, method("simple")).load("shot.xml", file).isOk());
+      ASSERT_TRUE(shotScene(a, method("simple")).build("shot.xml", file).isOk());
       const Vec2 start = at(file.initial.x, file.scene.numParticles() - 1);
       EXPECT_GT(shotClearance(a, start), t == ShotTarget::Slot ? 0.0 : 0.15) << shotTargetName(t) << " " << i;
     }

@@ -24,7 +24,7 @@ TEST(StudyStability, SymplecticEulerPastOmegaHTwoIsReportedAsUnstable) {
 // particle, and the study records it as a non-finite state rather than stopping.
 TEST(StudyStability, OverflowIsReportedAsNonFinite) {
   SceneFile file;
-  ASSERT_TRUE(springRow(1, 1e6, "explicit-euler", 0.1).load("row.xml", file).isOk());
+  ASSERT_TRUE(springRow(1, 1e6, "explicit-euler", 0.1).build("row.xml", file).isOk());
   RunOptions options;
   options.checkEnergy = false;
   options.steps = 100000;
