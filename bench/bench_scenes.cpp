@@ -161,7 +161,75 @@ void bullets(Builder& b, const BenchScene& s, int n, Setup& setup) {
   setup.thickness = 0.1 * r;
 }
 
+// The dense-pile family (bench_scenes.h). Runs of 1,000 steps (5 s): long enough for the V piles
+// to pour, pile up and slow down, and for the cost per 100-step block to show where it goes.
+constexpr long kPileSteps = 1000;
+
+/// The V piles: rain's grid and V, jittered by 0.4 of the gap between neighbours (rain's 0.2 lets
+/// a block fall nearly as a lattice), so that two neighbours still cannot start overlapping (each
+/// moves at most 0.4 of the gap towards the other). Low: the lowest row starts just above the V's
+/// arms (4 radii above them at the grid's edges), so the pile forms at once, in the issue's "poured
+/// into a V from just above it". High: the block lifted by its own height, so it lands at
+/// sqrt(2 g height) (11 m/s at N = 2,500, about a radius per step) and the impacts run through it.
+void pileV(Builder& b, int n, Setup& setup, double cor, bool high) {
+  const double r = 0.05, spacing = 2.5 * r;
+  const int columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
+  const int rows = (n + columns - 1) / columns;
+  const double width = (columns - 1) * spacing, height = (rows - 1) * spacing;
+  const double bottom = 0.5 * width + 4 * r + (high ? height : 0.0);
+  const double jitter = 0.4 * (spacing - 2 * r);
+  for (int k = 0; k < n; ++k)
+    b.add(1.0,
+          Vec2(-0.5 * width + (k % columns) * spacing + b.uniform(-jitter, jitter),
+               bottom + (k / columns) * spacing + b.uniform(-jitter, jitter)),
+          Vec2::Zero(), r);
+  b.plane(Vec2(0, 0), Vec2(1, 1));
+  b.plane(Vec2(0, 0), Vec2(-1, 1));
+  setup.cor = cor;
+  setup.steps = kPileSteps;
+}
+
+/// A pile that comes to rest: hexagonal rows in a flat-bottomed box, alternately m disks and m - 1
+/// disks in the grooves between them, each row a little above where it will settle, so that the
+/// pile sinks by a few hundredths of a radius per row and then stays. Frictionless disks rest in
+/// such a stack (each sits in a groove; the walls hold the ends of the full rows), which they do
+/// not in a V, where a frictionless pile keeps creeping. Horizontal pitch 2.04r (2% slack: the
+/// rows are not wedged between the walls); settled rows are then sqrt(4 - 1.02^2) r = 1.72r apart,
+/// and they start 1.8r apart. Jitter: 0.01r across, 0.02r up and down, which keeps every pair
+/// apart (nearest neighbours in the row above are at least sqrt(1.0^2 + 1.76^2) r = 2.02r away).
+void pileRest(Builder& b, int n, Setup& setup) {
+  const double r = 0.05, pitchX = 2.04 * r, pitchY = 1.8 * r;
+  // About square: width 2.04r m, height 1.8r n / (m - 0.5).
+  const int m = std::max(2, static_cast<int>(std::round(std::sqrt(0.88 * n))));
+  const double width = m * pitchX;
+  for (int k = 0, row = 0; k < n; ++row) {
+    const bool full = row % 2 == 0;
+    for (int i = 0; i < (full ? m : m - 1) && k < n; ++i, ++k)
+      b.add(1.0,
+            Vec2(-0.5 * width + (i + (full ? 0.5 : 1.0)) * pitchX + b.uniform(-0.01 * r, 0.01 * r),
+                 1.03 * r + row * pitchY + b.uniform(-0.02 * r, 0.02 * r)),
+            Vec2::Zero(), r);
+  }
+  b.plane(Vec2(0, 0), Vec2(0, 1));
+  b.plane(Vec2(-0.5 * width, 0), Vec2(1, 0));  // the walls' points on the floor: see box2d_pile.cpp
+  b.plane(Vec2(0.5 * width, 0), Vec2(-1, 0));
+  setup.cor = 0.0;
+  setup.steps = kPileSteps;
+}
+
 }  // namespace
+
+const std::vector<std::string>& pileKinds() {
+  static const std::vector<std::string> kinds = {"pile-low-cor0", "pile-low-cor0.5", "pile-high-cor0", "pile-high-cor0.5",
+                                                 "pile-rest"};
+  return kinds;
+}
+
+std::vector<std::string> allKinds() {
+  std::vector<std::string> kinds = sceneKinds();
+  kinds.insert(kinds.end(), pileKinds().begin(), pileKinds().end());
+  return kinds;
+}
 
 const std::vector<std::string>& sceneKinds() {
   static const std::vector<std::string> kinds = {"rain", "gas", "chains", "bullets"};
@@ -177,6 +245,11 @@ bool makeScene(const std::string& kind, int n, const std::string& collision, uns
   else if (kind == "gas") gas(b, n, setup);
   else if (kind == "chains") chains(b, out, n, setup);
   else if (kind == "bullets") bullets(b, out, n, setup);
+  else if (kind == "pile-low-cor0") pileV(b, n, setup, 0.0, false);
+  else if (kind == "pile-low-cor0.5") pileV(b, n, setup, 0.5, false);
+  else if (kind == "pile-high-cor0") pileV(b, n, setup, 0.0, true);
+  else if (kind == "pile-high-cor0.5") pileV(b, n, setup, 0.5, true);
+  else if (kind == "pile-rest") pileRest(b, n, setup);
   else return false;
   b.finish(collision, setup);
   out.description = kind + ", " + std::to_string(out.scene.numParticles()) + " particles, " +

@@ -9,6 +9,14 @@
 //            onto a floor between two walls (3 impulse passes: see bench_scenes.cpp)
 //   bullets  fast small disks (40-60 m/s, a sparse field) shot at a fixed chain of thin edges,
 //            a ceiling above and walls at the sides: every bullet crosses 20-30 radii per step
+// The dense-pile family (pileKinds(), issue 17: scenes that cannot flatter a method), 1,000 steps,
+// every start jittered from the seed:
+//   pile-low-cor0, pile-low-cor0.5    disks r = 0.05 on a 2.5r grid jittered by 0.4 of the gap,
+//                                      poured at rest into a V from just above it (rain's start)
+//   pile-high-cor0, pile-high-cor0.5  the same block lifted by its own height: it lands at speed
+//   pile-rest                          disks stacked almost settled (small gaps) in a flat-bottomed
+//                                      box, hexagonally, COR 0: it comes to rest within a few dozen
+//                                      steps and stays there (what a resting pile costs)
 #pragma once
 
 #include "fosssim/core/scene.h"
@@ -31,10 +39,17 @@ struct BenchScene {
 /// The scene kinds, in the order the benchmark shows them.
 const std::vector<std::string>& sceneKinds();
 
+/// The dense-pile family, in the order the benchmark shows them (not in sceneKinds(): the
+/// benchmark's default table stays what it was; scripts/bench --piles runs these).
+const std::vector<std::string>& pileKinds();
+
+/// sceneKinds() then pileKinds(): every name makeScene knows.
+std::vector<std::string> allKinds();
+
 /// The collision types a scene can be made with (the keywords of the collision table).
 std::vector<std::string> collisionTypes();
 
-/// Builds `kind` with about n particles (exactly n for rain and gas). `collision` is the
+/// Builds `kind` with about n particles (exactly n for rain, gas and the piles). `collision` is the
 /// <collision type>; the seed fixes the random velocities and jitter. Unknown kind: false.
 bool makeScene(const std::string& kind, int n, const std::string& collision, unsigned seed, BenchScene& out);
 

@@ -3,7 +3,8 @@
 //
 //   fosssim-bench [--sizes 1000,10000,100000] [--scenes rain,gas,chains,bullets] [--collision hybrid]
 //                 [--steps K] [--repeats R] [--all-pairs] [--compat] [--threads T] [--csv FILE] [--no-queries]
-//                 [--no-steps] [--alternatives]      (fosssim-bench -h says what each does)
+//                 [--no-steps] [--alternatives] [--seed S] [--blocks] [--blocks-csv FILE]
+//                                                    (fosssim-bench -h says what each does)
 // --alternatives also times the broad-phase designs that were measured before choosing one
 // (broad_phase_alternatives.h) on the rain, gas and bullets scenes.
 //
@@ -12,7 +13,12 @@
 // warm-up (discarded), then R runs of the scene's full length from its initial state; the
 // figures are those of the fastest run (the machine may be shared). Query rates are CPU time of
 // this thread, best of R.
+//
+// Runs of 1,000 steps or more (the dense-pile family's) also get a table per block of 100 steps
+// (block_table.h): ms per step, the failsafe's part, the share of particles in failsafe zones
+// and the share at rest, so that a cost that creeps or a pile that rests expensively shows.
 #include "bench_scenes.h"
+#include "block_table.h"
 #include "broad_phase_alternatives.h"
 #include "query_rates.h"
 
@@ -48,12 +54,17 @@ struct Options {
   bool queries = true;
   bool stepTable = true;
   bool alternatives = false;
+  unsigned seed = 1;        ///< fixes the scenes' jitter and random velocities
+  bool blocks = false;      ///< the block table for runs shorter than 1,000 steps too
+  std::string blocksCsv;    ///< the block rows appended to this CSV file
+  double timeLimit = 0;     ///< seconds: a timed run stops after the block that passes it (0: none)
 };
 
 /// What a child reports about one scene and size (plain data: it crosses a pipe).
 struct Figures {
   int particles = 0, edges = 0;
-  long steps = 0;
+  long steps = 0;  ///< steps of the run reported (fewer than asked when it hit --time-limit)
+  bool stopped = false;  ///< the run hit --time-limit
   double integrate = 0, broad = 0, narrow = 0, response = 0, failsafe = 0, total = 0;  ///< seconds, whole run
   double candidates = 0, queries = 0, collisions = 0, passes = 0, rounds = 0;  ///< summed over the run
   long failsafeSteps = 0;
@@ -62,6 +73,9 @@ struct Figures {
   long rigidSteps = 0;       ///< steps in which some zone moved rigidly (or stopped)
   double bytesPerParticle = 0;  ///< peak resident memory grown while building and running
   double growthBytes = 0;       ///< resident memory grown from a tenth into the first run to its end
+  Block blocks[kMaxBlocks];  ///< the fastest run's blocks of kBlockSteps steps (the first kMaxBlocks)
+  int blockCount = 0;
+  double restSpeed = 0;
   bool ok = false;
   char error[200] = {};
 };
@@ -99,13 +113,14 @@ Figures runScene(const Options& o, const std::string& kind, int n) {
   Figures f;
   const long before = residentBytes();
   BenchScene s;
-  if (!makeScene(kind, n, o.collision, 1, s)) {
+  if (!makeScene(kind, n, o.collision, o.seed, s)) {
     std::snprintf(f.error, sizeof f.error, "unknown scene %s", kind.c_str());
     return f;
   }
   f.particles = s.scene.numParticles();
   f.edges = static_cast<int>(s.scene.edges.size());
   f.steps = o.steps > 0 ? o.steps : s.scene.numSteps();
+  f.restSpeed = runLabel("", s, o.seed).restSpeed;
   SimulatorOptions options;
   options.handler.allPairs = o.allPairs;
   options.handler.compat = o.compat;
@@ -117,10 +132,14 @@ Figures runScene(const Options& o, const std::string& kind, int n) {
   }
   sim->setTiming(true);
   long early = 0;  // resident memory a tenth into a run: the run's growth is measured from here
+  // Timed by blocks of kBlockSteps steps; the share at rest is taken between blocks, untimed.
   auto run = [&](long steps, Figures& into) -> bool {
     State state = s.state;
     into = Figures{};
-    const auto start = std::chrono::steady_clock::now();
+    Block block;
+    int blockZone = 0;  // particle-steps in zones in this block
+    double blockFailsafe = 0;
+    auto start = std::chrono::steady_clock::now();
     for (long k = 0; k < steps; ++k) {
       if (k == steps / 10) early = residentBytes();
       if (Status st = sim->step(s.scene, state); !st) {
@@ -142,8 +161,32 @@ Figures runScene(const Options& o, const std::string& kind, int n) {
       into.largestZone = std::max(into.largestZone, st.largestZone);
       into.zoneParticles += st.zoneParticles;
       into.rigidSteps += st.rigidZones > 0;
+      blockZone += st.zoneParticles;
+      blockFailsafe += st.failsafe;
+      if ((k + 1) % kBlockSteps == 0 || k + 1 == steps) {
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        into.total += seconds;
+        const long first = k / kBlockSteps * kBlockSteps + 1, inBlock = k + 1 - first + 1;
+        if (into.blockCount < kMaxBlocks) {
+          Block& b = into.blocks[into.blockCount++];
+          b.first = first;
+          b.last = k + 1;
+          b.msPerStep = 1000 * seconds / static_cast<double>(inBlock);
+          b.failsafeMs = 1000 * blockFailsafe / static_cast<double>(inBlock);
+          b.inZones = static_cast<double>(blockZone) / (static_cast<double>(inBlock) * s.scene.numParticles());
+          b.atRest = atRestShare(s.scene, state.v);
+        }
+        blockZone = 0;
+        blockFailsafe = 0;
+        into.steps = k + 1;
+        if (o.timeLimit > 0 && into.total > o.timeLimit && k + 1 < steps) {
+          into.stopped = true;
+          break;
+        }
+        start = std::chrono::steady_clock::now();
+      }
     }
-    into.total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    into.steps = into.steps ? into.steps : steps;
     return true;
   };
   Figures trial;
@@ -154,11 +197,12 @@ Figures runScene(const Options& o, const std::string& kind, int n) {
   for (int r = 0; r < repeats; ++r) {
     if (!run(f.steps, trial)) return f;
     if (r == 0) growth = residentBytes() - early;
-    if (r == 0 || trial.total < best.total) best = trial;
+    // Per step: runs stopped at --time-limit may differ in length.
+    if (r == 0 || trial.total / static_cast<double>(trial.steps) < best.total / static_cast<double>(best.steps)) best = trial;
   }
   best.particles = f.particles;
   best.edges = f.edges;
-  best.steps = f.steps;
+  best.restSpeed = f.restSpeed;
   best.bytesPerParticle = static_cast<double>(peakResidentBytes() - before) / f.particles;
   best.growthBytes = static_cast<double>(growth);
   best.ok = true;
@@ -179,7 +223,14 @@ Figures inChild(const Options& o, const std::string& kind, int n) {
     _exit(written == static_cast<ssize_t>(sizeof mine) ? 0 : 1);
   }
   close(fds[1]);
-  const ssize_t got = read(fds[0], &f, sizeof f);
+  // The figures are larger than PIPE_BUF: a read may return part of them.
+  ssize_t got = 0;
+  while (got < static_cast<ssize_t>(sizeof f)) {
+    const ssize_t part = read(fds[0], reinterpret_cast<char*>(&f) + got, sizeof f - got);
+    if (part < 0 && errno == EINTR) continue;
+    if (part <= 0) break;
+    got += part;
+  }
   close(fds[0]);
   int status = 0;
   waitpid(child, &status, 0);
@@ -198,10 +249,10 @@ void define(CLI::App& app, Options& o) {
       ->option_text("N,N,...")
       ->delimiter(',')
       ->check(cli::integerIn(1, 10000000));
-  app.add_option("--scenes", o.scenes, "scenes, comma-separated, of " + cli::listed(sceneKinds()) + " (default all)")
+  app.add_option("--scenes", o.scenes, "scenes, comma-separated, of " + cli::listed(allKinds()) + " (default " + cli::listed(sceneKinds()) + ")")
       ->option_text("NAME,...")
       ->delimiter(',')
-      ->check(cli::oneOf("scene", sceneKinds()));
+      ->check(cli::oneOf("scene", allKinds()));
   app.add_option("--collision", o.collision,
                  "collision handling of every scene, one of " + cli::listed(collisionTypes()) + " (default hybrid)")
       ->option_text("TYPE")
@@ -216,6 +267,16 @@ void define(CLI::App& app, Options& o) {
   app.add_option("--threads", o.threads, "threads for collision detection, 1 to 1024 (default 1)")
       ->option_text("T")
       ->check(cli::integerIn(1, 1024));
+  app.add_option("--seed", o.seed, "seed of the scenes' jitter and random velocities, 0 to 2^31 - 1 (default 1)")
+      ->option_text("S")
+      ->check(cli::integerIn(0, 2147483647));
+  app.add_option("--time-limit", o.timeLimit,
+                 "seconds per timed run: a run stops after the 100-step block that passes it and reports the "
+                 "steps it took (default: none)")
+      ->option_text("S")
+      ->check(cli::integerIn(1, 1000000));
+  app.add_flag("--blocks", o.blocks, "a table per block of 100 steps for every run (default: runs of 1,000+ steps)");
+  app.add_option("--blocks-csv", o.blocksCsv, "append the block tables' rows to this CSV file")->option_text("FILE");
   app.add_flag("--all-pairs", o.allPairs, "test every pair (no broad phase)");
   app.add_flag("--compat", o.compat, "the course's formulation instead of the default mode");
   app.add_option("--csv", o.csv, "also write the figures to this CSV file")->option_text("FILE");
@@ -247,22 +308,23 @@ int main(int argc, char** argv) {
   }
   printMachine();
   if (o.stepTable) {
-    std::printf("ms per step by phase (%s handling, %d thread%s%s%s; fastest of the repeated runs)\n", o.collision.c_str(),
-                o.threads, o.threads == 1 ? "" : "s", o.allPairs ? ", all pairs" : "", o.compat ? ", --compat" : "");
-    std::printf("%-8s %7s %6s %9s %7s %7s %7s %7s %8s %8s | %9s %9s %6s %5s %6s %6s %6s %5s %7s %6s\n", "scene", "N",
+    std::printf("ms per step by phase (%s handling, %d thread%s%s%s, seed %u; fastest of the repeated runs)\n",
+                o.collision.c_str(), o.threads, o.threads == 1 ? "" : "s", o.allPairs ? ", all pairs" : "",
+                o.compat ? ", --compat" : "", o.seed);
+    std::printf("%-16s %7s %6s %9s %7s %7s %7s %7s %8s %8s | %9s %9s %6s %5s %6s %6s %6s %5s %7s %6s\n", "scene", "N",
                 "steps", "integrate", "broad", "narrow", "respond", "failsafe", "other", "total", "cand/step",
                 "coll/step", "passes", "fs%", "rounds", "zone", "inzn%", "rgd%", "B/part", "grow/p");
     for (const std::string& kind : o.scenes) {
       for (int n : o.sizes) {
         const Figures f = inChild(o, kind, n);
         if (!f.ok) {
-          std::printf("%-8s %7d  failed: %s\n", kind.c_str(), n, f.error);
+          std::printf("%-16s %7d  failed: %s\n", kind.c_str(), n, f.error);
           continue;
         }
         const double per = 1000.0 / static_cast<double>(f.steps);
         const double other = f.total - f.integrate - f.broad - f.narrow - f.response - f.failsafe;
         const double steps = static_cast<double>(f.steps);
-        std::printf("%-8s %7d %6ld %9.3f %7.3f %7.3f %7.3f %8.3f %8.3f %8.3f | %9.0f %9.1f %6.2f %5.1f %6.1f %6d %6.1f "
+        std::printf("%-16s %7d %6ld %9.3f %7.3f %7.3f %7.3f %8.3f %8.3f %8.3f | %9.0f %9.1f %6.2f %5.1f %6.1f %6d %6.1f "
                     "%5.1f %7.0f %6.1f\n",
                     kind.c_str(), f.particles, f.steps, f.integrate * per, f.broad * per, f.narrow * per,
                     f.response * per, f.failsafe * per, other * per, f.total * per, f.candidates / steps,
@@ -270,7 +332,16 @@ int main(int argc, char** argv) {
                     f.failsafeSteps ? f.rounds / static_cast<double>(f.failsafeSteps) : 0.0, f.largestZone,
                     100.0 * f.zoneParticles / (steps * f.particles), 100.0 * static_cast<double>(f.rigidSteps) / steps,
                     f.bytesPerParticle, f.growthBytes / f.particles);
+        if (f.stopped) std::printf("  (stopped at --time-limit %g s after %ld steps)\n", o.timeLimit, f.steps);
         std::fflush(stdout);
+        if (f.steps >= 1000 || f.stopped || o.blocks || !o.blocksCsv.empty()) {
+          const RunLabel label{o.compat ? "FOSSSim --compat" : "FOSSSim", kind, f.particles, o.seed, f.restSpeed};
+          if (f.steps >= 1000 || f.stopped || o.blocks) printBlocks(label, f.blocks, f.blockCount);
+          if (!o.blocksCsv.empty() && !appendBlocksCsv(o.blocksCsv, label, f.blocks, f.blockCount)) {
+            std::fprintf(stderr, "fosssim-bench: cannot write %s: %s\n", o.blocksCsv.c_str(), std::strerror(errno));
+            return 1;
+          }
+        }
         if (csv) {
           csv << "steps," << kind << "," << n << "," << f.particles << "," << f.edges << "," << f.steps << ","
               << f.integrate * per << "," << f.broad * per << "," << f.narrow * per << "," << f.response * per << ","

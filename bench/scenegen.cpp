@@ -1,5 +1,5 @@
 // fosssim-scenegen: writes a benchmark scene (bench_scenes.h) as a FOSSSim scene file.
-//   fosssim-scenegen rain|gas|chains|bullets N [collision type, default hybrid] > scene.xml
+//   fosssim-scenegen rain|gas|chains|bullets|pile-... N [collision type, default hybrid] > scene.xml
 #include "bench_scenes.h"
 
 #include "cli_values.h"
@@ -17,10 +17,10 @@ int main(int argc, char** argv) {
                "Scenes: rain (disks falling into a V), gas (elastic disks in a box), chains (chains of capsules\n"
                "falling onto a floor), bullets (fast small disks shot at a chain of thin edges).",
                "fosssim-scenegen");
-  app.add_option("scene", kind, "one of " + cli::listed(bench::sceneKinds()))
+  app.add_option("scene", kind, "one of " + cli::listed(bench::allKinds()))
       ->required()
       ->option_text("(required)")
-      ->check(cli::oneOf("scene", bench::sceneKinds()));
+      ->check(cli::oneOf("scene", bench::allKinds()));
   app.add_option("N", n, "particles, 1 to 10^7 (about N for chains and bullets)")
       ->required()
       ->option_text("(required)")
