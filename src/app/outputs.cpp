@@ -28,7 +28,7 @@ Status TrajectoryOutput::start(const SceneFile& file, const State& initial, cons
   return Status::ok();
 }
 
-void TrajectoryOutput::midStep(const CollisionLog& log, State& state) {
+const State* TrajectoryOutput::midStep(const CollisionLog& log, const State& state) {
   // Held until afterStep: the step may still fail its finite check.
   if (midStatus_ && writer_) {
     midStatus_ = writer_->encode(state, log, pending_);
@@ -36,6 +36,7 @@ void TrajectoryOutput::midStep(const CollisionLog& log, State& state) {
       midStatus_ = Status::error(path_ + ": step " + std::to_string(state.step + 1) + "'s mid-step record: " +
                                  midStatus_.message());
   }
+  return nullptr;
 }
 
 Status TrajectoryOutput::afterStep(const SceneFile&, const State& state, const CollisionLog& log) {

@@ -27,7 +27,7 @@ class TrajectoryOutput final : public RunObserver {
   TrajectoryOutput(std::string path, bool compact, FreeSpaceQuery freeSpace = statvfsFreeSpace)
       : path_(std::move(path)), compact_(compact), freeSpace_(std::move(freeSpace)) {}
   Status start(const SceneFile& file, const State& initial, const RecordLayout& layout) override;
-  void midStep(const CollisionLog& log, State& state) override;
+  const State* midStep(const CollisionLog& log, const State& state) override;
   Status afterStep(const SceneFile& file, const State& state, const CollisionLog& log) override;
   void ending(RunEnd end) override { end_ = end; }
   Status finish() override;

@@ -19,7 +19,7 @@ class RunObserver : public StepObserver {
   /// Before the first step, with the initial state.
   virtual Status start(const SceneFile&, const State&, const RecordLayout&) { return Status::ok(); }
   /// Inside collision handling (layouts with a mid-step record only).
-  void midStep(const CollisionLog&, State&) override {}
+  const State* midStep(const CollisionLog&, const State&) override { return nullptr; }
   /// After every step.
   virtual Status afterStep(const SceneFile& file, const State& state, const CollisionLog& log) = 0;
   /// Before finish(): how the run ended.
@@ -35,8 +35,10 @@ class RunObserver : public StepObserver {
 class ObserverList final : public StepObserver {
  public:
   std::vector<std::unique_ptr<RunObserver>> items;
-  void midStep(const CollisionLog& log, State& state) override {
+  /// Outputs only record: none replaces the state.
+  const State* midStep(const CollisionLog& log, const State& state) override {
     for (auto& o : items) o->midStep(log, state);
+    return nullptr;
   }
 };
 

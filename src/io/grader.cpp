@@ -89,19 +89,21 @@ class Grader final : public StepObserver {
     polynomials(log.polynomials, ref.log.polynomials);
   }
 
-  void midStep(const CollisionLog& log, State& state) override {
-    if (failed_ || stopped()) return;
+  const State* midStep(const CollisionLog& log, const State& state) override {
+    if (failed_ || stopped()) return nullptr;
     if (!readNext(mid_, "mid-step")) {
       failed_ = true;
-      return;
+      return nullptr;
     }
     compare(true, state, log, mid_);
     if (!startable(mid_, "mid-step")) {
       failed_ = true;
-      return;
+      return nullptr;
     }
-    state.x = mid_.x;  // continue from the file's state, as the reference grader does
-    state.v = mid_.v;
+    // Continue from the file's state, as the reference grader does.
+    replacement_.x = mid_.x;
+    replacement_.v = mid_.v;
+    return &replacement_;
   }
 
   bool failed() const { return failed_; }
@@ -204,6 +206,7 @@ class Grader final : public StepObserver {
   bool failed_ = false, midStep_ = false;
   long lastFindingStep_ = -1;
   TrajectoryRecord mid_;
+  State replacement_;  ///< mid_'s positions and velocities, handed back to the handler
 };
 
 /// Record 0 must be the scene's initial state, within the tolerance of a single residual.

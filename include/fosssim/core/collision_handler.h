@@ -14,12 +14,16 @@
 
 namespace fosssim {
 
-/// Receives the state in the middle of collision handling (handlers whose layout has midStep):
-/// a trajectory writer records it; the grader compares it and may replace it with its own.
+/// Sees the state in the middle of collision handling (handlers whose layout has midStep): a
+/// trajectory writer records it, the grader compares it with the reference's record.
 class StepObserver {
  public:
   virtual ~StepObserver() = default;
-  virtual void midStep(const CollisionLog& log, State& state) = 0;
+  /// Returns a state whose positions and velocities the step is to go on from instead of
+  /// `state`'s, or nullptr to go on from `state`. Only grading replaces it: the course's grader continues every step from the
+  /// reference's mid-step record, so that one early difference is not reported at every later
+  /// record. The handler copies the replacement before it goes on.
+  virtual const State* midStep(const CollisionLog& log, const State& state) = 0;
 };
 
 /// Choices that do not belong to the scene file.
@@ -45,18 +49,24 @@ struct StepContext {
   bool timing = false;                  ///< measure phase times into *stats
 };
 
+/// The mid-step seam for handlers: shows `state` to the observer (if any) and takes the
+/// replacement it returns. True when the positions were replaced by different ones.
+bool showMidStep(StepContext& ctx, State& state);
+
 class CollisionHandler {
  public:
   virtual ~CollisionHandler() = default;
   /// start: the state at the beginning of the step; state: the integrator's prediction, changed
   /// in place into the collision-free end of the step.
   virtual Status handle(const Scene& scene, const State& start, State& state, StepContext& ctx) = 0;
-  /// The rigid impact zone that moved `particle` in the last step, or -1 (only the hybrid
-  /// handler has zones). Pairs inside one zone are exempt from verification.
+  /// Diagnostics: the rigid impact zone that moved `particle` in the last step, or -1 (only
+  /// the hybrid handler has zones).
   virtual int zoneOf(int /*particle*/) const { return -1; }
-  /// Pairs that still collide somewhere along the last step's motion from start to end (at
-  /// most `limit`, 0 = all): what --verify reports. By default the motion is the straight line
-  /// from start to end; handlers whose particles bend within a step check their own paths.
+  /// The verification seam: pairs that still collide somewhere along the last step's motion
+  /// from start to end (at most `limit`, 0 = all), what --verify reports. By default the motion
+  /// is the straight line from start to end and every pair counts; handlers whose particles
+  /// bend within a step check their own paths, and handlers that move zones rigidly exempt the
+  /// pairs inside one zone.
   virtual std::vector<Violation> unresolved(const Scene& scene, const VecX& start, const VecX& end,
                                             size_t limit) const;
 };

@@ -45,6 +45,11 @@ class HybridHandler final : public CollisionHandler {
       : cor_(settings.cor), maxIterations_(settings.maxIterations), search_(detectionRules(options), options.allPairs, options.threads) {}
   Status handle(const Scene& scene, const State& start, State& state, StepContext& ctx) override;
   int zoneOf(int particle) const override { return zones_.zoneOf(particle); }
+  /// Pairs inside one rigid zone are exempt: the zone moved them together, as the method means.
+  std::vector<Violation> unresolved(const Scene& scene, const VecX& start, const VecX& end,
+                                    size_t limit) const override {
+    return unresolvedCollisions(scene, start, end, [this](int p) { return zones_.zoneOf(p); }, limit);
+  }
 
  private:
   /// Iterative impulses; true when a detection pass found nothing.
@@ -65,7 +70,6 @@ class HybridHandler final : public CollisionHandler {
   std::vector<int> touched_;   ///< particles whose end position the last responses or rigid moves changed
   std::vector<char> marked_;   ///< N: scratch for touched_
   ImpactZones zones_;
-  VecX beforeObserver_;  ///< 2N: the end positions handed to the mid-step observer
 };
 
 }  // namespace fosssim

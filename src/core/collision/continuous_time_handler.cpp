@@ -15,7 +15,7 @@ Status ContinuousTimeHandler::handle(const Scene& scene, const State& start, Sta
     ctx.log->impulses.push_back(Impulse{c.kind, c.i, c.j, c.n, c.tau});
     applyWithDisplacement(collisionResponse(scene, c, cor_, start.x, state.x, ctx.dt), ctx.dt, state.x, state.v);
   });
-  if (ctx.observer) ctx.observer->midStep(*ctx.log, state);
+  showMidStep(ctx, state);
   return Status::ok();
 }
 

@@ -61,7 +61,7 @@ Status EventHandler::handle(const Scene& scene, const State& start, State& state
   // Finish: the end of every particle's last piece.
   state.x = motion_.end();
   zones_.sizes(*ctx.stats);
-  if (ctx.observer) ctx.observer->midStep(*ctx.log, state);
+  showMidStep(ctx, state);
   return Status::ok();
 }
 

@@ -9,23 +9,15 @@
 #include "collision_handlers.h"
 #include "impulse_response.h"
 
-#include <cstring>
-
 namespace fosssim {
 
 Status HybridHandler::handle(const Scene& scene, const State& start, State& state, StepContext& ctx) {
   zones_.reset(scene.numParticles());
   if (marked_.size() != static_cast<size_t>(scene.numParticles())) marked_.assign(scene.numParticles(), 0);
   const bool resolved = impulsePasses(scene, start, state, ctx);
-  // An observer may replace the state (the grader loads the reference's): then the failsafe
-  // cannot build on the last pass's detection.
-  bool replaced = false;
-  if (ctx.observer) {
-    if (!resolved) beforeObserver_ = state.x;
-    ctx.observer->midStep(*ctx.log, state);
-    replaced = !resolved && (state.x.size() != beforeObserver_.size() ||
-                             std::memcmp(state.x.data(), beforeObserver_.data(), sizeof(double) * state.x.size()) != 0);
-  }
+  // The grader may replace the state with the reference's: then the failsafe cannot build on
+  // the last pass's detection.
+  const bool replaced = showMidStep(ctx, state) && !resolved;
   if (!resolved) {
     const StepTimer timer(ctx.timing, ctx.stats->failsafe);
     failsafe(scene, start, state, ctx, replaced);

@@ -27,9 +27,4 @@ std::vector<Violation> unresolvedCollisions(const Scene& scene, const VecX& star
   return found;
 }
 
-std::vector<Violation> CollisionHandler::unresolved(const Scene& scene, const VecX& start, const VecX& end,
-                                                    size_t limit) const {
-  return unresolvedCollisions(scene, start, end, [this](int p) { return zoneOf(p); }, limit);
-}
-
 }  // namespace fosssim
