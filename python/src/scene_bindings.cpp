@@ -3,6 +3,7 @@
 #include "bindings.h"
 #include "py_scene.h"
 
+#include "fosssim/core/collision_handler.h"
 #include "fosssim/core/forces.h"
 #include "fosssim/io/scene_writer.h"
 

@@ -37,8 +37,9 @@ long writeTrajectory(const PyScene& scene, const std::string& path, bool compat,
   struct MidStep final : StepObserver {
     TrajectoryWriter* writer;
     Status status = Status::ok();
-    void midStep(const CollisionLog& log, State& state) override {
+    const State* midStep(const CollisionLog& log, const State& state) override {
       if (status) status = writer->write(state, log);
+      return nullptr;  // records only: the step goes on from `state`
     }
   } observer;
   observer.writer = writer.get();
