@@ -146,10 +146,10 @@ ContactResult runContactProblem(const ContactProblem& problem, ContactMode mode,
   if (!r.series.empty()) r.energyEnd = r.series.back().energy / e0;
   double peak = 0;
   for (const ContactSample& s : r.series) peak = std::max(peak, s.kinetic);
-  for (size_t k = r.series.size(); k-- > 0 && r.series[k].kinetic <= 1e-12 * peak;)
+  for (size_t k = r.series.size(); k-- > 0 && r.series[k].kinetic <= kStoppedEnergy * peak;)
     r.stoppedTime = r.series[k].time;
   if (r.series.size() > 1)
-    r.stopped = r.stoppedTime <= r.series[1].time + 0.75 * (r.series.back().time - r.series[1].time);
+    r.stopped = r.stoppedTime <= r.series[1].time + kStoppedShare * (r.series.back().time - r.series[1].time);
   r.frozen = r.stopped;
   judge->finish(r);
   return r;
@@ -169,7 +169,7 @@ Status runContacts(const StudyOptions& options) {
                                "shots_escaped", "speed_ratio", "speed_label", "others_speed", "stopped_time", "stopped", "frozen",
                                "zone_fraction_mean", "zone_fraction_max", "failsafe_steps", "rigid_zone_steps",
                                "height_start", "height_end", "height_frozen", "height_packed", "packing_end", "max_overlap",
-                               "contacts", "wall_s", "message"});
+                               "contacts", "wall_s", "stopped_energy", "stopped_share", "loosest_rest", "message"});
       !s)
     return s;
   for (const ContactProblem& p : contactProblems(options.quick)) {
@@ -192,7 +192,8 @@ Status runContacts(const StudyOptions& options) {
                 << r.zoneFractionMean << r.zoneFractionMax << r.failsafeSteps << r.rigidZoneSteps
                 << (r.series.empty() ? kNotApplicable : r.series.front().height / r.shots)
                 << (r.series.empty() ? kNotApplicable : r.series.back().height / r.shots) << r.heightFrozen
-                << r.heightPacked << r.packingEnd << r.maxOverlap << r.contacts << r.wallSeconds << r.message;
+                << r.heightPacked << r.packingEnd << r.maxOverlap << r.contacts << r.wallSeconds << kStoppedEnergy
+                << kStoppedShare << kLoosestRest << r.message;
         if (Status st = summary.endRow(); !st) return st;
         if (options.log) *options.log << "." << std::flush;
       }

@@ -36,6 +36,12 @@ struct ContactSample {
   double height = 0;           ///< mean centre height of the movable particles [m]
 };
 
+/// A run has stopped when its kinetic energy stays at or below kStoppedEnergy of its peak from a
+/// time within the first kStoppedShare of the run to its end.
+constexpr double kStoppedEnergy = 1e-12, kStoppedShare = 0.75;
+/// The pile is frozen when it stopped packed looser than this (contact_scenes.cpp says why).
+constexpr double kLoosestRest = 0.75;
+
 /// A problem's run in one mode with one collision type, and its outcome.
 struct ContactResult {
   std::string problem, title, mode, collision;

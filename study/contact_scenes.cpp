@@ -238,9 +238,7 @@ ContactProblem cradle(bool quick) {
 // φ = 0.907 ((heightPacked - r√2) / (h - r√2))² (`packingEnd`). A pile may come to rest; frozen is
 // resting looser than 0.75: frictionless equal disks at rest pack near random close packing
 // (about 0.82 in 2D) or denser, so a pile standing looser is held up by zones stopped against
-// the walls, not by its contacts.
-
-constexpr double kLoosestRest = 0.75;
+// the walls, not by its contacts (kLoosestRest, contact_problems.h).
 
 constexpr double kPileR = 0.05;
 

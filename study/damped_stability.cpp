@@ -125,7 +125,7 @@ Status runDampedStability(const StudyOptions& options) {
   if (Status s = csv.open(options.outDir + "/damped_stability.csv",
                           {"integrator", "omega", "zeta", "gamma", "largest_stable_dt", "smallest_unstable_dt",
                            "capped", "none_stable", "grid_min_dt", "grid_max_dt", "grid_ratio", "closed_form_dt",
-                           "probes", "steps"});
+                           "probes", "steps", "neutral_margin"});
       !s)
     return s;
   const double omega = 10;  // k = 100 on a unit mass
@@ -140,7 +140,7 @@ Status runDampedStability(const StudyOptions& options) {
       csv << m.integrator << omega << zeta << gamma << limit.largestStable() << limit.smallestUnstable()
           << (limit.capped ? 1L : 0L) << (limit.index < 0 ? 1L : 0L) << limit.grid.front() << limit.grid.back()
           << limit.grid[1] / limit.grid[0] << dampedStabilityLimit(m.integrator, omega, gamma)
-          << static_cast<long>(limit.probes) << steps;
+          << static_cast<long>(limit.probes) << steps << kNeutral - 1;
       if (Status s = csv.endRow(); !s) return s;
       if (options.log) *options.log << "." << std::flush;
     }

@@ -28,24 +28,24 @@ Status runHybridCost(const StudyOptions& options) {
                            "failsafe_steps", "failsafe_fraction", "mean_zones", "largest_zone", "mean_failsafe_particles",
                            "most_failsafe_particles", "mean_passes",
                            "collisions_per_step", "overlap_steps", "max_overlap", "kinetic_end", "mean_height_start",
-                           "mean_height_end", "message"});
+                           "mean_height_end", "cor", "message"});
       !s)
     return s;
-  const double dt = 0.002;
+  const double dt = 0.002, cor = 0.5;
   const int columns = options.quick ? 3 : 8, rows = options.quick ? 2 : 5;
   std::vector<Method> methods;
   const std::vector<int> iterations =
       options.quick ? std::vector<int>{0, 2} : std::vector<int>{0, 1, 2, 3, 5, 10, 20, 50, 100};
   for (int maxiters : iterations) {
     CollisionChoice c{"hybrid"};
-    c.cor = 0.5;
+    c.cor = cor;
     c.maxIterations = maxiters;
     methods.push_back(Method{"hybrid", "symplectic-euler", c});
   }
   for (const Method& m : collisionMethods())
     if (m.collision.type != "hybrid" && (!options.quick || m.collision.type == "simple")) {
       Method copy = m;
-      copy.collision.cor = 0.5;
+      copy.collision.cor = cor;
       methods.push_back(copy);
     }
   if (options.log) *options.log << "hybrid cost: " << columns * rows << " disks" << std::flush;
@@ -69,7 +69,8 @@ Status runHybridCost(const StudyOptions& options) {
         << (r.failsafeSteps ? static_cast<double>(r.failsafeParticles) / r.failsafeSteps : kNotApplicable)
         << static_cast<long>(r.mostFailsafeParticles) << (hybrid && r.impulsePasses > 0 ? r.impulsePasses / steps : kNotApplicable)
         << r.collisions / steps << r.overlap.stepsWithOverlap << r.overlap.deepest
-        << kineticEnergy(file.scene, r.final.v) << meanHeight(file.initial) << meanHeight(r.final) << r.message;
+        << kineticEnergy(file.scene, r.final.v) << meanHeight(file.initial) << meanHeight(r.final)
+        << file.scene.collision.cor << r.message;
     if (Status s = csv.endRow(); !s) return s;
     if (options.log) *options.log << "." << std::flush;
   }

@@ -87,6 +87,16 @@ def facts(data_dir, r):
             p.setdefault(row["problem"], {})[row["name"]] = row["value"]
         f["blow_up"] = num(p["study"]["blow_up"])
         f["problems_table"] = r.table(["problem", "set-up", "exact answer", "error measured"], problems_table(p))
+    def first_row(name):
+        rows = sd.load(data_dir, name) if os.path.exists(os.path.join(data_dir, name + ".csv")) else []
+        return rows[0] if rows else {}
+
+    contacts = first_row("contacts_summary")
+    f["stopped_energy"] = num(contacts.get("stopped_energy", float("nan")))
+    f["stopped_tail"] = f"{(1 - contacts.get('stopped_share', float('nan'))) * 100:.3g}"
+    f["loosest_rest"] = num(contacts.get("loosest_rest", float("nan")))
+    f["box_cor"] = num(first_row("hybrid").get("cor", float("nan")))
+    f["damped_neutral"] = f"{first_row('damped_stability').get('neutral_margin', float('nan')) * 100:.2g}"
     stab = sd.load(data_dir, "stability")
     f["row_bobs"] = num(max(row["bobs"] for row in stab))
     if "horizon_periods" in stab[0]:

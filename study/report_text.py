@@ -81,8 +81,8 @@ Euler throughout. The charts show energy (kinetic plus gravity's potential, over
 |momentum| and angular momentum about the origin over time; the slot's curves add up its shots.
 Only the rack and the cradle are isolated systems, where both momenta must stay flat; elsewhere
 walls, fixed edges and gravity exchange momentum with the particles. \"Escaped\" is a centre that
-crossed a wall's or an edge's line; \"frozen\" is a kinetic energy at or below 1e-12 of its peak
-over at least the last quarter of the run (for the pile: while packed looser than 0.75, since
+crossed a wall's or an edge's line; \"frozen\" is a kinetic energy at or below {stopped_energy} of its peak
+over at least the last {stopped_tail} % of the run (for the pile: while packed looser than {loosest_rest}, since
 frictionless disks at rest pack near 0.82 or denser; its packing is judged from its mean height
 against the N lowest sites of a triangular lattice in the V). Tests of each claim:
 `tests/study/contacts_test.cpp`.
@@ -251,7 +251,7 @@ high, so that the periapsis r_p comes closer and its pull stiffer (ω_p = √(μ
 {newton_tolerance}, at most {newton_limit} iterations) and linearized implicit Euler (one Newton step)."""
 
 HYBRID_INTRO = """\
-{box_disks} disks dropped into a box (three half-planes) under gravity, COR 0.5, dt = {box_dt} s,
+{box_disks} disks dropped into a box (three half-planes) under gravity, COR {box_cor}, dt = {box_dt} s,
 for maxiters from {box_lo} to {box_hi}, and the other methods on the same pile for comparison. "In
 a zone" counts the disks the failsafe moved (the study compares each step's end with the
 handler's mid-step state); zone counts are the handler's own.
@@ -336,7 +336,8 @@ def document(sections, facts, elapsed):
         "both have closed forms (derived in `study/damped_stability.h` from the eigenvalues of one step, "
         "and checked against them in `tests/study/damped_stability_test.cpp`). Each probe runs the "
         f"spring in the simulator for {facts['damped_steps']} steps and calls it stable when its energy's "
-        "maximum over the second half is not above the first half's (by more than 1 %, so that a "
+        f"maximum over the second half is not above the first half's (by more than {facts['damped_neutral']} %, so "
+        "that a "
         "neutral oscillation counts as stable); a bisection over a grid of time steps "
         f"{facts['damped_grid']} apart finds the largest stable one.",
         sections["damped"],
@@ -365,7 +366,7 @@ def document(sections, facts, elapsed):
         "## 5. Where the time goes, per scene",
         sections["profile"],
         PROFILE_WORDS.format(**facts),
-        CONTACTS_INTRO if sections.get("contacts") else "",
+        CONTACTS_INTRO.format(**facts) if sections.get("contacts") else "",
         sections.get("contacts", ""),
         facts.get("contacts_words", "") if sections.get("contacts") else "",
         ODDITIES.format(**facts),
