@@ -64,3 +64,14 @@ def test_movie_has_a_frame_per_state(billiards, tmp_path):
     assert frames == 1 + 3  # the current state, then after steps 2, 4 and 6
     assert sim.steps_taken == 6
     assert path.stat().st_size > 0
+
+
+@pytest.mark.skipif(not fosssim.has_renderer, reason="built without the renderer")
+def test_movie_names_that_are_no_movies_are_refused(billiards, tmp_path):
+    # ffmpeg would write out.png as one picture and fail at the second frame: refused before it starts.
+    sim = fosssim.Simulator(billiards)
+    for name in ("out.png", "frame%03d.png", "out.txt", "movie"):
+        with pytest.raises(fosssim.FileError, match=r"a movie's name ends in \.mp4, \.mov, \.mkv, \.webm, \.avi or \.gif"):
+            sim.record_movie(str(tmp_path / name), steps=2, width=32, height=32)
+    assert sim.steps_taken == 0
+    assert list(tmp_path.iterdir()) == []

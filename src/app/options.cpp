@@ -7,6 +7,7 @@
 #include "cli_values.h"
 #include "fosssim/core/collision_handler.h"
 #include "fosssim/core/integrator.h"
+#include "fosssim/render/movie_writer.h"
 
 #include <algorithm>
 #include <cctype>
@@ -285,17 +286,15 @@ class Judge {
                   v + "\"");
     return true;
   }
-  /// --movie: a movie that ffmpeg writes from frames. An image name (out.png) or an image sequence
-  /// pattern would make ffmpeg write one picture (or numbered files) and fail at the second frame.
+  /// --movie: a name MovieWriter writes as a movie (render::isMovieName), checked before the run.
   bool movie(const std::vector<std::string>& given) {
     if (!single("--movie", given, o_.movie)) return false;
-    if (o_.movie.empty()) return true;
+    if (o_.movie.empty() || render::isMovieName(o_.movie)) return true;
     std::string ext = std::filesystem::path(o_.movie).extension().string();
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    for (const char* movie : {".mp4", ".mov", ".mkv", ".webm", ".avi", ".gif"})
-      if (ext == movie) return true;
-    return fail("option --movie takes a movie file ending in .mp4, .mov, .mkv, .webm, .avi or .gif, got \"" + o_.movie +
-                "\"" + (ext == ".png" ? " (PNG frames: -g 1)" : ext == ".svg" ? " (SVG frames: -m DIR)" : ""));
+    const std::string hint = ext == ".png" ? " (PNG frames: -g 1)" : ext == ".svg" ? " (SVG frames: -m DIR)" : "";
+    return fail("option --movie takes a movie file ending in " + std::string(render::kMovieEndings) + ", got \"" +
+                o_.movie + "\"" + hint);
   }
   bool fps(const std::vector<std::string>& given) {
     std::string v;

@@ -94,6 +94,9 @@ MovieWriter::~MovieWriter() {
 }
 
 Status MovieWriter::open(const std::string& path, int width, int height, double fps, std::unique_ptr<MovieWriter>& out) {
+  if (!isMovieName(path))
+    return Status::error("the movie \"" + path + "\": a movie's name ends in " + kMovieEndings +
+                         " (ffmpeg writes others as pictures or not at all)");
   const std::string ffmpeg = findOnPath("ffmpeg");
   if (ffmpeg.empty())
     return Status::error("writing the movie \"" + path + "\" needs ffmpeg, which is not on PATH: install it "

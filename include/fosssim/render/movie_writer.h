@@ -5,17 +5,36 @@
 #include "fosssim/core/status.h"
 #include "fosssim/render/image.h"
 
+#include <cctype>
 #include <memory>
 #include <string>
 #include <sys/types.h>
 
 namespace fosssim::render {
 
+/// The endings of the movies MovieWriter writes, for messages.
+inline constexpr const char* kMovieEndings = ".mp4, .mov, .mkv, .webm, .avi or .gif";
+
+/// Whether `path` ends (in any case) in one of kMovieEndings. ffmpeg would write an image name
+/// (out.png) as one picture and fail at the second frame, a pattern (out%03d.png) as numbered
+/// pictures, and finds no format for other endings. Inline: the command line checks names in
+/// builds without the renderer too.
+inline bool isMovieName(const std::string& path) {
+  const std::size_t dot = path.find_last_of("./");
+  if (dot == std::string::npos || path[dot] != '.') return false;
+  std::string ending = path.substr(dot);
+  for (char& c : ending) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const char* movie : {".mp4", ".mov", ".mkv", ".webm", ".avi", ".gif"})
+    if (ending == movie) return true;
+  return false;
+}
+
 class MovieWriter {
  public:
   /// Starts `ffmpeg` (found on PATH) writing `path` from width x height frames at `fps`.
   /// .mp4/.mov/.mkv get H.264 in yuv420p (plays everywhere; odd sizes are padded by one pixel);
-  /// other extensions let ffmpeg choose. Fails with a clear message when ffmpeg is missing.
+  /// .webm, .avi and .gif let ffmpeg choose; other names (isMovieName) are refused. Fails with a
+  /// clear message when ffmpeg is missing.
   static Status open(const std::string& path, int width, int height, double fps, std::unique_ptr<MovieWriter>& out);
   ~MovieWriter();  ///< closes (and waits for ffmpeg) if close() was not called
   MovieWriter(const MovieWriter&) = delete;
