@@ -56,7 +56,7 @@ double Oscillator::energy(double t) const {
 // anomaly E: r = a (cos E - e) p + b sin E q (b = a sqrt(1 - e^2), q = p rotated 90 degrees in
 // the direction of motion), and the mean anomaly M = E - e sin E grows as n t, n = sqrt(mu/a^3).
 
-KeplerOrbit::KeplerOrbit(double mu, const Vec2& r0, const Vec2& v0) : mu_(mu) {
+KeplerOrbit::KeplerOrbit(double mu, const Vec2& r0, const Vec2& v0) {
   const double r = r0.norm();
   eps_ = 0.5 * v0.squaredNorm() - mu / r;
   h_ = cross(r0, v0);

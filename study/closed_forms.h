@@ -42,7 +42,7 @@ class KeplerOrbit {
 
  private:
   bool ok_ = false;
-  double mu_ = 0, a_ = 0, e_ = 0, period_ = 0, eps_ = 0, h_ = 0, meanAnomaly0_ = 0;
+  double a_ = 0, e_ = 0, period_ = 0, eps_ = 0, h_ = 0, meanAnomaly0_ = 0;
   Vec2 periapsis_ = Vec2::UnitX();  ///< unit vector towards periapsis
   Vec2 across_ = Vec2::UnitY();     ///< unit vector 90 degrees ahead in the direction of motion
 };
