@@ -20,9 +20,9 @@ class StepObserver {
  public:
   virtual ~StepObserver() = default;
   /// Returns a state whose positions and velocities the step is to go on from instead of
-  /// `state`'s, or nullptr to go on from `state`. Only grading replaces it: the course's grader continues every step from the
-  /// reference's mid-step record, so that one early difference is not reported at every later
-  /// record. The handler copies the replacement before it goes on.
+  /// `state`'s, or nullptr to go on from `state`. Only grading replaces it: the course's grader
+  /// continues every step from the reference's mid-step record, so that one early difference
+  /// is not reported at every later record. The handler copies the replacement before it goes on.
   virtual const State* midStep(const CollisionLog& log, const State& state) = 0;
 };
 
