@@ -87,7 +87,7 @@ Workload fromScene(const std::string& scene, int n, long steps, PairKind kind) {
   return w;
 }
 
-/// Pairs placed within reach, as in tests/math/bench_solver.cpp: most must be rooted.
+/// Pairs placed within reach, as in solver_rates.cpp: most must be rooted.
 Workload nearPairs(PairKind kind, int count) {
   std::mt19937 rng(2024);
   auto u = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
