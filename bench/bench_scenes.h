@@ -15,8 +15,9 @@
 //                                      poured at rest into a V from just above it (rain's start)
 //   pile-high-cor0, pile-high-cor0.5  the same block lifted by its own height: it lands at speed
 //   pile-rest                          disks stacked almost settled (small gaps) in a flat-bottomed
-//                                      box, hexagonally, COR 0: it comes to rest within a few dozen
-//                                      steps and stays there (what a resting pile costs)
+//                                      box, hexagonally, COR 0: it settles by a few hundredths of a
+//                                      radius per row and stays (what a resting pile costs; at
+//                                      N = 2,500, 95% at rest after 200 steps in the default mode)
 #pragma once
 
 #include "fosssim/core/scene.h"
