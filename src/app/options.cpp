@@ -7,6 +7,7 @@
 #include "cli_values.h"
 #include "fosssim/core/collision_handler.h"
 #include "fosssim/core/integrator.h"
+#include "fosssim/io/spelling.h"
 #include "fosssim/render/movie_writer.h"
 
 #include <algorithm>
@@ -177,22 +178,6 @@ void define(CLI::App& app, Options& o, Given& g) {
   app.footer(footer());
 }
 
-/// Levenshtein distance, for "did you mean".
-size_t distance(const std::string& a, const std::string& b) {
-  std::vector<size_t> row(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (size_t i = 1; i <= a.size(); ++i) {
-    size_t diagonal = row[0];
-    row[0] = i;
-    for (size_t j = 1; j <= b.size(); ++j) {
-      const size_t next = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = row[j];
-      row[j] = next;
-    }
-  }
-  return row[b.size()];
-}
-
 std::string unknownWord(const CLI::App& app, const std::string& word) {
   const std::string hint = " (FOSSSim -h lists the options)";
   if (word.empty() || word[0] != '-' || word == "-")
@@ -205,7 +190,7 @@ std::string unknownWord(const CLI::App& app, const std::string& word) {
     for (const std::string& s : opt->get_snames()) names.push_back("-" + s);
     for (const std::string& l : opt->get_lnames()) names.push_back("--" + l);
     for (const std::string& candidate : names) {
-      const size_t d = distance(name, candidate);
+      const auto d = static_cast<size_t>(io::editDistance(name, candidate));
       const bool otherCase = name.size() == candidate.size() && name != candidate &&
                              std::equal(name.begin(), name.end(), candidate.begin(),
                                         [](char a, char b) { return std::tolower(a) == std::tolower(b); });

@@ -5,7 +5,7 @@
 #include "fosssim/core/forces.h"
 #include "fosssim/core/integrator.h"
 #include "scene_elements.h"
-#include "spelling.h"
+#include "fosssim/io/spelling.h"
 
 #include <algorithm>
 #include <cmath>

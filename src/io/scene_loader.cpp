@@ -8,7 +8,7 @@
 #include "input_path.h"
 #include "scene_elements.h"
 #include "scene_messages.h"
-#include "spelling.h"
+#include "fosssim/io/spelling.h"
 #include "xml_reader.h"
 #include "xml_syntax.h"
 

@@ -1,4 +1,4 @@
-#include "spelling.h"
+#include "fosssim/io/spelling.h"
 
 #include <algorithm>
 #include <cctype>

@@ -1,6 +1,6 @@
 #include "xml_reader.h"
 
-#include "spelling.h"
+#include "fosssim/io/spelling.h"
 
 #include <algorithm>
 #include <cerrno>

@@ -3,7 +3,7 @@
 // "did you mean"; one pass reports every error, in line order; floods are counted, not printed.
 #include "scene_text.h"
 
-#include "io/spelling.h"
+#include "fosssim/io/spelling.h"
 
 #include <algorithm>
 

@@ -1,4 +1,5 @@
-// Internal header: "did you mean 'radius'?" for misspelt element and attribute names.
+// "Did you mean ...?" for misspelt names: element and attribute names in the loader, options on
+// the command line. Not part of the installed package (cmake/FosssimPackage.cmake lists those).
 #pragma once
 
 #include <string>
