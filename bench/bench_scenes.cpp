@@ -65,14 +65,18 @@ class Builder {
   std::mt19937 rng_;
 };
 
-void rain(Builder& b, int n, Setup& setup) {
+/// n unit disks of radius 0.05 on a square grid of pitch 2.5 r over a V of two half-planes at
+/// 45 degrees, the lowest row 4 radii above the V's arms at the grid's edges plus `lift`; each
+/// start moved by up to `jitterShare` of the gap between neighbours (below 0.5, neighbours cannot
+/// start overlapping). A perfect lattice falls as a block and stacks in columns, which flatters any
+/// method; a jittered one has to pile up.
+void jitteredGridOverV(Builder& b, int n, double jitterShare, bool liftByHeight) {
   const double r = 0.05, spacing = 2.5 * r;
   const int columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
-  const double width = (columns - 1) * spacing;
-  const double bottom = 0.5 * width + 4 * r;  // the lowest row starts inside the V
-  // Jittered starts (a fifth of the gap between neighbours): a perfect lattice falls as a block
-  // and stacks in columns, which flatters any method; a jittered one has to pile up.
-  const double jitter = 0.2 * (spacing - 2 * r);
+  const int rows = (n + columns - 1) / columns;
+  const double width = (columns - 1) * spacing, height = (rows - 1) * spacing;
+  const double bottom = 0.5 * width + 4 * r + (liftByHeight ? height : 0.0);
+  const double jitter = jitterShare * (spacing - 2 * r);
   for (int k = 0; k < n; ++k)
     b.add(1.0,
           Vec2(-0.5 * width + (k % columns) * spacing + b.uniform(-jitter, jitter),
@@ -80,6 +84,10 @@ void rain(Builder& b, int n, Setup& setup) {
           Vec2::Zero(), r);
   b.plane(Vec2(0, 0), Vec2(1, 1));
   b.plane(Vec2(0, 0), Vec2(-1, 1));
+}
+
+void rain(Builder& b, int n, Setup& setup) {
+  jitteredGridOverV(b, n, 0.2, false);  // the lowest row starts inside the V
   setup.cor = 0.0;
   setup.steps = 400;
 }
@@ -172,19 +180,7 @@ constexpr long kPileSteps = 1000;
 /// into a V from just above it". High: the block lifted by its own height, so it lands at
 /// sqrt(2 g height) (11 m/s at N = 2,500, about a radius per step) and the impacts run through it.
 void pileV(Builder& b, int n, Setup& setup, double cor, bool high) {
-  const double r = 0.05, spacing = 2.5 * r;
-  const int columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
-  const int rows = (n + columns - 1) / columns;
-  const double width = (columns - 1) * spacing, height = (rows - 1) * spacing;
-  const double bottom = 0.5 * width + 4 * r + (high ? height : 0.0);
-  const double jitter = 0.4 * (spacing - 2 * r);
-  for (int k = 0; k < n; ++k)
-    b.add(1.0,
-          Vec2(-0.5 * width + (k % columns) * spacing + b.uniform(-jitter, jitter),
-               bottom + (k / columns) * spacing + b.uniform(-jitter, jitter)),
-          Vec2::Zero(), r);
-  b.plane(Vec2(0, 0), Vec2(1, 1));
-  b.plane(Vec2(0, 0), Vec2(-1, 1));
+  jitteredGridOverV(b, n, 0.4, high);
   setup.cor = cor;
   setup.steps = kPileSteps;
 }
