@@ -5,6 +5,7 @@
 #include "csv.h"
 
 #include <cmath>
+#include <thread>
 
 namespace fosssim::study {
 
@@ -76,6 +77,9 @@ Status writeProblemSetups(const std::vector<Problem>& problems, const StudyOptio
   if (Status s = csv.open(options.outDir + "/problems.csv", {"problem", "name", "value"}); !s) return s;
   // The study's own marks, quoted by the page's definitions: the blow-up mark of every run.
   csv << "study" << "blow_up" << RunOptions{}.energyGrowthLimit;
+  if (Status s = csv.endRow(); !s) return s;
+  // The machine the timings come from, as the run saw it (0: the library could not tell).
+  csv << "study" << "hardware_threads" << static_cast<long>(std::thread::hardware_concurrency());
   if (Status s = csv.endRow(); !s) return s;
   for (const Problem& p : problems)
     for (const auto& [name, value] : p.setup) {

@@ -162,7 +162,7 @@ def chart_robustness(data_dir):
         # Rasterised in the SVG too: a few hundred cells as vector paths would make it large.
         ax.pcolormesh(edges(dts), edges(speeds), grid, cmap=cmap, vmin=-0.5, vmax=3.5, edgecolors="white", lw=0.3,
                       rasterized=True)
-        band = 0.06  # the thickness of the contact band: 2 (disk radius + edge radius)
+        band = 2 * (rows[0]["disk_radius"] + rows[0]["edge_radius"])  # the contact band's thickness
         ax.plot(dts, [band / d for d in dts], color="black", lw=1, ls="--")
         ax.set_xscale("log")
         ax.set_yscale("log")
@@ -176,11 +176,19 @@ def chart_robustness(data_dir):
     for ax in list(axes.flat)[len(methods):]:
         ax.axis("off")
     handles = [Patch(color=c, label=o) for o, c in zip(OUTCOMES, OUTCOME_COLORS)]
-    handles.append(Line2D([], [], color="black", ls="--", label="speed x dt = 0.06 m\n(one step crosses the\ncontact band)"))
+    band = 2 * (rows[0]["disk_radius"] + rows[0]["edge_radius"])
+    handles.append(Line2D([], [], color="black", ls="--",
+                          label=f"speed x dt = {band:g} m\n(one step crosses the\ncontact band)"))
     legend_ax.legend(handles=handles, loc="center", title="outcome at the end")
-    fig.suptitle("A disk (r = 0.02 m) thrown at a thin fixed edge (r = 0.01 m), COR 1: what became of it", fontsize=10)
+    cors = " or ".join(f"{c:g}" for c in sorted(set(r["cor"] for r in rows)))
+    fig.suptitle(f"A disk (r = {rows[0]['disk_radius']:g} m) thrown at a thin fixed edge "
+                 f"(r = {rows[0]['edge_radius']:g} m), COR {cors}: what became of it", fontsize=10)
     fig.tight_layout(rect=(0, 0, 1, 0.96))
     save(fig, data_dir, "robustness")
+
+
+# Where chart_penalty_depth draws what has no depth (chart positions, not measurements).
+THROUGH_AT, UNSTABLE_AT, FLOOR_AT = 0.06, 0.1, 1e-6
 
 
 def chart_penalty_depth(data_dir):
@@ -189,7 +197,7 @@ def chart_penalty_depth(data_dir):
     dts = sorted(set(r["dt"] for r in rows))
     shown = [d for d in dts if abs(math.log10(d) - round(math.log10(d))) < 1e-9]  # whole decades
     speeds = sorted(set(r["speed"] for r in rows))
-    reach, thickness = 0.03, 0.01  # disk + edge radius; the penalty's default thickness
+    reach, thickness = rows[0]["disk_radius"] + rows[0]["edge_radius"], rows[0]["thickness"]
     fig, axes = plt.subplots(1, len(methods), figsize=(4.4 * len(methods), 4.0), squeeze=False, sharey=True)
     cmap = plt.get_cmap("viridis")
     for ax, m in zip(axes.flat, methods):
@@ -208,22 +216,24 @@ def chart_penalty_depth(data_dir):
             pts = sorted([r for r in rows if r["method"] == m and r["dt"] == d], key=lambda r: r["speed"])
             color = cmap(i / max(1, len(shown) - 1))
             bounced = [r for r in pts if r["outcome"] == "bounced"]
-            ax.plot([r["speed"] for r in bounced], [max(r["max_overlap"], 1e-6) for r in bounced], color=color,
+            ax.plot([r["speed"] for r in bounced], [max(r["max_overlap"], FLOOR_AT) for r in bounced], color=color,
                     marker="o", ms=3, lw=1, label=f"bounced, dt = {d:g} s")
             lost = [r for r in pts if r["outcome"] != "bounced"]
-            ax.plot([r["speed"] for r in lost], [0.06 if r["outcome"] == "tunnelled" else 0.1 for r in lost],
+            ax.plot([r["speed"] for r in lost],
+                    [THROUGH_AT if r["outcome"] == "tunnelled" else UNSTABLE_AT for r in lost],
                     ls="none", marker="x" if lost and lost[0]["outcome"] == "tunnelled" else "*", color=color, ms=5)
         ax.axhline(reach, color="0.3", lw=0.8, ls=":")
         ax.text(speeds[0], reach * 1.08, "centre on the edge's line", fontsize=7)
         ax.set_xscale("log")
         ax.set_yscale("log")
-        ax.set_ylim(1e-6, 0.15)
+        ax.set_ylim(FLOOR_AT, 1.5 * UNSTABLE_AT)
         ax.set_title(f"{m} (thickness {thickness:g} m)")
         ax.set_xlabel("disk speed [m/s]")
         ax.legend(loc="lower right", fontsize=6.5)
     axes.flat[0].set_ylabel("deepest overlap with the edge at a step end [m]")
-    fig.suptitle("Penalty: how deep a bouncing disk sinks into the thin edge (x at 0.06 m: went through; "
-                 "* at 0.1 m: unstable; 1e-6 or less drawn at 1e-6)", fontsize=10)
+    floor = f"{FLOOR_AT:g}".replace("e-0", "e-")
+    fig.suptitle(f"Penalty: how deep a bouncing disk sinks into the thin edge (x at {THROUGH_AT:g} m: went through; "
+                 f"* at {UNSTABLE_AT:g} m: unstable; {floor} or less drawn at {floor})", fontsize=10)
     fig.tight_layout(rect=(0, 0, 1, 0.93))
     save(fig, data_dir, "penalty_depth")
 
@@ -295,7 +305,7 @@ def chart_hybrid(data_dir):
         ax.set_xticklabels([f"{int(v)}" for v in x])
         ax.set_xlabel("maxiters (impulse events per particle and step before the failsafe)")
     fig.suptitle(f"Hybrid handler (default mode) on a dense pile: {int(hyb[0]['particles'])} disks dropped into a box, "
-                 f"COR 0.5, {hyb[0]['steps'] * hyb[0]['dt']:g} s", fontsize=10)
+                 f"COR {hyb[0]['cor']:g}, {hyb[0]['steps'] * hyb[0]['dt']:g} s", fontsize=10)
     fig.tight_layout(rect=(0, 0, 1, 0.94))
     save(fig, data_dir, "hybrid")
 

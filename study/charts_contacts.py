@@ -76,7 +76,7 @@ def chart_contact_outcomes(data_dir):
         ax.axhline(pile_sum[0]["height_frozen"], color="0.3", ls=":", lw=1,
                    label="column stopped at its first contact")
         ax.axhline(pile_sum[0]["height_packed"], color="0.3", ls="-.", lw=1,
-                   label="triangular lattice filling the V (packing 0.907)")
+                   label=f"triangular lattice filling the V (packing π/(2√3) = {math.pi / (2 * math.sqrt(3)):.3f})")
     ax.set_ylabel("mean height of the disks' centres [m]")
     ax.set_title("Pile in a V: does it flow?")
     ax.legend(fontsize=6.5, loc="upper right")

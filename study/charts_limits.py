@@ -105,9 +105,19 @@ def chart_shots(data_dir, save):
     handles = [Patch(color=c, label=o) for o, c in SHOT_OUTCOMES]
     handles.append(Patch(facecolor="white", edgecolor="0.3", hatch="//", label="--compat"))
     fig.legend(handles=handles, loc="lower center", ncol=len(handles), fontsize=8, bbox_to_anchor=(0.5, -0.01))
-    fig.suptitle("Random shots of a disk (r = 0.02 m) at thin fixed edges (r = 0.01 m), judged by energy: bounced = "
-                 "ended clear on its own side with its energy\nwithin COR's bounds (0.1 % leeway); speeds 0.3-30 m/s, "
-                 "dt 1e-3-1e-2 s, COR 1 or 0.5-1, symplectic Euler", fontsize=9)
+    # Every number of the title from the shots themselves: the radii and leeway they ran with, the
+    # ranges their random draws covered.
+    first = rows[0]
+    speeds, dts = [r["speed"] for r in rows], [r["dt"] for r in rows]
+    elastic = sum(1 for r in rows if r["cor"] == 1)
+    lossy = [r["cor"] for r in rows if r["cor"] != 1]
+    cor = f"COR 1 ({100 * elastic / len(rows):.0f} % of shots)" + (
+        f" or {min(lossy):.2g}-{max(lossy):.2g}" if lossy else "")
+    fig.suptitle(f"Random shots of a disk (r = {first['disk_radius']:g} m) at thin fixed edges "
+                 f"(r = {first['edge_radius']:g} m), judged by energy: bounced = ended clear on its own side with "
+                 f"its energy\nwithin COR's bounds ({100 * first['tolerance']:g} % leeway); speeds "
+                 f"{min(speeds):.2g}-{max(speeds):.2g} m/s, dt {min(dts):.2g}-{max(dts):.2g} s, {cor}, "
+                 "symplectic Euler", fontsize=9)
     fig.tight_layout(rect=(0, 0.07, 1, 0.92))
     save(fig, data_dir, "shots")
 
@@ -255,6 +265,8 @@ def chart_newton(data_dir, save):
     if not os.path.exists(os.path.join(data_dir, "newton_failure.csv")):
         return
     rows = sd.load(data_dir, "newton_failure")
+    setup = {(r["problem"], r["name"]): r["value"] for r in sd.load(data_dir, "problems")}
+    blow_up = f"energy x{setup[('study', 'blow_up')]:.0e}".replace("e+0", "e")
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.4), squeeze=False)
     for ax, integ in zip(axes.flat, ("implicit-euler", "linearized-implicit-euler")):
         mine = [r for r in rows if r["integrator"] == integ]
@@ -266,14 +278,15 @@ def chart_newton(data_dir, save):
                                 c=[r["min_separation"] / r["periapsis"] for r in pts], cmap="viridis", vmin=0, vmax=1,
                                 edgecolors=color, linewidths=1.5, label={"ok": "ran to the end",
                                                                           "solver-failure": "Newton did not converge",
-                                                                          "energy-blow-up": "energy x1e6"}[outcome])
+                                                                          "energy-blow-up": blow_up}[outcome])
         ax.set_yscale("log")
-        ax.set_xlabel("eccentricity e (started at apoapsis r = 1)")
+        ax.set_xlabel(f"eccentricity e (started at apoapsis r = {rows[0]['apoapsis']:g})")
         ax.set_ylabel("dt · ω_p,  ω_p = √(μ / r_p³) at periapsis")
         ax.set_title(integ, fontsize=9)
         ax.legend(fontsize=7.5, loc="upper left")
     fig.colorbar(sc, ax=axes.ravel().tolist(), label="closest approach / true periapsis")
-    fig.suptitle("Implicit Euler on two-body orbits (2 periods): where Newton fails against dt and the periapsis's "
+    fig.suptitle(f"Implicit Euler on two-body orbits ({rows[0]['periods']:g} periods): where Newton fails against dt "
+                 "and the periapsis's "
                  "stiffness; colour: how far the orbit had fallen inside its periapsis", fontsize=9)
     save(fig, data_dir, "newton")
 
@@ -306,7 +319,8 @@ def chart_newton_iterations(data_dir, save):
     left.set_xlabel("time step dt [s]")
     left.set_ylabel("Newton iterations per step")
     left.legend(fontsize=7, loc="upper left")
-    left.set_title("A particle between two fixed anchors on springs of rest length 1 (nonlinear)", fontsize=9)
+    left.set_title(f"A particle between two fixed anchors on springs of rest length "
+                   f"{', '.join(f'{x:g}' for x in sd.unique(spring, 'rest_length'))} (nonlinear)", fontsize=9)
     if os.path.exists(os.path.join(data_dir, "newton_failure.csv")):
         orbits = [r for r in sd.load(data_dir, "newton_failure") if r["integrator"] == "implicit-euler"]
         es = sd.unique(orbits, "eccentricity")
@@ -325,7 +339,7 @@ def chart_newton_iterations(data_dir, save):
         right.set_xlabel("dt · ω_p,  ω_p = √(μ / r_p³) at periapsis")
         right.set_ylabel("Newton iterations per step")
         right.legend(fontsize=7, loc="center left")
-        right.set_title("Two-body orbits (2 periods)", fontsize=9)
+        right.set_title(f"Two-body orbits ({orbits[0]['periods']:g} periods)", fontsize=9)
     fig.suptitle("Implicit Euler: Newton iterations per step against dt and stiffness (solid: mean over the steps "
                  "done; red X: the step where Newton gave up)", fontsize=9)
     fig.tight_layout()

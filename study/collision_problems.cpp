@@ -2,6 +2,7 @@
 // methods differ only in how they find and answer contacts; all run with symplectic Euler (the
 // penalty force has no Jacobian, so the implicit integrators would treat it explicitly anyway).
 #include "closed_forms.h"
+#include "number_text.h"
 #include "problems.h"
 
 #include <cmath>
@@ -85,7 +86,9 @@ class DisksMeasure final : public Measurement {
 };
 
 Problem disks(bool quick) {
-  Problem p = collisionProblem("disks", "Elastic collision of two disks (masses 1 and 2, oblique)",
+  Problem p = collisionProblem("disks",
+                               "Elastic collision of two disks (masses " + numberText(kDisk1.m) + " and " +
+                                   numberText(kDisk2.m) + ", oblique)",
                                "position error at the end [m]", quick);
   p.scene = [](const Method& m, double dt) {
     SceneBuilder x;
@@ -134,9 +137,8 @@ class BounceMeasure final : public Measurement {
   ContactWatch watch_;
 };
 
-Problem floorBounce(bool quick, double cor, const char* name) {
-  Problem p = collisionProblem(std::string("bounce-cor") + name,
-                               std::string("Disk bouncing on a half-plane, COR ") + name,
+Problem floorBounce(bool quick, double cor) {
+  Problem p = collisionProblem("bounce-cor" + numberText(cor), "Disk bouncing on a half-plane, COR " + numberText(cor),
                                "position error at the end [m]", quick);
   for (Method& m : p.methods) m.collision.cor = cor;
   p.scene = [](const Method& m, double dt) {
@@ -192,8 +194,9 @@ class CradleMeasure final : public Measurement {
 };
 
 Problem cradle(bool quick) {
-  Problem p =
-      collisionProblem("cradle", "Newton's cradle (5 disks, 0.02 gaps)", "position error at the end [m]", quick);
+  Problem p = collisionProblem(
+      "cradle", "Newton's cradle (" + std::to_string(kCradle) + " disks, " + numberText(kCradleGap) + " gaps)",
+      "position error at the end [m]", quick);
   p.scene = [](const Method& m, double dt) {
     SceneBuilder x;
     x.duration(kCradleTime).method(m, dt);
@@ -223,10 +226,11 @@ class BreakMeasure final : public Measurement {
 };
 
 Problem billiards(bool quick) {
-  Problem p = collisionProblem("billiards", "Billiard break (cue + 15 disks, COR 1)",
-                               "relative kinetic energy error at the end", quick);
   constexpr double r = 0.1, gap = 0.02, cueSpeed = 5, duration = 0.5;
   constexpr int rows = 5;
+  Problem p = collisionProblem("billiards", "", "relative kinetic energy error at the end", quick);
+  p.title = "Billiard break (cue + " + std::to_string(rows * (rows + 1) / 2) + " disks, COR " +
+            numberText(p.methods.front().collision.cor) + ")";
   p.scene = [=](const Method& m, double dt) {
     constexpr double spacing = 2 * r + gap;
     SceneBuilder x;
@@ -264,8 +268,8 @@ std::vector<Method> collisionMethods() {
 }
 
 std::vector<Problem> collisionProblems(bool quick) {
-  return {disks(quick),          floorBounce(quick, 0.0, "0"), floorBounce(quick, 0.5, "0.5"),
-          floorBounce(quick, 1.0, "1"), cradle(quick),           billiards(quick)};
+  return {disks(quick), floorBounce(quick, 0.0), floorBounce(quick, 0.5), floorBounce(quick, 1.0), cradle(quick),
+          billiards(quick)};
 }
 
 }  // namespace fosssim::study

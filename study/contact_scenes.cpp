@@ -4,6 +4,7 @@
 // acting before contact would blur the closed forms (a rebound at exactly the impact speed, a
 // speed kept in a corridor) that the tests hold the default mode to.
 #include "contact_problems.h"
+#include "number_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -45,7 +46,7 @@ int lastParticle(const State& s) { return s.numParticles() - 1; }
 // so the ball leaves at its impact speed. Speed ratio: rebound speed over impact speed (the
 // integrator's prediction v + h g at the contact step).
 
-constexpr double kJointOffset = 0.003;
+constexpr double kJointOffset = 0.003, kJointCor = 1.0;
 
 class JointDropJudge final : public ContactJudge {
  public:
@@ -65,11 +66,12 @@ class JointDropJudge final : public ContactJudge {
 };
 
 ContactProblem jointDrop(bool quick) {
-  ContactProblem p = problem("joint-drop", "Joint drop: ball (COR 1) onto the joint of two floor edges",
+  ContactProblem p = problem("joint-drop",
+                             "Joint drop: ball (COR " + numberText(kJointCor) + ") onto the joint of two floor edges",
                              "rebound speed / impact speed at the first bounce");
   p.contained = true;
   p.scene = [quick](const std::string& collision, int) {
-    SceneBuilder x = heading(collision, 1.0, quick ? 0.4 : 1.5);
+    SceneBuilder x = heading(collision, kJointCor, quick ? 0.4 : 1.5);
     x.gravity(kGravity);
     for (int k = 0; k < 3; ++k) x.particle(Vec2(k - 1.0, 0), Vec2::Zero(), 1.0, true, 0.02);
     x.edge(0, 1, 0.02);
@@ -86,16 +88,19 @@ ContactProblem jointDrop(bool quick) {
 // (radius 0.1), no gravity, COR 1: every contact of the rack arrives in the same instant. Free
 // particles only, so kinetic energy (COR 1), momentum and angular momentum are invariants.
 
-constexpr double kRackR = 0.1;
+constexpr double kRackR = 0.1, kRackCor = 1.0;
+constexpr int kRackRows = 5;
 
 ContactProblem touchingRack(bool quick) {
-  ContactProblem p = problem("touching-rack", "Touching rack: cue ball into 15 touching balls (COR 1)");
+  ContactProblem p = problem("touching-rack", "Touching rack: cue ball into " +
+                                                 std::to_string(kRackRows * (kRackRows + 1) / 2) +
+                                                 " touching balls (COR " + numberText(kRackCor) + ")");
   p.isolated = true;
   p.scene = [quick](const std::string& collision, int) {
     const double d = 2 * kRackR + 1e-12;  // centre distance of touching neighbours
-    SceneBuilder x = heading(collision, 1.0, quick ? 0.3 : 0.8);
+    SceneBuilder x = heading(collision, kRackCor, quick ? 0.3 : 0.8);
     x.particle(Vec2(-1, 0), Vec2(5, 0), 1.0, false, kRackR);
-    for (int row = 0; row < 5; ++row)
+    for (int row = 0; row < kRackRows; ++row)
       for (int j = 0; j <= row; ++j)
         x.particle(Vec2(row * d * std::sqrt(3.0) / 2, (j - row / 2.0) * d), Vec2::Zero(), 1.0, false, kRackR);
     return x;
@@ -110,13 +115,16 @@ ContactProblem touchingRack(bool quick) {
 // only reverse the vertical velocity: its speed and its 10 m/s along the corridor are kept, and it
 // never leaves. Speed ratio: speed at the end over the start's.
 
+const Vec2 kCorridorV(10, -100);
+constexpr double kCorridorWidth = 0.5, kCorridorCor = 1.0;
+
 class CorridorJudge final : public ContactJudge {
  public:
   void start(const Scene&, const State& s) override { v0_ = at(s.v, 0).norm(); }
   void step(const Scene&, const State&, const State& after, long) override { v_ = at(after.v, 0).norm(); }
   bool outside(const Scene&, const State& s, int i) const override {
     const double y = at(s.x, i).y();
-    return y < 0 || y > 0.5;
+    return y < 0 || y > kCorridorWidth;
   }
   void finish(ContactResult& r) override {
     r.speedRatio = v_ / v0_;
@@ -127,14 +135,17 @@ class CorridorJudge final : public ContactJudge {
 };
 
 ContactProblem corridor(bool quick) {
-  ContactProblem p = problem("corridor", "Corridor: particle at (10, -100) m/s between half-planes 0.5 m apart (COR 1)",
+  ContactProblem p = problem("corridor",
+                             "Corridor: particle at (" + numberText(kCorridorV.x()) + ", " +
+                                 numberText(kCorridorV.y()) + ") m/s between half-planes " +
+                                 numberText(kCorridorWidth) + " m apart (COR " + numberText(kCorridorCor) + ")",
                              "speed at the end / speed at the start");
   p.contained = true;
   p.scene = [quick](const std::string& collision, int) {
-    SceneBuilder x = heading(collision, 1.0, quick ? 0.3 : 2.0);
-    x.particle(Vec2(0, 0.25), Vec2(10, -100), 1.0, false, 0.05);
+    SceneBuilder x = heading(collision, kCorridorCor, quick ? 0.3 : 2.0);
+    x.particle(Vec2(0, kCorridorWidth / 2), kCorridorV, 1.0, false, 0.05);
     x.halfplane(Vec2(0, 0), Vec2(0, 1));
-    x.halfplane(Vec2(0, 0.5), Vec2(0, -1));
+    x.halfplane(Vec2(0, kCorridorWidth), Vec2(0, -1));
     return x;
   };
   p.judge = [] { return std::make_unique<CorridorJudge>(); };
@@ -159,28 +170,33 @@ class Lcg {
   unsigned state_;
 };
 
+constexpr int kSlotDisks = 3;
+constexpr double kSlotWidth = 0.1, kSlotSlowest = 20, kSlotFastest = 200, kSlotCor = 1.0;
+
 class SlotJudge final : public ContactJudge {
  public:
   bool outside(const Scene&, const State& s, int i) const override {
     const Vec2 x = at(s.x, i);
-    return std::abs(x.x()) < 50 && (x.y() < 0 || x.y() > 0.1);
+    return std::abs(x.x()) < 50 && (x.y() < 0 || x.y() > kSlotWidth);
   }
 };
 
 ContactProblem slot(bool quick) {
-  ContactProblem p = problem("slot", "Slot: three disks at 20-200 m/s in a 0.1 m slot between thin edges (COR 1)");
+  ContactProblem p = problem("slot", "Slot: " + countWord(kSlotDisks) + " disks at " + numberText(kSlotSlowest) + "-" +
+                                         numberText(kSlotFastest) + " m/s in a " + numberText(kSlotWidth) +
+                                         " m slot between thin edges (COR " + numberText(kSlotCor) + ")");
   p.contained = true;
   p.shots = quick ? 4 : 30;
   p.scene = [quick](const std::string& collision, int shot) {
     Lcg rng(1000u + static_cast<unsigned>(shot));
-    SceneBuilder x = heading(collision, 1.0, quick ? 0.1 : 0.5);
-    for (double y : {0.0, 0.1}) {
+    SceneBuilder x = heading(collision, kSlotCor, quick ? 0.1 : 0.5);
+    for (double y : {0.0, kSlotWidth}) {
       const int a = x.particle(Vec2(-50, y), Vec2::Zero(), 1.0, true, 0.005);
       const int b = x.particle(Vec2(50, y), Vec2::Zero(), 1.0, true, 0.005);
       x.edge(a, b, 0.005);
     }
-    for (int k = 0; k < 3; ++k) {
-      const double vy = rng.uniform(20, 200) * (rng.uniform(0, 1) < 0.5 ? -1 : 1);
+    for (int k = 0; k < kSlotDisks; ++k) {
+      const double vy = rng.uniform(kSlotSlowest, kSlotFastest) * (rng.uniform(0, 1) < 0.5 ? -1 : 1);
       const double mass = rng.uniform(0.5, 2);
       const Vec2 pos(-0.5 + 0.5 * k + rng.uniform(-0.1, 0.1), rng.uniform(0.03, 0.07));
       x.particle(pos, Vec2(rng.uniform(-2, 2), vy), mass, false, 0.02);
@@ -197,7 +213,8 @@ ContactProblem slot(bool quick) {
 // whole velocity down the row: the last ball leaves at 5 m/s and the others rest. Speed ratio:
 // the last ball's speed over the first's; "others" is the fastest of the first four, the same way.
 
-constexpr double kCradleSpeed = 5.0;
+constexpr double kCradleSpeed = 5.0, kCradleCor = 1.0;
+constexpr int kCradleStill = 4;  // the balls at rest
 
 class CradleJudge final : public ContactJudge {
  public:
@@ -214,13 +231,15 @@ class CradleJudge final : public ContactJudge {
 };
 
 ContactProblem cradle(bool quick) {
-  ContactProblem p = problem("cradle", "Newton's cradle: a ball at 5 m/s onto four touching balls (COR 1)",
+  ContactProblem p = problem("cradle",
+                             "Newton's cradle: a ball at " + numberText(kCradleSpeed) + " m/s onto " +
+                                 countWord(kCradleStill) + " touching balls (COR " + numberText(kCradleCor) + ")",
                              "last ball's speed / first ball's speed");
   p.isolated = true;
   p.scene = [quick](const std::string& collision, int) {
-    SceneBuilder x = heading(collision, 1.0, quick ? 0.15 : 0.3);
+    SceneBuilder x = heading(collision, kCradleCor, quick ? 0.15 : 0.3);
     x.particle(Vec2(-0.5, 0), Vec2(kCradleSpeed, 0), 1.0, false, 0.1);
-    for (int k = 0; k < 4; ++k) x.particle(Vec2(k * (0.2 + 1e-12), 0), Vec2::Zero(), 1.0, false, 0.1);
+    for (int k = 0; k < kCradleStill; ++k) x.particle(Vec2(k * (0.2 + 1e-12), 0), Vec2::Zero(), 1.0, false, 0.1);
     return x;
   };
   p.judge = [] { return std::make_unique<CradleJudge>(); };
@@ -236,11 +255,12 @@ ContactProblem cradle(bool quick) {
 // that fills the V to height H covers an area ∝ H² ∝ N / φ, so the mean height above the V's
 // apex for centres (r√2) scales as 1/√φ: a pile at mean height h packs at about
 // φ = 0.907 ((heightPacked - r√2) / (h - r√2))² (`packingEnd`). A pile may come to rest; frozen is
-// resting looser than 0.75: frictionless equal disks at rest pack near random close packing
-// (about 0.82 in 2D) or denser, so a pile standing looser is held up by zones stopped against
-// the walls, not by its contacts (kLoosestRest, contact_problems.h).
+// resting looser than kLoosestRest (contact_problems.h): frictionless equal disks at rest pack near
+// random close packing (0.82 ± 0.02 for disks: J. G. Berryman, Phys. Rev. A 27, 1053, 1983) or
+// denser, so a pile standing looser is held up by zones stopped against the walls, not by its
+// contacts.
 
-constexpr double kPileR = 0.05;
+constexpr double kPileR = 0.05, kPileCor = 0.5;
 
 class PileJudge final : public ContactJudge {
  public:
@@ -292,10 +312,11 @@ class PileJudge final : public ContactJudge {
 
 ContactProblem pileInV(int columns, int rows, double duration) {
   ContactProblem p =
-      problem("pile", "Pile in a V: " + std::to_string(columns * rows) + " disks poured under gravity (COR 0.5)");
+      problem("pile", "Pile in a V: " + std::to_string(columns * rows) + " disks poured under gravity (COR " +
+                          numberText(kPileCor) + ")");
   p.contained = true;
   p.scene = [=](const std::string& collision, int) {
-    SceneBuilder x = heading(collision, 0.5, duration);
+    SceneBuilder x = heading(collision, kPileCor, duration);
     x.gravity(kGravity);
     x.halfplane(Vec2::Zero(), Vec2(1, 1));
     x.halfplane(Vec2::Zero(), Vec2(-1, 1));

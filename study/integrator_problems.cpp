@@ -2,6 +2,7 @@
 // closed_forms.h; the scenes are chosen so that one period or flight is resolved by the coarsest
 // time step and the finest one is still cheap.
 #include "closed_forms.h"
+#include "number_text.h"
 #include "problems.h"
 
 #include <cmath>
@@ -24,7 +25,7 @@ Problem integratorProblem(std::string name, std::string title, std::string error
 // ---- Projectile --------------------------------------------------------------------------------
 
 const Projectile kThrow{Vec2(0, 0), Vec2(3, 10), Vec2(0, -9.81)};
-constexpr double kThrowMass = 1.0;
+constexpr double kThrowMass = 1.0, kThrowTime = 2.0;
 
 class ProjectileMeasure final : public Measurement {
  public:
@@ -64,17 +65,18 @@ class ProjectileMeasure final : public Measurement {
 };
 
 Problem projectile(bool quick) {
-  Problem p = integratorProblem("projectile", "Projectile under gravity (2 s flight)", "position error at the end [m]",
+  Problem p = integratorProblem("projectile", "Projectile under gravity (" + numberText(kThrowTime) + " s flight)",
+                                "position error at the end [m]",
                                 sweep(quick, {0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 5e-4, 2e-4, 1e-4}));
   p.scene = [](const Method& m, double dt) {
     SceneBuilder x;
-    x.duration(2.0).method(m, dt).gravity(kThrow.g);
+    x.duration(kThrowTime).method(m, dt).gravity(kThrow.g);
     x.particle(kThrow.x0, kThrow.v0, kThrowMass);
     return x;
   };
   p.measure = [] { return std::make_unique<ProjectileMeasure>(); };
   p.setup = {{"mass", kThrowMass}, {"x0", kThrow.x0.x()}, {"y0", kThrow.x0.y()}, {"vx", kThrow.v0.x()},
-             {"vy", kThrow.v0.y()}, {"gx", kThrow.g.x()}, {"gy", kThrow.g.y()}, {"duration", 2.0}};
+             {"vy", kThrow.v0.y()}, {"gx", kThrow.g.x()}, {"gy", kThrow.g.y()}, {"duration", kThrowTime}};
   return p;
 }
 
@@ -137,14 +139,18 @@ class SpringMeasure final : public Measurement {
 
 Problem spring(bool quick, double b) {
   const bool damped = b > 0;
+  const double duration = damped ? 5.0 : 10.0;
+  const double periods = duration * std::sqrt(kSpringK / kSpringMass) / (2 * M_PI);
+  const std::string k = "k = " + numberText(kSpringK), time = numberText(duration) + " s";
   Problem p = integratorProblem(damped ? "spring-damped" : "spring",
-                                damped ? "Damped spring (k = 10, b = 1, 5 s)"
-                                       : "Undamped spring (k = 10, 10 s, 5 periods)",
+                                damped ? "Damped spring (" + k + ", b = " + numberText(b) + ", " + time + ")"
+                                       : "Undamped spring (" + k + ", " + time + ", " +
+                                             numberText(std::round(periods)) + " periods)",
                                 "position error at the end [m]",
                                 sweep(quick, {0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 5e-4, 2e-4, 1e-4}));
-  p.scene = [b, damped](const Method& m, double dt) {
+  p.scene = [b, duration](const Method& m, double dt) {
     SceneBuilder x;
-    x.duration(damped ? 5.0 : 10.0).method(m, dt);
+    x.duration(duration).method(m, dt);
     const int anchor = x.particle(Vec2(0, 0), Vec2(0, 0), 1.0, true, 0.05);
     const int bob = x.particle(Vec2(kRest + kStretch, 0), Vec2(0, 0), kSpringMass, false, 0.05);
     x.spring(x.edge(anchor, bob), kSpringK, kRest, b);
@@ -154,7 +160,7 @@ Problem spring(bool quick, double b) {
   p.omega = std::sqrt(kSpringK / kSpringMass);
   if (!damped) p.exactMinSeparation = kRest - kStretch;
   p.setup = {{"mass", kSpringMass}, {"k", kSpringK}, {"rest", kRest}, {"stretch", kStretch}, {"b", b},
-             {"duration", damped ? 5.0 : 10.0}};
+             {"duration", duration}};
   return p;
 }
 
@@ -164,7 +170,7 @@ Problem spring(bool quick, double b) {
 // step's offset of symplectic Euler happens to be perpendicular to the velocity, which would hide
 // its first-order error in the orbit's energy. The centre of mass rests at the origin.
 
-constexpr double kG = 1.0, kBodyMass = 0.5;
+constexpr double kG = 1.0, kBodyMass = 0.5, kOrbitPeriods = 2.0;
 const Vec2 kRelX(1.0, 0.0), kRelV(0.25, 0.8);
 
 double mu() { return kG * 2 * kBodyMass; }
@@ -239,12 +245,16 @@ class OrbitMeasure final : public Measurement {
 };
 
 Problem orbit(bool quick) {
-  Problem p = integratorProblem("orbit", "Two-body orbit (e = 0.41, 2 periods)", "separation error at the end [m]",
+  const KeplerOrbit exact(mu(), kRelX, kRelV);
+  Problem p = integratorProblem("orbit",
+                                "Two-body orbit (e = " + numberText(exact.eccentricity(), 2) + ", " +
+                                    numberText(kOrbitPeriods) + " periods)",
+                                "separation error at the end [m]",
                                 sweep(quick, {0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 5e-4, 2e-4, 1e-4}));
   p.scene = [](const Method& m, double dt) {
     const KeplerOrbit orbit(mu(), kRelX, kRelV);
     SceneBuilder x;
-    x.duration(2 * orbit.period()).method(m, dt);
+    x.duration(kOrbitPeriods * orbit.period()).method(m, dt);
     // Each body sits opposite the other about the resting centre of mass (equal masses).
     const int a = x.particle(-0.5 * kRelX, -0.5 * kRelV, kBodyMass, false, 0.02);
     const int b = x.particle(0.5 * kRelX, 0.5 * kRelV, kBodyMass, false, 0.02);
@@ -252,11 +262,10 @@ Problem orbit(bool quick) {
     return x;
   };
   p.measure = [] { return std::make_unique<OrbitMeasure>(); };
-  const KeplerOrbit exact(mu(), kRelX, kRelV);
   p.exactMinSeparation = exact.semiMajorAxis() * (1 - exact.eccentricity());
   p.setup = {{"mass", kBodyMass}, {"G", kG},           {"mu", mu()},
              {"rx", kRelX.x()},  {"ry", kRelX.y()},    {"vx", kRelV.x()},
-             {"vy", kRelV.y()},  {"periods", 2.0},     {"a", exact.semiMajorAxis()},
+             {"vy", kRelV.y()},  {"periods", kOrbitPeriods}, {"a", exact.semiMajorAxis()},
              {"e", exact.eccentricity()}, {"period", exact.period()}};
   return p;
 }

@@ -4,6 +4,7 @@
 // of its phase; detection, response and failsafe come from the simulator's own StepStats.
 #include "csv.h"
 #include "experiments.h"
+#include "number_text.h"
 #include "pile.h"
 #include "robustness.h"
 #include "stability.h"
@@ -55,17 +56,24 @@ std::vector<ProfileCase> cases(bool quick) {
   };
   for (const char* integrator : {"symplectic-euler", "implicit-euler", "linearized-implicit-euler"}) {
     const Method m{integrator, integrator, CollisionChoice{}};
-    out.push_back(ProfileCase{"Row of 10 springs (k = 100)", springRow(10, 100, integrator, 1e-3), m});
+    constexpr int bobs = 10;
+    constexpr double k = 100;
+    out.push_back(ProfileCase{"Row of " + std::to_string(bobs) + " springs (k = " + numberText(k) + ")",
+                              springRow(bobs, k, integrator, 1e-3), m});
   }
   const std::vector<Method> collision = collisionMethods();
   for (const char* label : {"simple", "continuous-time", "hybrid"}) {
     const Method m = find(collision, label);
-    out.push_back(ProfileCase{"Disk against a thin edge (10 m/s)", edgeThrowScene(m, 10, 1e-4), m});
+    constexpr double speed = 10;
+    out.push_back(
+        ProfileCase{"Disk against a thin edge (" + numberText(speed) + " m/s)", edgeThrowScene(m, speed, 1e-4), m});
   }
   for (const char* label : {"hybrid", "penalty k=1e4"}) {
     Method m = find(collision, label);
     m.collision.cor = 0.5;
-    out.push_back(ProfileCase{"Dense pile (40 disks in a box)", pileScene(m, 0.002, quick ? 3 : 8, quick ? 2 : 5), m});
+    const int columns = quick ? 3 : 8, rows = quick ? 2 : 5;
+    out.push_back(ProfileCase{"Dense pile (" + std::to_string(columns * rows) + " disks in a box)",
+                              pileScene(m, 0.002, columns, rows), m});
   }
   if (quick) out.resize(4);
   return out;

@@ -5,8 +5,15 @@ from the data; the words around them are report_text.py's.
 """
 import math
 import os
+import re
 
 import study_data as sd
+
+
+def title_cor(title):
+    """The COR a problem's title states ("... (COR 1)" -> "COR 1"): the scene's own, not retyped."""
+    m = re.search(r"COR [0-9.]+", title)
+    return m.group(0) if m else "its COR"
 
 
 def percent(fmt, x, digits=2):
@@ -149,7 +156,8 @@ def facts(data_dir, rep):
             if sd_rows[0]["escaped"] != sd_rows[1]["escaped"] else str(int(sd_rows[0]["escaped"]))
         loss = [1 - r["energy_end"] for r in sd_rows]
         f["slot_loss"] = (f"which removes {pct(loss[0])} (continuous-time) and {pct(loss[1])} (hybrid) of the kinetic "
-                          "energy that COR 1 would keep: the price of never tunnelling" if min(loss) > 1e-9 else
+                          f"energy that {title_cor(sd_rows[0]['title'])} would keep: the price of never tunnelling"
+                          if min(loss) > 1e-9 else
                           f"which kept the kinetic energy to {fmt(max(abs(x) for x in loss), 1)}")
         f["slot_zones"] = f"{pct(sd_rows[0]['zone_fraction_max'])} and {pct(sd_rows[1]['zone_fraction_max'])}"
         per_step = max(r["contacts"] for r in series if r["problem"] == "slot" and r["mode"] == "default")

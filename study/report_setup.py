@@ -86,11 +86,24 @@ def facts(data_dir, r):
         for row in sd.load(data_dir, "problems"):
             p.setdefault(row["problem"], {})[row["name"]] = row["value"]
         f["blow_up"] = num(p["study"]["blow_up"])
+        threads = p["study"].get("hardware_threads", 0)
+        f["machine"] = (f"{threads:.0f} hardware threads as the run counted them, shared with whatever else ran"
+                        if sd.finite(threads) and threads > 0 else "its hardware threads uncounted")
         f["problems_table"] = r.table(["problem", "set-up", "exact answer", "error measured"], problems_table(p))
     def first_row(name):
         rows = sd.load(data_dir, name) if os.path.exists(os.path.join(data_dir, name + ".csv")) else []
         return rows[0] if rows else {}
 
+    # The wildest run that still ended "ok": how wrong a run may be below the blow-up mark.
+    acc = sd.load(data_dir, "accuracy") if os.path.exists(os.path.join(data_dir, "accuracy.csv")) else []
+    ok = [row for row in acc if row["outcome"] == "ok" and sd.finite(row["energy_error_max"])]
+    if ok:
+        w = max(ok, key=lambda row: row["energy_error_max"])
+        off = num(float(f"{w['energy_error_max']:.2g}"))
+        f["wildest_ok"] = (f"`{w['method']}` on the {w['problem']} at dt = {num(w['dt'])} s ended \"ok\" with its "
+                           f"energy off by up to {off} times its scale")
+    else:
+        f["wildest_ok"] = "no run of this regeneration was that wrong"
     contacts = first_row("contacts_summary")
     f["stopped_energy"] = num(contacts.get("stopped_energy", float("nan")))
     f["stopped_tail"] = f"{(1 - contacts.get('stopped_share', float('nan'))) * 100:.3g}"

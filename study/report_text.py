@@ -83,7 +83,8 @@ Only the rack and the cradle are isolated systems, where both momenta must stay 
 walls, fixed edges and gravity exchange momentum with the particles. \"Escaped\" is a centre that
 crossed a wall's or an edge's line; \"frozen\" is a kinetic energy at or below {stopped_energy} of its peak
 over at least the last {stopped_tail} % of the run (for the pile: while packed looser than {loosest_rest}, since
-frictionless disks at rest pack near 0.82 or denser; its packing is judged from its mean height
+frictionless equal disks at rest pack at least as densely as random close packing, about 0.82 in 2D
+(J. G. Berryman, Phys. Rev. A 27, 1053, 1983: 0.82 ± 0.02 for disks); its packing is judged from its mean height
 against the N lowest sites of a triangular lattice in the V). Tests of each claim:
 `tests/study/contacts_test.cpp`.
 """
@@ -139,7 +140,7 @@ It builds `fosssim-study` (Release, in `build-study/`), runs every experiment in
 `study/report.py`. {elapsed}The program and its options are described in
 [study/README.md](../study/README.md).
 
-Time is wall time on the project's machine (2 shared cores). Every timed run is repeated and the
+Time is wall time on the project's machine ({machine}). Every timed run is repeated and the
 least time kept (the run least disturbed by other work); even so, single numbers move between
 regenerations, so trust ratios between methods, not the last digit of a time.
 """
@@ -160,8 +161,8 @@ METHODS = """\
 - **Unstable** means: the simulator reported a non-finite state (its error names the step and the
   particle), an implicit solve failed, or the mechanical energy moved by more than **{blow_up} times**
   its starting scale (max of |E0|, kinetic and |potential|). A run is stopped there and reported,
-  never crashed on. {blow_up} marks a blow-up, not an accuracy limit: a run can be wildly wrong (energy x1e4)
-  and still "ok"; its error then says so.
+  never crashed on. {blow_up} marks a blow-up, not an accuracy limit: a run can be wildly wrong and
+  still "ok" ({wildest_ok}); its error then says so.
 """
 
 PROBLEMS = """\
@@ -187,7 +188,7 @@ ACCURACY_WORDS = """\
   {sympl_vs_explicit} than explicit Euler's, at the same cost per step; it needs {sympl_vs_implicit}.
   On the orbit it keeps the angular momentum exactly (to rounding) and {orbit_energy_words}.
   Explicit and implicit Euler drift instead (spiralling out and in).
-- **Explicit Euler gains energy on every oscillation** (x{explicit_gain} in 5 periods at
+- **Explicit Euler gains energy on every oscillation** (x{explicit_gain} in {spring_periods} periods at
   dt = {explicit_gain_dt}). {explicit_rule_words} Implicit Euler damps the energy away (the
   undamped spring loses {implicit_loss} % of it at that dt).
 - **Implicit Euler on the orbit fails** {orbit_failure}: Newton's method does not converge in
@@ -319,7 +320,7 @@ def document(sections, facts, elapsed):
         when = (f"The last regeneration ran the experiments in {elapsed:.0f} s of wall time (the whole "
                 "command, build included, prints its own total). ")
     parts = [
-        INTRO.format(elapsed=when),
+        INTRO.format(elapsed=when, machine=facts.get("machine", "its hardware threads uncounted")),
         PICK.format(**facts),
         MODES.format(**facts),
         METHODS.format(**facts),

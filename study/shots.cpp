@@ -247,7 +247,8 @@ Status runShots(const StudyOptions& options) {
   if (Status s = csv.open(options.outDir + "/robustness_shots.csv",
                           {"target", "method", "collision", "mode", "shot", "speed", "dt", "speed_dt", "angle_deg",
                            "offset", "joint_angle_deg", "cor", "outcome", "energy_ratio", "low_bound", "high_bound",
-                           "clearance_end", "steps", "run_outcome", "message"});
+                           "clearance_end", "steps", "run_outcome", "message", "disk_radius", "edge_radius",
+                           "tolerance"});
       !s)
     return s;
   const int shots = options.quick ? 4 : 100;
@@ -263,7 +264,8 @@ Status runShots(const StudyOptions& options) {
           csv << shotTargetName(target) << m.label << m.collision.type << (compat ? "compat" : "default")
               << static_cast<long>(i) << s.speed << s.dt << s.speed * s.dt << s.angle / kDeg << s.offset
               << s.jointAngle / kDeg << s.cor << shotOutcomeName(r.outcome) << r.energyRatio << r.lowBound
-              << r.highBound << r.clearance << r.run.steps << outcomeName(r.run.outcome) << r.run.message;
+              << r.highBound << r.clearance << r.run.steps << outcomeName(r.run.outcome) << r.run.message << kDisk
+              << kEdge << kTolerance;
           if (Status st = csv.endRow(); !st) return st;
         }
         if (options.log) *options.log << "." << std::flush;

@@ -104,7 +104,7 @@ Status runStability(const StudyOptions& options) {
   std::vector<double> ks;
   for (int e = 0; e <= (options.quick ? 2 : 12); e += (options.quick ? 2 : 1)) ks.push_back(std::pow(10.0, e / 2.0));
   for (int bobs : {1, 10}) {
-    const std::string system = bobs == 1 ? "single spring" : "row of 10 springs";
+    const std::string system = bobs == 1 ? "single spring" : "row of " + std::to_string(bobs) + " springs";
     for (const Method& m : integratorMethods()) {
       if (options.log) *options.log << "stability: " << system << ", " << m.label << std::flush;
       for (double k : ks) {
