@@ -9,7 +9,7 @@
 //            onto a floor between two walls (3 impulse passes: see bench_scenes.cpp)
 //   bullets  fast small disks (40-60 m/s, a sparse field) shot at a fixed chain of thin edges,
 //            a ceiling above and walls at the sides: every bullet crosses 20-30 radii per step
-// The dense-pile family (pileKinds(), issue 17: scenes that cannot flatter a method), 1,000 steps,
+// The dense-pile family (pileKinds(): scenes that cannot flatter a method), 1,000 steps,
 // every start jittered from the seed:
 //   pile-low-cor0, pile-low-cor0.5    disks r = 0.05 on a 2.5r grid jittered by 0.4 of the gap,
 //                                      poured at rest into a V from just above it (rain's start)

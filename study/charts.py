@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Charts of the study (issue 6), from the CSV files fosssim-study writes.
+"""Charts of the study, from the CSV files fosssim-study writes.
 
     python3 study/charts.py DATA_DIR    writes DATA_DIR/<chart>.png and .svg
 
