@@ -1,6 +1,6 @@
 // Numbers as they read in the study's titles ("COR 0.5", "15 disks", "three disks"): titles are
 // formatted from the constants the scenes use, so changing a constant cannot leave a title that
-// tells another story (issue 16: no number of the study typed by hand).
+// tells another story (no number of the study is typed by hand).
 #pragma once
 
 #include <cstdio>

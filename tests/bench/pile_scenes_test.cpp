@@ -1,4 +1,4 @@
-// The dense-pile family (bench_scenes.h, issue 17): every scene is fixed by its seed (same seed,
+// The dense-pile family (bench_scenes.h): every scene is fixed by its seed (same seed,
 // same scene; another seed, other starts), starts with no particle overlapping another or a wall,
 // is what its name says (COR, poured from low or high), and the pile that comes to rest does so
 // in the simulator, by the benchmark's own measure of rest (block_table.h's atRestShare).

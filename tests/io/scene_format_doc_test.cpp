@@ -43,7 +43,7 @@ TEST(SceneFormatDoc, EveryElementAndAttributeIsOnThePage) {
       EXPECT_TRUE(a.max == 0 || (a.maxReason && *a.maxReason)) << e.name << " " << a.name << ": a bound needs its reason";
     }
   }
-  // The elements no page listed before (issue 13).
+  // The elements no page listed before.
   for (const char* name : {"constantforce", "viewport", "maxsimfreq", "backgroundcolor", "particlecolor", "edgecolor",
                            "halfplanecolor", "particlepath", "simtype", "scenetag"})
     EXPECT_NE(page.find("### `<" + std::string(name) + ">`"), std::string::npos) << name;

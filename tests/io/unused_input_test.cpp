@@ -1,4 +1,4 @@
-// Everything in a scene file that the loader does not use is reported (issue 12): elements nested
+// Everything in a scene file that the loader does not use is reported: elements nested
 // inside elements, text, CDATA, declarations, attributes on <scene>, a NUL byte; misspellings get
 // "did you mean"; one pass reports every error, in line order; floods are counted, not printed.
 #include "scene_text.h"
