@@ -278,7 +278,7 @@ class Judge {
     std::string ext = std::filesystem::path(o_.movie).extension().string();
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     const std::string hint = ext == ".png" ? " (PNG frames: -g 1)" : ext == ".svg" ? " (SVG frames: -m DIR)" : "";
-    return fail("option --movie takes a movie file ending in " + std::string(render::kMovieEndings) + ", got \"" +
+    return fail("option --movie takes a movie file ending in " + render::movieEndings() + ", got \"" +
                 o_.movie + "\"" + hint);
   }
   bool fps(const std::vector<std::string>& given) {

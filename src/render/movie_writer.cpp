@@ -95,7 +95,7 @@ MovieWriter::~MovieWriter() {
 
 Status MovieWriter::open(const std::string& path, int width, int height, double fps, std::unique_ptr<MovieWriter>& out) {
   if (!isMovieName(path))
-    return Status::error("the movie \"" + path + "\": a movie's name ends in " + kMovieEndings +
+    return Status::error("the movie \"" + path + "\": a movie's name ends in " + movieEndings() +
                          " (ffmpeg writes others as pictures or not at all)");
   const std::string ffmpeg = findOnPath("ffmpeg");
   if (ffmpeg.empty())

@@ -6,16 +6,26 @@
 #include "fosssim/render/image.h"
 
 #include <cctype>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <sys/types.h>
 
 namespace fosssim::render {
 
-/// The endings of the movies MovieWriter writes, for messages.
-inline constexpr const char* kMovieEndings = ".mp4, .mov, .mkv, .webm, .avi or .gif";
+/// The endings of the movies MovieWriter writes (lower case).
+inline constexpr const char* kMovieEndingList[] = {".mp4", ".mov", ".mkv", ".webm", ".avi", ".gif"};
 
-/// Whether `path` ends (in any case) in one of kMovieEndings. ffmpeg would write an image name
+/// kMovieEndingList for messages: ".mp4, .mov, ... or .gif".
+inline std::string movieEndings() {
+  std::string text;
+  const std::size_t n = std::size(kMovieEndingList);
+  for (std::size_t k = 0; k < n; ++k)
+    text += (k == 0 ? "" : k + 1 == n ? " or " : ", ") + std::string(kMovieEndingList[k]);
+  return text;
+}
+
+/// Whether `path` ends (in any case) in one of kMovieEndingList. ffmpeg would write an image name
 /// (out.png) as one picture and fail at the second frame, a pattern (out%03d.png) as numbered
 /// pictures, and finds no format for other endings. Inline: the command line checks names in
 /// builds without the renderer too.
@@ -24,7 +34,7 @@ inline bool isMovieName(const std::string& path) {
   if (dot == std::string::npos || path[dot] != '.') return false;
   std::string ending = path.substr(dot);
   for (char& c : ending) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  for (const char* movie : {".mp4", ".mov", ".mkv", ".webm", ".avi", ".gif"})
+  for (const char* movie : kMovieEndingList)
     if (ending == movie) return true;
   return false;
 }
