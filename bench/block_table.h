@@ -22,7 +22,7 @@ struct Block {
   double failsafeMs = -1;     ///< FOSSSim: of which the failsafe, per step
   double inZones = -1;        ///< FOSSSim: particles in failsafe zones at the ends of steps, mean share
   double atRest = 0;          ///< share of the movable particles at rest after the block's last step (atRestShare)
-  double awake = -1;          ///< Box2D: share of the bodies awake after the block's last step
+  double awake = -1;          ///< share of the particles (bodies) awake after the block's last step
 };
 
 /// The speed below which a particle counts as at rest: a thousandth of its radius per step (0.01 m/s

@@ -175,6 +175,9 @@ Figures runScene(const Options& o, const std::string& kind, int n) {
           b.failsafeMs = 1000 * blockFailsafe / static_cast<double>(inBlock);
           b.inZones = static_cast<double>(blockZone) / (static_cast<double>(inBlock) * s.scene.numParticles());
           b.atRest = atRestShare(s.scene, state.v);
+          // Awake: not asleep after the block's last step (the default mode's sleepers; Box2D's
+          // column of the same name).
+          b.awake = 1.0 - static_cast<double>(st.asleep) / s.scene.numParticles();
         }
         blockZone = 0;
         blockFailsafe = 0;

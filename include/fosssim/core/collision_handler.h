@@ -38,6 +38,10 @@ struct HandlerOptions {
   /// Threads for the broad and narrow phase (1: none besides the caller's). The results are the
   /// same for every count: work is split into ranges whose results are joined in pair order.
   int threads = 1;
+  /// Default mode: particles that stay still for a while sleep (are not moved or searched) until
+  /// a contact or a moving neighbour wakes them (src/core/collision/sleepers.h). A run in which
+  /// no particle sleeps is identical with it on or off. --compat never sleeps.
+  bool sleep = true;
 };
 
 /// Everything a handler may use during one step besides the scene and the two states.

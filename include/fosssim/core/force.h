@@ -72,6 +72,13 @@ class Force {
   /// True when energy() is a potential whose gradient is addGradient (conservative forces).
   virtual bool hasPotential() const { return false; }
 
+  /// True when the force on each particle depends on that particle's own position and velocity
+  /// alone (gravity, a constant force, drag), or acts between particles only at contact range
+  /// (the penalty layer, for which a sleeper is an obstacle as it is for contacts): holding one
+  /// particle still then changes no force on another particle at a distance, which is what lets
+  /// resting particles sleep (src/core/collision/sleepers.h). False for springs and pair forces.
+  virtual bool actsAlone() const { return false; }
+
   /// True when the part of the force that energy() does not account for can do positive work,
   /// so that the total mechanical energy may grow honestly (the energy watch then stays off).
   /// By default a force without a potential may; drag and spring damping with b >= 0 only remove

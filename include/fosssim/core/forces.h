@@ -40,6 +40,7 @@ class SimpleGravityForce final : public Force {
   double energy(const Scene&, const VecX& x, const VecX& v) const override;
   void addGradient(const Scene&, const VecX& x, const VecX& v, VecX& gradE) const override;
   bool hasPotential() const override { return true; }
+  bool actsAlone() const override { return true; }
   const Vec2& acceleration() const { return g_; }
 
  private:
@@ -54,6 +55,7 @@ class ConstantForce final : public Force {
   double energy(const Scene&, const VecX& x, const VecX& v) const override;
   void addGradient(const Scene&, const VecX& x, const VecX& v, VecX& gradE) const override;
   bool hasPotential() const override { return true; }
+  bool actsAlone() const override { return true; }
   const Vec2& force() const { return f_; }
 
  private:
@@ -86,6 +88,7 @@ class DragDampingForce final : public Force {
   void addGradient(const Scene&, const VecX& x, const VecX& v, VecX& gradE) const override;
   void addJacobianV(const Scene&, const VecX& x, const VecX& v, Triplets& out) const override;
   bool mayAddEnergy() const override { return b_ < 0.0; }  ///< -b v with b >= 0 only removes energy
+  bool actsAlone() const override { return true; }
   double damping() const { return b_; }
 
  private:
@@ -127,6 +130,7 @@ class PenaltyForce final : public Force {
   void addGradientWith(const Scene&, const VecX& x, const VecX& v, VecX& gradE, ForceContext& context) const override;
   bool hasJacobians() const override { return false; }
   bool hasPotential() const override { return true; }
+  bool actsAlone() const override { return true; }  ///< contact range only (see Force)
   double stiffness() const override { return k_; }
   double thickness() const { return thickness_; }
 

@@ -24,6 +24,8 @@ struct StepStats {
   int zones = 0;             ///< hybrid: impact zones at the end of the failsafe
   int largestZone = 0;       ///< hybrid: particles in the largest zone
   int zoneParticles = 0;     ///< particles in failsafe zones at the end of the step
+  int asleep = 0;            ///< default mode: particles asleep at the end of the step (resting, not moved)
+  int woken = 0;             ///< default mode: sleepers woken in the step (by a contact or a moving neighbour)
   int rigidZones = 0;        ///< zones that moved rigidly (or stopped): all of --compat's, the default mode's last resort
 
   void clear() { *this = StepStats{}; }

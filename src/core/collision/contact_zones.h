@@ -23,6 +23,7 @@
 #pragma once
 
 #include "pair_candidates.h"
+#include "sleepers.h"
 #include "step_motion.h"
 
 #include "fosssim/core/scene.h"
@@ -95,7 +96,7 @@ class ContactZones {
   /// stopped (it holds a fixed particle or touches a half-plane). Particles outside its zone meet
   /// it as an obstacle.
   bool isImmobile(const Scene& scene, int p) const {
-    if (scene.isFixed(p) || (!stopped_.empty() && stopped_[p])) return true;
+    if (scene.isFixed(p) || (!stopped_.empty() && stopped_[p]) || (sleepers_ && sleepers_->asleep(p))) return true;
     const int z = zoneOf(p);
     return z >= 0 && rigid_[z] && immovable_[z];
   }
@@ -105,6 +106,8 @@ class ContactZones {
   /// Adds the zones (count, particles, largest, rigid ones) to the statistics.
   void sizes(StepStats& stats) const;
   void setRigidOnly(bool rigid) { rigidOnly_ = rigid; }
+  /// The handler's sleepers: obstacles, as fixed particles are.
+  void setSleepers(const Sleepers* sleepers) { sleepers_ = sleepers; }
 
  private:
   int root(int p) const {
@@ -129,6 +132,7 @@ class ContactZones {
   void moveRigidly(const Scene& scene, const StepMotion& motion, int zone, double T);
 
   bool rigidOnly_ = false;
+  const Sleepers* sleepers_ = nullptr;
   std::vector<int> parent_;                ///< N: union-find parent, -1 when in no zone
   std::vector<std::vector<int>> members_;  ///< per root: its particles
   std::vector<int> metAgain_;              ///< per root: contacts back after a solve, failed solves

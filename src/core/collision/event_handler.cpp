@@ -22,14 +22,17 @@ std::string pairName(uint64_t key) {
 
 }  // namespace
 
-EventHandler::EventHandler(const CollisionSettings& settings, int eventsPerParticle, bool allPairs)
+EventHandler::EventHandler(const CollisionSettings& settings, int eventsPerParticle, bool allPairs, bool sleep)
     : cor_(settings.cor), eventsPerParticle_(std::max(eventsPerParticle, 0)), allPairs_(allPairs) {
   zones_.setRigidOnly(settings.failsafe == Failsafe::Rigid);
+  zones_.setSleepers(&sleepers_);
+  sleepers_.setEnabled(sleep);
 }
 
 Status EventHandler::handle(const Scene& scene, const State& start, State& state, StepContext& ctx) {
   const int n = scene.numParticles();
   if (ctx.log->polynomials.enabled()) logReferencePolynomials(scene, start, state, ctx);
+  sleepers_.begin(scene, start, state, ctx.dt);  // sleepers back where they rest
   motion_.begin(start.x, state.x);
   events_.assign(n, 0);
   zones_.reset(n);
@@ -38,6 +41,7 @@ Status EventHandler::handle(const Scene& scene, const State& start, State& state
     const StepTimer timer(ctx.timing, ctx.stats->broadPhase);
     candidates_.build(scene, motion_.from(), motion_.end(), 0.0, /*updates=*/true);
     if (allPairs_) candidates_.forceAllPairs();
+    if (sleepers_.any()) wakeNearMoving(scene, *ctx.stats);
   }
   // Detect.
   if (Status s = detectAll(scene, ctx); !s) return s;
@@ -60,6 +64,8 @@ Status EventHandler::handle(const Scene& scene, const State& start, State& state
   }
   // Finish: the end of every particle's last piece.
   state.x = motion_.end();
+  sleepers_.end(scene, start, state);
+  ctx.stats->asleep = sleepers_.sleeping();
   zones_.sizes(*ctx.stats);
   showMidStep(ctx, state);
   return Status::ok();
@@ -103,6 +109,7 @@ Status EventHandler::detectChanged(const Scene& scene, double T, StepContext& ct
 
 // The pair over [T, 1]: every particle is on its last piece there (events come in time order).
 Status EventHandler::query(const Scene& scene, uint64_t key, double T, StepStats& stats) {
+  if (sleepers_.any() && resting(scene, key)) return Status::ok();
   ++stats.candidatePairs;
   ++stats.queries[static_cast<int>(keyKind(key))];
   const double left = 1.0 - T;
@@ -128,6 +135,43 @@ Status EventHandler::query(const Scene& scene, uint64_t key, double T, StepStats
   return Status::ok();
 }
 
+bool EventHandler::resting(const Scene& scene, uint64_t key) const {
+  const PairParticles pair = pairParticles(scene, key);
+  bool asleep = false;
+  for (int k = 0; k < pair.count; ++k) {
+    if (sleepers_.asleep(pair.p[k])) asleep = true;
+    else if (!scene.isFixed(pair.p[k])) return false;
+  }
+  return asleep;
+}
+
+void EventHandler::wakeIfHit(const Scene& scene, uint64_t key, double closing, StepStats& stats) {
+  const PairParticles pair = pairParticles(scene, key);
+  double kicks = 0, sleepSpeed = 0;
+  bool asleep = false;
+  for (int k = 0; k < pair.count; ++k) {
+    const int p = pair.p[k];
+    if (sleepers_.asleep(p)) asleep = true, sleepSpeed = std::max(sleepSpeed, sleepers_.sleepSpeed(scene, p));
+    else if (!scene.isFixed(p)) kicks += sleepers_.kick(p);
+  }
+  if (!asleep || closing <= kWakeKickFactor * kicks + sleepSpeed) return;
+  for (int k = 0; k < pair.count; ++k)
+    if (sleepers_.asleep(pair.p[k])) sleepers_.wake(pair.p[k]), ++stats.woken;
+}
+
+void EventHandler::wakeNearMoving(const Scene& scene, StepStats& stats) {
+  for (int p = 0; p < scene.numParticles(); ++p) {
+    if (sleepers_.asleep(p) || scene.isFixed(p) || !sleepers_.movedLastStep(p)) continue;
+    keys_.clear();
+    candidates_.pairsOf(p, keys_);
+    for (uint64_t key : keys_) {
+      const PairParticles pair = pairParticles(scene, key);
+      for (int k = 0; k < pair.count; ++k)
+        if (sleepers_.asleep(pair.p[k])) sleepers_.wake(pair.p[k]), ++stats.woken;
+    }
+  }
+}
+
 bool EventHandler::stale(const Scene& scene, const Event& e) const {
   const PairParticles pair = pairParticles(scene, e.key);
   for (int k = 0; k < pair.count; ++k)
@@ -151,6 +195,7 @@ void EventHandler::respond(const Scene& scene, const Event& e, State& state, Ste
     if (pairDeepening(scene, e.key, position, e.t, 1.0, length) <= kDepthTolerance * length) return;
     curving = true;
   }
+  if (sleepers_.any()) wakeIfHit(scene, e.key, curving ? 0.0 : closing, *ctx.stats);
 
   // A contact is inside one rigid zone (exempt) only if every particle of it moves with that zone:
   // a half-plane or a fixed particle met by a rigid zone is an obstacle, which joins the zone. A

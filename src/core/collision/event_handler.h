@@ -21,6 +21,7 @@
 #include "contact_zones.h"
 #include "continuous_detection.h"
 #include "pair_candidates.h"
+#include "sleepers.h"
 #include "step_motion.h"
 
 #include "fosssim/core/collision_handler.h"
@@ -37,8 +38,9 @@ constexpr int kContinuousEventsPerParticle = 32;
 class EventHandler final : public CollisionHandler {
  public:
   /// eventsPerParticle: impulse events a particle may take in a step before the failsafe (0:
-  /// every contact goes to the zones at once). allPairs: no broad phase (HandlerOptions).
-  EventHandler(const CollisionSettings& settings, int eventsPerParticle, bool allPairs);
+  /// every contact goes to the zones at once). allPairs: no broad phase; sleep: resting
+  /// particles sleep (HandlerOptions).
+  EventHandler(const CollisionSettings& settings, int eventsPerParticle, bool allPairs, bool sleep);
   Status handle(const Scene& scene, const State& start, State& state, StepContext& ctx) override;
   int zoneOf(int particle) const override;
   std::vector<Violation> unresolved(const Scene& scene, const VecX& start, const VecX& end,
@@ -60,6 +62,12 @@ class EventHandler final : public CollisionHandler {
   Status detectChanged(const Scene& scene, double T, StepContext& ctx);
   Status query(const Scene& scene, uint64_t key, double T, StepStats& stats);
   bool stale(const Scene& scene, const Event& e) const;
+  /// Whether the pair cannot meet: a sleeper with nothing that moves (fixed, asleep).
+  bool resting(const Scene& scene, uint64_t key) const;
+  /// Wakes the sleepers of the event's pair if it closes harder than resting contact (sleepers.h).
+  void wakeIfHit(const Scene& scene, uint64_t key, double closing, StepStats& stats);
+  /// Wakes every sleeper among the candidates of a particle that moved in the last step.
+  void wakeNearMoving(const Scene& scene, StepStats& stats);
   /// Applies the event's impulse (or hands it to the zones); fills changed_.
   void respond(const Scene& scene, const Event& e, State& state, StepContext& ctx);
   void logReferencePolynomials(const Scene& scene, const State& start, const State& state, StepContext& ctx);
@@ -70,6 +78,7 @@ class EventHandler final : public CollisionHandler {
   StepMotion motion_;
   PairCandidates candidates_;
   ContactZones zones_;
+  Sleepers sleepers_;
   ContinuousDetector logger_{math::DetectionRules{}};  ///< builds the trajectory log's polynomials
   std::vector<Event> heap_;
   std::vector<int> events_;       ///< N: impulse events taken by each particle in this step

@@ -1,0 +1,80 @@
+#include "sleepers.h"
+
+#include <algorithm>
+
+namespace fosssim {
+
+void Sleepers::begin(const Scene& scene, const State& start, State& state, double h) {
+  h_ = h;
+  const int n = scene.numParticles();
+  if (!enabled_) {
+    sleeping_ = 0;
+    return;
+  }
+  if (static_cast<int>(asleep_.size()) != n) {
+    asleep_.assign(n, 0);
+    still_.assign(n, 0);
+    moved_.assign(n, 1);
+    anchor_ = start.x;
+    kick_.assign(n, 0.0);
+    sleeping_ = 0;
+  }
+  // Who may sleep: the scene's contents do not change during a run, but this costs O(N + E)
+  // and keeps no stale answer if a caller edits a scene between runs.
+  mayRest_.assign(n, 0);
+  const bool forcesAlone =
+      std::all_of(scene.forces.begin(), scene.forces.end(), [](const auto& f) { return f->actsAlone(); });
+  if (forcesAlone) {
+    for (int p = 0; p < n; ++p) mayRest_[p] = !scene.isFixed(p);
+    for (const Edge& e : scene.edges)
+      if (!scene.isFixed(e.i) || !scene.isFixed(e.j)) mayRest_[e.i] = mayRest_[e.j] = 0;
+  }
+  if (sleeping_ == 0) return;
+  for (int p = 0; p < n; ++p) {
+    kick_[p] = (at(state.v, p) - at(start.v, p)).norm();
+    if (!asleep_[p]) continue;
+    at(state.x, p) = at(start.x, p);
+    at(state.v, p).setZero();
+  }
+}
+
+void Sleepers::wake(int p) {
+  if (!asleep(p)) return;
+  asleep_[p] = 0;
+  still_[p] = 0;
+  --sleeping_;
+}
+
+// A sleeper stays asleep here (its still count keeps growing); an awake particle is still when
+// both its displacement over the step and its end velocity's would be below the sleep distance,
+// and it sleeps once it has been still for kStepsToSleep steps and within that distance of where
+// its still run began.
+void Sleepers::end(const Scene& scene, const State& start, State& state) {
+  if (!enabled_) return;
+  const int n = scene.numParticles();
+  for (int p = 0; p < n; ++p) {
+    if (asleep_[p] || !mayRest_[p]) continue;
+    const double reach = kSleepFraction * scene.radius[p];
+    const bool still =
+        (at(state.x, p) - at(start.x, p)).norm() <= reach && h_ * at(state.v, p).norm() <= reach;
+    moved_[p] = !still;
+    if (!still) {
+      still_[p] = 0;
+      continue;
+    }
+    if (still_[p]++ == 0) at(anchor_, p) = at(start.x, p);
+    if (still_[p] < kStepsToSleep) continue;
+    if ((at(state.x, p) - at(anchor_, p)).norm() > reach) {
+      still_[p] = 0;  // creeping: start a new run from here
+      continue;
+    }
+    // Asleep from the next step on; where it ended, at rest (its last velocity was below the
+    // sleep speed: dropping it is what sleeping means).
+    asleep_[p] = 1;
+    moved_[p] = 0;
+    at(state.v, p).setZero();
+    ++sleeping_;
+  }
+}
+
+}  // namespace fosssim

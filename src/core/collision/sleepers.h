@@ -1,0 +1,89 @@
+// Internal header: rest that costs nothing (the default mode's time-ordered handler).
+//
+// A particle that has stayed still for kStepsToSleep steps falls asleep: from then on it is an
+// obstacle, like a fixed particle. The handler puts it back where the step started with zero
+// velocity (whatever the integrator predicted), queries no pair whose particles are all asleep or
+// fixed, and impulses and zones meet it with infinite mass. A resting pile whose particles all
+// sleep costs its broad phase and nothing else.
+//
+// What wakes a sleeper, and when (so that the default mode's promises hold):
+//   * a contact that hits it harder than resting contact does: an event whose closing speed
+//     exceeds twice what this step's forces gave the pair's awake particles (a particle resting
+//     on a sleeper closes at about h g every step: that must not wake it, or no pile could
+//     sleep) plus the sleep speed. It wakes in the same step, before the response, which then
+//     moves it as any other particle;
+//   * a neighbour that moves: at the start of a step, every sleeper among the broad phase's
+//     candidates of an awake particle that was not still in the last step wakes. This is what
+//     keeps a sleeper from floating when the particle under it is knocked away (one step late
+//     at most: the step in which the support left).
+// "Still" is measured in the scene's own scales, never in absolute units: over a step, a
+// particle moved less than kSleepFraction of its radius and its velocity would move it less than
+// that; and over the kStepsToSleep steps before it sleeps it moved less than kSleepFraction of its
+// radius in all (a particle sliding slowly at constant speed does not sleep).
+//
+// Only particles whose motion nobody else feels may sleep: not fixed, not the end of an edge
+// with a movable end, and only in scenes whose every force acts on each particle alone
+// (Force::actsAlone: gravity, drag, constant forces; a spring or gravitational pair force
+// would have to be integrated on both sides). Nothing changes until a particle sleeps: a run in
+// which none does is identical, bit for bit, to one with sleeping off (HandlerOptions::sleep).
+#pragma once
+
+#include "fosssim/core/scene.h"
+#include "fosssim/core/state.h"
+
+#include <vector>
+
+namespace fosssim {
+
+/// Steps a particle must stay still before it sleeps. In steps, not seconds: scale-free, and long
+/// enough that a ball at the top of its flight (still for one step) never sleeps.
+constexpr int kStepsToSleep = 60;
+
+/// "Still": moving less than this fraction of the particle's radius per step (and in all over the
+/// kStepsToSleep steps). The benchmark's "at rest" (|v| < 10^-3 r/dt) is the same measure.
+constexpr double kSleepFraction = 1e-3;
+
+/// A sleeper wakes when a contact closes faster than this many times what the step's forces gave
+/// the awake particles of the pair (plus the sleep speed): resting contact closes by about once.
+constexpr double kWakeKickFactor = 2.0;
+
+class Sleepers {
+ public:
+  /// Sleeping on or off (off: nothing ever sleeps and nothing here costs anything).
+  void setEnabled(bool on) { enabled_ = on; }
+
+  /// Step start: sizes the storage, works out who may sleep in this scene, and puts every
+  /// sleeper back at its start position with zero velocity in `state` (the integrator's
+  /// prediction). h: the step.
+  void begin(const Scene& scene, const State& start, State& state, double h);
+
+  /// Whether any particle sleeps in this step (nothing else here is needed when none does).
+  bool any() const { return sleeping_ > 0; }
+  bool asleep(int p) const { return sleeping_ > 0 && asleep_[p]; }
+  /// Wakes p (no-op if awake): it counts as moving again from now on.
+  void wake(int p);
+  /// Whether p did not stay still in the last step (a neighbour that moves wakes sleepers).
+  bool movedLastStep(int p) const { return moved_.empty() || moved_[p] != 0; }
+  /// The velocity change this step's forces gave particle p (|predicted v - start v|).
+  double kick(int p) const { return kick_[p]; }
+  /// The sleep speed of particle p: kSleepFraction of its radius per step, over h.
+  double sleepSpeed(const Scene& scene, int p) const { return kSleepFraction * scene.radius[p] / h_; }
+
+  /// Step end: counts who stayed still, and puts to sleep those still for kStepsToSleep steps.
+  void end(const Scene& scene, const State& start, State& state);
+  /// Particles asleep now.
+  int sleeping() const { return sleeping_; }
+
+ private:
+  bool enabled_ = true;
+  double h_ = 1;
+  int sleeping_ = 0;
+  std::vector<char> mayRest_;    ///< N: may sleep in this scene (see the top of this file)
+  std::vector<char> asleep_;     ///< N
+  std::vector<int> still_;       ///< N: consecutive steps still
+  std::vector<char> moved_;      ///< N: was not still in its last step awake (a woken sleeper has not moved)
+  VecX anchor_;                  ///< 2N: position when the particle's still run began
+  std::vector<double> kick_;     ///< N: this step's |predicted v - start v|
+};
+
+}  // namespace fosssim
