@@ -49,6 +49,7 @@ struct Options {
   int repeats = 0;  ///< 0: 3 below 10^5 particles, 1 from there on
   bool allPairs = false;
   bool compat = false;  ///< the course's formulation (--compat) instead of the default mode
+  bool noSleep = false; ///< --no-sleep: the default mode's resting particles do not sleep
   int threads = 1;
   std::string csv;
   bool queries = true;
@@ -125,6 +126,7 @@ Figures runScene(const Options& o, const std::string& kind, int n) {
   options.handler.allPairs = o.allPairs;
   options.handler.compat = o.compat;
   options.handler.threads = o.threads;
+  options.handler.sleep = !o.noSleep;
   std::unique_ptr<Simulator> sim;
   if (Status st = Simulator::create(s.scene, options, sim); !st) {
     std::snprintf(f.error, sizeof f.error, "%s", st.message().c_str());
@@ -282,6 +284,7 @@ void define(CLI::App& app, Options& o) {
   app.add_option("--blocks-csv", o.blocksCsv, "append the block tables' rows to this CSV file")->option_text("FILE");
   app.add_flag("--all-pairs", o.allPairs, "test every pair (no broad phase)");
   app.add_flag("--compat", o.compat, "the course's formulation instead of the default mode");
+  app.add_flag("--no-sleep", o.noSleep, "the default mode's resting particles do not sleep");
   app.add_option("--csv", o.csv, "also write the figures to this CSV file")->option_text("FILE");
   app.add_flag_callback("--no-queries", [&o] { o.queries = false; }, "skip the narrow-phase query rates");
   app.add_flag_callback("--no-steps", [&o] { o.stepTable = false; }, "skip the ms-per-step table");
@@ -311,9 +314,9 @@ int main(int argc, char** argv) {
   }
   printMachine();
   if (o.stepTable) {
-    std::printf("ms per step by phase (%s handling, %d thread%s%s%s, seed %u; fastest of the repeated runs)\n",
+    std::printf("ms per step by phase (%s handling, %d thread%s%s%s%s, seed %u; fastest of the repeated runs)\n",
                 o.collision.c_str(), o.threads, o.threads == 1 ? "" : "s", o.allPairs ? ", all pairs" : "",
-                o.compat ? ", --compat" : "", o.seed);
+                o.compat ? ", --compat" : "", o.noSleep && !o.compat ? ", no sleeping" : "", o.seed);
     std::printf("%-16s %7s %6s %9s %7s %7s %7s %7s %8s %8s | %9s %9s %6s %5s %6s %6s %6s %5s %7s %6s\n", "scene", "N",
                 "steps", "integrate", "broad", "narrow", "respond", "failsafe", "other", "total", "cand/step",
                 "coll/step", "passes", "fs%", "rounds", "zone", "inzn%", "rgd%", "B/part", "grow/p");

@@ -68,6 +68,7 @@ int run(int argc, char** argv) {
   SimulatorOptions simOptions;
   simOptions.handler.compat = options.compat;
   simOptions.handler.threads = options.threads;
+  simOptions.handler.sleep = !options.noSleep;
   simOptions.logPolynomials = (!options.output.empty() && !options.compact) || !options.input.empty();
   std::unique_ptr<Simulator> simulator;
   if (Status s = Simulator::create(file.scene, simOptions, simulator); !s) return fail(s.message());

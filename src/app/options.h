@@ -15,6 +15,7 @@ struct Options {
   std::string input;        ///< -i: grade a trajectory file
   std::string svgDir;       ///< -m: write an SVG per step into this folder
   bool compat = false;      ///< --compat: reproduce the reference's formulas bit for bit
+  bool noSleep = false;     ///< --no-sleep: resting particles are simulated like any other (default mode)
   bool verify = false;      ///< --verify: check every step for missed collisions and non-finite states
   bool quiet = false;       ///< -q: no progress output
   int threads = 1;          ///< --threads N: threads for the broad and narrow phase (same results for any N)

@@ -134,6 +134,7 @@ int runWindow(const Options& options, SceneFile& file, Simulator& simulator, Obs
     SimulatorOptions simOptions;
     simOptions.handler.compat = options.compat;
     simOptions.handler.threads = options.threads;
+    simOptions.handler.sleep = !options.noSleep;
     std::unique_ptr<Simulator> next;
     if (Status s = Simulator::create(file.scene, simOptions, next); !s) return s;
     fresh = std::move(next);

@@ -163,9 +163,15 @@ void EventHandler::wakeNearMoving(const Scene& scene, StepStats& stats) {
   for (int p = 0; p < scene.numParticles(); ++p) {
     if (sleepers_.asleep(p) || scene.isFixed(p) || !sleepers_.movedLastStep(p)) continue;
     keys_.clear();
-    candidates_.pairsOf(p, keys_);
+    candidates_.pairsOf(p, keys_);  // candidates, not neighbours: small scenes list every pair
+    const double reach = motion_.rate(p).norm();
     for (uint64_t key : keys_) {
       const PairParticles pair = pairParticles(scene, key);
+      bool sleeper = false;
+      for (int k = 0; k < pair.count; ++k) sleeper = sleeper || sleepers_.asleep(pair.p[k]);
+      // A neighbour: touching now, or within what p moves in this step.
+      if (!sleeper || pairDepth(scene, key, [&](int q) { return motion_.at(q, 0.0); }) < -reach - kTouchingSlack * scene.radius[p])
+        continue;
       for (int k = 0; k < pair.count; ++k)
         if (sleepers_.asleep(pair.p[k])) sleepers_.wake(pair.p[k]), ++stats.woken;
     }

@@ -1,0 +1,151 @@
+// Resting particles sleep in the default mode (src/core/collision/sleepers.h). The promises:
+// a sleeper does not move; a contact that hits it wakes it in the same step, and one whose
+// support is knocked away falls; nothing sleeps that moves, however slowly, or that a spring
+// holds; and a run in which nothing sleeps is the same, bit for bit, with sleeping on or off.
+#include "../../src/core/collision/sleepers.h"
+#include "contact_physics.h"
+
+#include "fosssim/core/forces.h"
+
+namespace fosssim::testing {
+namespace {
+
+constexpr double kG = 9.81;
+constexpr double kR = 0.1;  // every disk's radius
+
+/// Disks of radius kR on the floor y = 0 under gravity (symplectic Euler, dt 0.01), each at
+/// (x, kR) with horizontal velocity vx. COR 0 by default: with COR > 0 a disk on the floor
+/// bounces off it by about h g in every step, forever, and rightly never sleeps.
+TestScene floorScene(const std::string& type, const std::vector<std::pair<double, double>>& disks,
+                     double cor = 0.0) {
+  TestScene s = contactScene(type, cor);
+  s.scene.halfplanes.push_back(HalfPlane{Vec2(0, 0), Vec2(0, 1)});
+  s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, -kG)));
+  for (const auto& [x, vx] : disks) addBody(s, 1.0, Vec2(x, kR), Vec2(vx, 0), kR);
+  return s;
+}
+
+std::unique_ptr<Simulator> simulator(const TestScene& s, bool sleep) {
+  std::unique_ptr<Simulator> sim;
+  SimulatorOptions options;
+  options.handler.sleep = sleep;
+  const Status status = Simulator::create(s.scene, options, sim);
+  EXPECT_TRUE(status.isOk()) << status.message();
+  return sim;
+}
+
+TEST(Sleep, RestingDiskSleepsAfterItsStillStepsAndThenDoesNotMoveAtAll) {
+  for (const char* type : kEventTypes) {
+    SCOPED_TRACE(type);
+    TestScene s = floorScene(type, {{0.0, 0.0}});
+    auto sim = simulator(s, true);
+    // Gravity closes the contact in every step and the response stops it: still from the first
+    // step, so it falls asleep at the end of step kStepsToSleep, not before.
+    for (int k = 1; k < kStepsToSleep; ++k) {
+      ASSERT_TRUE(stepClean(*sim, s));
+      ASSERT_EQ(sim->stats().asleep, 0) << "step " << k;
+    }
+    ASSERT_TRUE(stepClean(*sim, s));
+    ASSERT_EQ(sim->stats().asleep, 1);
+    const VecX rest = s.state.x;
+    for (int k = 0; k < 100; ++k) {
+      ASSERT_TRUE(stepClean(*sim, s));
+      ASSERT_EQ(s.state.x, rest) << "a sleeper moved";
+      ASSERT_EQ(s.state.v, VecX::Zero(2)) << "a sleeper has a velocity";
+    }
+  }
+}
+
+TEST(Sleep, ADiskHittingASleeperWakesItInTheSameStepAndGivesItsSpeed) {
+  for (const char* type : kEventTypes) {
+    SCOPED_TRACE(type);
+    // Disk 1 slides along the frictionless floor at 1 m/s into disk 0, which has long been asleep
+    // when it arrives (2.805 s later, in mid-step). Equal masses, COR 0, central impact: both go on at 0.5 m/s
+    // (momentum kept, relative normal velocity zero).
+    TestScene s = floorScene(type, {{0.0, 0.0}, {-3.005, 1.0}});
+    auto sim = simulator(s, true);
+    bool hit = false;
+    for (int k = 0; k < 400 && !hit; ++k) {
+      const bool asleepBefore = sim->stats().asleep == 1;
+      ASSERT_TRUE(stepClean(*sim, s));
+      if (at(s.state.v, 0).x() > 0.25) {
+        hit = true;
+        EXPECT_TRUE(asleepBefore) << "disk 0 should have been asleep when it was hit";
+        EXPECT_GE(sim->stats().woken, 1);
+      }
+    }
+    ASSERT_TRUE(hit) << "disk 0 never moved";
+    EXPECT_NEAR(at(s.state.v, 0).x(), 0.5, 1e-9);
+    EXPECT_NEAR(at(s.state.v, 1).x(), 0.5, 1e-9);
+    // And it goes on: 50 steps later disk 0 is 0.25 m further (frictionless floor).
+    const double x0 = at(s.state.x, 0).x();
+    for (int k = 0; k < 50; ++k) ASSERT_TRUE(stepClean(*sim, s));
+    EXPECT_NEAR(at(s.state.x, 0).x() - x0, 0.25, 1e-9);
+  }
+}
+
+TEST(Sleep, ASleeperWhoseSupportIsKnockedAwayFalls) {
+  // Disk 2 sits on disk 0; both are asleep by the time disk 1 slides in at 2 m/s and knocks
+  // disk 0 away (COR 0: both go on at 1 m/s).
+  TestScene s = floorScene("hybrid", {{0.0, 0.0}, {-3.0, 2.0}});
+  addBody(s, 1.0, Vec2(0.0, 3 * kR), Vec2::Zero(), kR);
+  auto sim = simulator(s, true);
+  int asleepMost = 0;
+  for (int k = 0; k < 500; ++k) {
+    ASSERT_TRUE(stepClean(*sim, s));
+    asleepMost = std::max(asleepMost, sim->stats().asleep);
+  }
+  EXPECT_EQ(asleepMost, 2) << "the stack should have slept before the hit";
+  // 3.6 s after the hit nothing is under disk 2's old place: it must have fallen to the floor.
+  EXPECT_NEAR(at(s.state.x, 2).y(), kR, 1e-6) << "the top disk floats where its support was";
+}
+
+TEST(Sleep, ADiskSlidingSlowerThanTheSleepSpeedStillNeverSleeps) {
+  for (const char* type : kEventTypes) {
+    SCOPED_TRACE(type);
+    const double h = 0.01, speed = 0.5 * kSleepFraction * kR / h;  // half the per-step threshold
+    TestScene s = floorScene(type, {{0.0, speed}});
+    auto sim = simulator(s, true);
+    for (int k = 0; k < 3 * kStepsToSleep; ++k) {
+      ASSERT_TRUE(stepClean(*sim, s));
+      ASSERT_EQ(sim->stats().asleep, 0) << "step " << k + 1;
+    }
+    EXPECT_NEAR(at(s.state.x, 0).x(), speed * 3 * kStepsToSleep * h, 1e-12);
+  }
+}
+
+TEST(Sleep, ParticlesHeldBySpringsOrEdgesNeverSleep) {
+  TestScene spring = floorScene("hybrid", {{0.0, 0.0}, {0.5, 0.0}});
+  spring.scene.forces.push_back(std::make_unique<SpringForce>(0, 1, 10.0, 0.5, 0.0));
+  TestScene edge = floorScene("hybrid", {{0.0, 0.0}, {0.5, 0.0}});
+  edge.scene.edges.push_back(Edge{0, 1, 0.02});
+  for (TestScene* s : {&spring, &edge}) {
+    auto sim = simulator(*s, true);
+    for (int k = 0; k < 3 * kStepsToSleep; ++k) {
+      ASSERT_TRUE(stepClean(*sim, *s));
+      ASSERT_EQ(sim->stats().asleep, 0);
+    }
+  }
+}
+
+TEST(Sleep, ARunInWhichNothingSleepsIsTheSameBitForBitWithSleepingOff) {
+  for (const char* type : kEventTypes) {
+    SCOPED_TRACE(type);
+    // Elastic disks bouncing on the floor and off each other never stay still.
+    TestScene a = floorScene(type, {{0.0, 0.3}, {0.5, -0.2}, {1.0, 0.0}}, 1.0);
+    for (int i = 0; i < 3; ++i) at(a.state.x, i).y() += 0.3 * (i + 1);
+    TestScene b = floorScene(type, {{0.0, 0.3}, {0.5, -0.2}, {1.0, 0.0}}, 1.0);
+    b.state = a.state;
+    auto on = simulator(a, true), off = simulator(b, false);
+    for (int k = 0; k < 500; ++k) {
+      ASSERT_TRUE(stepClean(*on, a));
+      ASSERT_TRUE(stepClean(*off, b));
+      ASSERT_EQ(on->stats().asleep, 0);
+      ASSERT_EQ(a.state.x, b.state.x) << "step " << k + 1;
+      ASSERT_EQ(a.state.v, b.state.v) << "step " << k + 1;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace fosssim::testing
