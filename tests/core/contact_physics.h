@@ -32,10 +32,12 @@ inline TestScene contactScene(const std::string& type, double cor, double dt = 0
   return s;
 }
 
-inline std::unique_ptr<Simulator> defaultModeSimulator(const TestScene& s) {
+/// sleep: resting particles may sleep (HandlerOptions::sleep).
+inline std::unique_ptr<Simulator> defaultModeSimulator(const TestScene& s, bool sleep = true) {
   std::unique_ptr<Simulator> sim;
   SimulatorOptions options;
   options.handler.compat = false;
+  options.handler.sleep = sleep;
   const Status status = Simulator::create(s.scene, options, sim);
   EXPECT_TRUE(status.isOk()) << status.message();
   return sim;

@@ -25,20 +25,11 @@ TestScene floorScene(const std::string& type, const std::vector<std::pair<double
   return s;
 }
 
-std::unique_ptr<Simulator> simulator(const TestScene& s, bool sleep) {
-  std::unique_ptr<Simulator> sim;
-  SimulatorOptions options;
-  options.handler.sleep = sleep;
-  const Status status = Simulator::create(s.scene, options, sim);
-  EXPECT_TRUE(status.isOk()) << status.message();
-  return sim;
-}
-
 TEST(Sleep, RestingDiskSleepsAfterItsStillStepsAndThenDoesNotMoveAtAll) {
   for (const char* type : kEventTypes) {
     SCOPED_TRACE(type);
     TestScene s = floorScene(type, {{0.0, 0.0}});
-    auto sim = simulator(s, true);
+    auto sim = defaultModeSimulator(s, true);
     // Gravity closes the contact in every step and the response stops it: still from the first
     // step, so it falls asleep at the end of step kStepsToSleep, not before.
     for (int k = 1; k < kStepsToSleep; ++k) {
@@ -63,7 +54,7 @@ TEST(Sleep, ADiskHittingASleeperWakesItInTheSameStepAndGivesItsSpeed) {
     // when it arrives (2.805 s later, in mid-step). Equal masses, COR 0, central impact: both go on at 0.5 m/s
     // (momentum kept, relative normal velocity zero).
     TestScene s = floorScene(type, {{0.0, 0.0}, {-3.005, 1.0}});
-    auto sim = simulator(s, true);
+    auto sim = defaultModeSimulator(s, true);
     bool hit = false;
     for (int k = 0; k < 400 && !hit; ++k) {
       const bool asleepBefore = sim->stats().asleep == 1;
@@ -89,7 +80,7 @@ TEST(Sleep, ASleeperWhoseSupportIsKnockedAwayFalls) {
   // disk 0 away (COR 0: both go on at 1 m/s).
   TestScene s = floorScene("hybrid", {{0.0, 0.0}, {-3.0, 2.0}});
   addBody(s, 1.0, Vec2(0.0, 3 * kR), Vec2::Zero(), kR);
-  auto sim = simulator(s, true);
+  auto sim = defaultModeSimulator(s, true);
   int asleepMost = 0;
   for (int k = 0; k < 500; ++k) {
     ASSERT_TRUE(stepClean(*sim, s));
@@ -105,7 +96,7 @@ TEST(Sleep, ADiskSlidingSlowerThanTheSleepSpeedStillNeverSleeps) {
     SCOPED_TRACE(type);
     const double h = 0.01, speed = 0.5 * kSleepFraction * kR / h;  // half the per-step threshold
     TestScene s = floorScene(type, {{0.0, speed}});
-    auto sim = simulator(s, true);
+    auto sim = defaultModeSimulator(s, true);
     for (int k = 0; k < 3 * kStepsToSleep; ++k) {
       ASSERT_TRUE(stepClean(*sim, s));
       ASSERT_EQ(sim->stats().asleep, 0) << "step " << k + 1;
@@ -120,7 +111,7 @@ TEST(Sleep, ParticlesHeldBySpringsOrEdgesNeverSleep) {
   TestScene edge = floorScene("hybrid", {{0.0, 0.0}, {0.5, 0.0}});
   edge.scene.edges.push_back(Edge{0, 1, 0.02});
   for (TestScene* s : {&spring, &edge}) {
-    auto sim = simulator(*s, true);
+    auto sim = defaultModeSimulator(*s, true);
     for (int k = 0; k < 3 * kStepsToSleep; ++k) {
       ASSERT_TRUE(stepClean(*sim, *s));
       ASSERT_EQ(sim->stats().asleep, 0);
@@ -136,7 +127,7 @@ TEST(Sleep, ARunInWhichNothingSleepsIsTheSameBitForBitWithSleepingOff) {
     for (int i = 0; i < 3; ++i) at(a.state.x, i).y() += 0.3 * (i + 1);
     TestScene b = floorScene(type, {{0.0, 0.3}, {0.5, -0.2}, {1.0, 0.0}}, 1.0);
     b.state = a.state;
-    auto on = simulator(a, true), off = simulator(b, false);
+    auto on = defaultModeSimulator(a, true), off = defaultModeSimulator(b, false);
     for (int k = 0; k < 500; ++k) {
       ASSERT_TRUE(stepClean(*on, a));
       ASSERT_TRUE(stepClean(*off, b));
