@@ -7,12 +7,13 @@
 
 namespace fosssim::py {
 
-PySimulator::PySimulator(const PyScene& scene, bool compat, int threads, bool diagnostics)
+PySimulator::PySimulator(const PyScene& scene, bool compat, int threads, bool diagnostics, bool sleep)
     : scene_(scene.copy()), compat_(compat), diagnostics_(diagnostics) {
   if (threads < 1) throw SimulationError("threads must be >= 1, got " + std::to_string(threads));
   SimulatorOptions options;
   options.handler.compat = compat;
   options.handler.threads = threads;
+  options.handler.sleep = sleep;
   check<SimulationError>(Simulator::create(scene_->file.scene, options, simulator_));
   simulator_->setTiming(diagnostics);
   state_ = scene_->file.initial;

@@ -18,7 +18,7 @@ namespace fosssim::py {
 
 class PySimulator {
  public:
-  PySimulator(const PyScene& scene, bool compat, int threads, bool diagnostics);
+  PySimulator(const PyScene& scene, bool compat, int threads, bool diagnostics, bool sleep = true);
 
   /// One step; throws SimulationError with the step's message.
   void step();

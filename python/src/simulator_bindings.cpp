@@ -59,10 +59,11 @@ void bindSimulator(nb::module_& m) {
   nb::class_<PySimulator>(m, "Simulator",
                           "Steps a copy of a scene from its initial state. Positions and velocities are read-only "
                           "NumPy views that follow the steps; assign arrays to change them.")
-      .def(nb::init<const PyScene&, bool, int, bool>(), nb::arg("scene"), nb::arg("compat") = false,
-           nb::arg("threads") = 1, nb::arg("diagnostics") = true,
+      .def(nb::init<const PyScene&, bool, int, bool, bool>(), nb::arg("scene"), nb::arg("compat") = false,
+           nb::arg("threads") = 1, nb::arg("diagnostics") = true, nb::arg("sleep") = true,
            "compat: the course's formulas (as FOSSSim --compat); threads: for collision detection (same "
-           "results for any count); diagnostics: record a row of diagnostics per step (and time the phases).")
+           "results for any count); diagnostics: record a row of diagnostics per step (and time the phases); "
+           "sleep: resting particles sleep in the default mode (False: as FOSSSim --no-sleep).")
       .def("step", [](PySimulator& s, long count) {
              nb::gil_scoped_release release;
              for (long k = 0; k < count; ++k) s.step();

