@@ -169,9 +169,10 @@ void EventHandler::wakeNearMoving(const Scene& scene, StepStats& stats) {
       const PairParticles pair = pairParticles(scene, key);
       bool sleeper = false;
       for (int k = 0; k < pair.count; ++k) sleeper = sleeper || sleepers_.asleep(pair.p[k]);
+      if (!sleeper) continue;
       // A neighbour: touching now, or within what p moves in this step.
-      if (!sleeper || pairDepth(scene, key, [&](int q) { return motion_.at(q, 0.0); }) < -reach - kTouchingSlack * scene.radius[p])
-        continue;
+      const double depth = pairDepth(scene, key, [&](int q) { return motion_.at(q, 0.0); });
+      if (depth < -reach - kTouchingSlack * scene.radius[p]) continue;
       for (int k = 0; k < pair.count; ++k)
         if (sleepers_.asleep(pair.p[k])) sleepers_.wake(pair.p[k]), ++stats.woken;
     }
