@@ -1,7 +1,8 @@
 // Resting particles sleep in the default mode (src/core/collision/sleepers.h). The promises:
 // a sleeper does not move; a contact that hits it wakes it in the same step, one whose support is
-// knocked away falls, and one given a velocity between steps moves; nothing sleeps that moves, however slowly, or that a spring
-// holds; and a run in which nothing sleeps is the same, bit for bit, with sleeping on or off.
+// knocked away falls, and one given a velocity between steps moves; nothing sleeps that moves,
+// however slowly, or that a spring holds; and a run in which nothing sleeps is the same, bit for
+// bit, with sleeping on or off.
 #include "../../src/core/collision/sleepers.h"
 #include "contact_physics.h"
 
