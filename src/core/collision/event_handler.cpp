@@ -109,7 +109,7 @@ Status EventHandler::detectChanged(const Scene& scene, double T, StepContext& ct
 
 // The pair over [T, 1]: every particle is on its last piece there (events come in time order).
 Status EventHandler::query(const Scene& scene, uint64_t key, double T, StepStats& stats) {
-  if (sleepers_.any() && resting(scene, key)) return Status::ok();
+  if (sleepers_.any() && sleepingPair(scene, key)) return Status::ok();
   ++stats.candidatePairs;
   ++stats.queries[static_cast<int>(keyKind(key))];
   const double left = 1.0 - T;
@@ -135,7 +135,7 @@ Status EventHandler::query(const Scene& scene, uint64_t key, double T, StepStats
   return Status::ok();
 }
 
-bool EventHandler::resting(const Scene& scene, uint64_t key) const {
+bool EventHandler::sleepingPair(const Scene& scene, uint64_t key) const {
   const PairParticles pair = pairParticles(scene, key);
   bool asleep = false;
   for (int k = 0; k < pair.count; ++k) {

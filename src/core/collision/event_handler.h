@@ -62,8 +62,8 @@ class EventHandler final : public CollisionHandler {
   Status detectChanged(const Scene& scene, double T, StepContext& ctx);
   Status query(const Scene& scene, uint64_t key, double T, StepStats& stats);
   bool stale(const Scene& scene, const Event& e) const;
-  /// Whether the pair cannot meet: a sleeper with nothing that moves (fixed, asleep).
-  bool resting(const Scene& scene, uint64_t key) const;
+  /// Whether the pair cannot meet: a sleeper and nothing that moves (the others fixed or asleep).
+  bool sleepingPair(const Scene& scene, uint64_t key) const;
   /// Wakes the sleepers of the event's pair if it closes harder than resting contact (sleepers.h).
   void wakeIfHit(const Scene& scene, uint64_t key, double closing, StepStats& stats);
   /// Wakes every sleeper among the candidates of a particle that moved in the last step.
