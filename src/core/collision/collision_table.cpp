@@ -14,12 +14,12 @@ std::unique_ptr<CollisionHandler> makeSimple(const CollisionSettings& s, const H
 // Outside --compat, "continuous-time" and "hybrid" resolve contacts in time order (event_handler.h);
 // they differ in how many impulses a particle may take in a step before the failsafe.
 std::unique_ptr<CollisionHandler> makeContinuousTime(const CollisionSettings& s, const HandlerOptions& o) {
-  if (!o.compat) return std::make_unique<EventHandler>(s, kContinuousEventsPerParticle, o.allPairs, o.sleep);
+  if (!o.compat) return std::make_unique<EventHandler>(s, kContinuousEventsPerParticle, o);
   return std::make_unique<ContinuousTimeHandler>(s, o);
 }
 
 std::unique_ptr<CollisionHandler> makeHybrid(const CollisionSettings& s, const HandlerOptions& o) {
-  if (!o.compat) return std::make_unique<EventHandler>(s, s.maxIterations, o.allPairs, o.sleep);
+  if (!o.compat) return std::make_unique<EventHandler>(s, s.maxIterations, o);
   return std::make_unique<HybridHandler>(s, o);
 }
 

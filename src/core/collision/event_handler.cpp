@@ -3,8 +3,10 @@
 #include "collision_search.h"
 #include "impulse_response.h"
 #include "pair_query.h"
+#include "parallel_rows.h"
 
 #include <algorithm>
+#include <chrono>
 #include <sstream>
 
 namespace fosssim {
@@ -22,11 +24,14 @@ std::string pairName(uint64_t key) {
 
 }  // namespace
 
-EventHandler::EventHandler(const CollisionSettings& settings, int eventsPerParticle, bool allPairs, bool sleep)
-    : cor_(settings.cor), eventsPerParticle_(std::max(eventsPerParticle, 0)), allPairs_(allPairs) {
+EventHandler::EventHandler(const CollisionSettings& settings, int eventsPerParticle, const HandlerOptions& options)
+    : cor_(settings.cor),
+      eventsPerParticle_(std::max(eventsPerParticle, 0)),
+      allPairs_(options.allPairs),
+      threads_(std::max(options.threads, 1)) {
   zones_.setRigidOnly(settings.failsafe == Failsafe::Rigid);
   zones_.setSleepers(&sleepers_);
-  sleepers_.setEnabled(sleep);
+  sleepers_.setEnabled(options.sleep);
 }
 
 Status EventHandler::handle(const Scene& scene, const State& start, State& state, StepContext& ctx) {
@@ -72,22 +77,56 @@ Status EventHandler::handle(const Scene& scene, const State& start, State& state
 }
 
 // Rows are collected in blocks of candidates and then queried: two clock reads per block, not per
-// particle (with timing on, per-row timers cost more than the sparse scenes' narrow phase).
+// particle (with timing on, per-row timers cost more than the sparse scenes' narrow phase). With
+// threads, each range's broad and narrow times share out the wall time, as in CollisionSearch.
 Status EventHandler::detectAll(const Scene& scene, StepContext& ctx) {
   const int n = scene.numParticles();
-  StepStats& stats = *ctx.stats;
-  for (int i = 0; i < n;) {
-    keys_.clear();
-    {
-      const StepTimer timer(ctx.timing, stats.broadPhase);
-      for (; i < n && keys_.size() < CollisionSearch::kKeysPerBlock; ++i)
-        candidates_.forEachInRow(i, row_, [&](PairKind kind, int other) { keys_.push_back(pairKey(i, kind, other)); });
+  const int ranges = rowRangesFor(n, threads_);
+  if (workers_.size() < static_cast<size_t>(ranges)) workers_.resize(ranges);
+  const auto start = std::chrono::steady_clock::now();
+  forRowRanges(n, threads_, [&](int range, int first, int end) {
+    Worker& w = workers_[range];
+    w.events.clear();
+    w.stats.clear();
+    w.status = Status::ok();
+    for (int i = first; i < end && w.status;) {
+      w.keys.clear();
+      {
+        const StepTimer timer(ctx.timing, w.stats.broadPhase);
+        for (; i < end && w.keys.size() < CollisionSearch::kKeysPerBlock; ++i)
+          candidates_.forEachInRow(i, w.row, [&](PairKind kind, int other) { w.keys.push_back(pairKey(i, kind, other)); });
+      }
+      const StepTimer timer(ctx.timing, w.stats.narrowPhase);
+      for (uint64_t key : w.keys)
+        if (w.status = query(scene, key, 0.0, w.stats, w.events); !w.status) break;
     }
-    const StepTimer timer(ctx.timing, stats.narrowPhase);
-    for (uint64_t key : keys_)
-      if (Status s = query(scene, key, 0.0, stats); !s) return s;
+  });
+  double broad = 0, narrow = 0;
+  for (int k = 0; k < ranges; ++k) {
+    Worker& w = workers_[k];
+    if (!w.status) return w.status;  // the first range's failure: the first in pair order
+    pushEvents(w.events);
+    ctx.stats->candidatePairs += w.stats.candidatePairs;
+    for (int kind = 0; kind < 3; ++kind) ctx.stats->queries[kind] += w.stats.queries[kind];
+    broad += w.stats.broadPhase;
+    narrow += w.stats.narrowPhase;
+  }
+  if (ctx.timing && broad + narrow > 0) {
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ctx.stats->broadPhase += wall * broad / (broad + narrow);
+    ctx.stats->narrowPhase += wall * narrow / (broad + narrow);
   }
   return Status::ok();
+}
+
+// The heap's pop order depends only on its contents (events are ordered by time, then pair),
+// not on the order they were pushed in.
+void EventHandler::pushEvents(std::vector<Event>& events) {
+  for (const Event& e : events) {
+    heap_.push_back(e);
+    std::push_heap(heap_.begin(), heap_.end(), later);
+  }
+  events.clear();
 }
 
 Status EventHandler::detectChanged(const Scene& scene, double T, StepContext& ctx) {
@@ -102,13 +141,16 @@ Status EventHandler::detectChanged(const Scene& scene, double T, StepContext& ct
     keys_.erase(std::unique(keys_.begin(), keys_.end()), keys_.end());
   }
   const StepTimer timer(ctx.timing, ctx.stats->narrowPhase);
+  found_.clear();
   for (uint64_t key : keys_)
-    if (Status s = query(scene, key, T, *ctx.stats); !s) return s;
+    if (Status s = query(scene, key, T, *ctx.stats, found_); !s) return s;
+  pushEvents(found_);
   return Status::ok();
 }
 
 // The pair over [T, 1]: every particle is on its last piece there (events come in time order).
-Status EventHandler::query(const Scene& scene, uint64_t key, double T, StepStats& stats) {
+Status EventHandler::query(const Scene& scene, uint64_t key, double T, StepStats& stats,
+                           std::vector<Event>& out) const {
   if (sleepers_.any() && sleepingPair(scene, key)) return Status::ok();
   ++stats.candidatePairs;
   ++stats.queries[static_cast<int>(keyKind(key))];
@@ -130,8 +172,7 @@ Status EventHandler::query(const Scene& scene, uint64_t key, double T, StepStats
   e.alpha = contact.alpha;
   const PairParticles pair = pairParticles(scene, key);
   for (int k = 0; k < pair.count; ++k) e.version[k] = motion_.version(pair.p[k]);
-  heap_.push_back(e);
-  std::push_heap(heap_.begin(), heap_.end(), later);
+  out.push_back(e);
   return Status::ok();
 }
 

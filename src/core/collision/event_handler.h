@@ -38,9 +38,9 @@ constexpr int kContinuousEventsPerParticle = 32;
 class EventHandler final : public CollisionHandler {
  public:
   /// eventsPerParticle: impulse events a particle may take in a step before the failsafe (0:
-  /// every contact goes to the zones at once). allPairs: no broad phase; sleep: resting
-  /// particles sleep (HandlerOptions).
-  EventHandler(const CollisionSettings& settings, int eventsPerParticle, bool allPairs, bool sleep);
+  /// every contact goes to the zones at once). options: allPairs (no broad phase), threads (the
+  /// first detection's rows), sleep (resting particles sleep).
+  EventHandler(const CollisionSettings& settings, int eventsPerParticle, const HandlerOptions& options);
   Status handle(const Scene& scene, const State& start, State& state, StepContext& ctx) override;
   int zoneOf(int particle) const override;
   std::vector<Violation> unresolved(const Scene& scene, const VecX& start, const VecX& end,
@@ -57,10 +57,14 @@ class EventHandler final : public CollisionHandler {
   /// Earliest first; equal times in pair order, so the result never depends on discovery order.
   static bool later(const Event& a, const Event& b) { return a.t > b.t || (a.t == b.t && a.key > b.key); }
 
+  /// Queries every candidate pair over the step: rows in contiguous ranges, one per thread
+  /// (parallel_rows.h), whose events join the heap, so the result is the same for any count.
   Status detectAll(const Scene& scene, StepContext& ctx);
   /// Queries every pair of the particles in changed_ over [T, 1].
   Status detectChanged(const Scene& scene, double T, StepContext& ctx);
-  Status query(const Scene& scene, uint64_t key, double T, StepStats& stats);
+  /// Queries one pair over [T, 1]; a contact is appended to `out` as an event. Reads only.
+  Status query(const Scene& scene, uint64_t key, double T, StepStats& stats, std::vector<Event>& out) const;
+  void pushEvents(std::vector<Event>& events);
   bool stale(const Scene& scene, const Event& e) const;
   /// Whether the pair cannot meet: a sleeper and nothing that moves (the others fixed or asleep).
   bool sleepingPair(const Scene& scene, uint64_t key) const;
@@ -75,12 +79,23 @@ class EventHandler final : public CollisionHandler {
   double cor_;
   int eventsPerParticle_;
   bool allPairs_;
+  int threads_;
   StepMotion motion_;
   PairCandidates candidates_;
   ContactZones zones_;
   Sleepers sleepers_;
   ContinuousDetector logger_{math::DetectionRules{}};  ///< builds the trajectory log's polynomials
   std::vector<Event> heap_;
+  /// One per row range of detectAll: its events, scratch and counts.
+  struct Worker {
+    std::vector<Event> events;
+    std::vector<uint64_t> keys;
+    std::vector<int> row;
+    StepStats stats;
+    Status status = Status::ok();
+  };
+  std::vector<Worker> workers_;
+  std::vector<Event> found_;      ///< scratch: detectChanged's events before they join the heap
   std::vector<int> events_;       ///< N: impulse events taken by each particle in this step
   std::vector<int> changed_;      ///< particles whose path the last response bent
   std::vector<uint64_t> keys_;    ///< scratch: pairs to query
