@@ -50,7 +50,7 @@ std::vector<std::string> diagnosticColumns(const Scene& scene) {
     names.push_back("potential_" + std::to_string(k) + "_" + keyword);
   }
   for (const char* name : {"momentum_x", "momentum_y", "angular_momentum", "contacts", "failsafe_zones",
-                           "zone_particles", "rigid_zones", "candidate_pairs", "newton_iterations", "cost_integrate",
+                           "zone_particles", "rigid_zones", "candidate_pairs", "newton_iterations", "asleep", "cost_integrate",
                            "cost_broad_phase", "cost_narrow_phase", "cost_response", "cost_failsafe", "cost_total"})
     names.emplace_back(name);
   return names;
@@ -64,7 +64,7 @@ void diagnosticRow(const StepDiagnostics& d, std::vector<double>& row) {
   row.insert(row.end(), {d.momentumX, d.momentumY, d.angularMomentum, static_cast<double>(d.contacts),
                          static_cast<double>(d.failsafeZones), static_cast<double>(d.zoneParticles),
                          static_cast<double>(d.rigidZones), static_cast<double>(c.candidatePairs),
-                         static_cast<double>(c.newtonIterations), c.integrate,
+                         static_cast<double>(c.newtonIterations), static_cast<double>(c.asleep), c.integrate,
                          c.broadPhase, c.narrowPhase, c.response, c.failsafe, c.total});
 }
 

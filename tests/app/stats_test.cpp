@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <sstream>
 
@@ -92,6 +93,32 @@ TEST(Stats, NewtonIterationsOfTheImplicitIntegrators) {
     for (size_t r = 1; r < csv.rows.size(); ++r)
       EXPECT_EQ(csv.at(r, "newton_iterations"), expected) << example << " row " << r;
   }
+}
+
+// A disk resting on the floor (COR 0: nothing bounces) is still from the first step, so it falls
+// asleep at the end of step kStepsToSleep = 60 (src/core/collision/sleepers.h) and stays asleep;
+// with --no-sleep, or --compat, nothing ever sleeps.
+TEST(Stats, AsleepCountsTheRestingDiskFromItsSixtiethStep) {
+  const std::string scene = scratch("rest.xml"), path = scratch("rest.csv");
+  {
+    std::ofstream out(scene);
+    out << "<scene><duration time=\"1.0\"/><integrator type=\"symplectic-euler\" dt=\"0.01\"/>"
+           "<collision type=\"hybrid\" COR=\"0\"/><simplegravity fx=\"0\" fy=\"-9.81\"/>"
+           "<particle m=\"1\" px=\"0\" py=\"0.1\" vx=\"0\" vy=\"0\" fixed=\"0\" radius=\"0.1\"/>"
+           "<halfplane px=\"0\" py=\"0\" nx=\"0\" ny=\"1\"/></scene>";
+  }
+  for (const char* mode : {"", "--no-sleep", "--compat"}) {
+    std::vector<std::string> args = {"-s", scene, "-d", "0", "-q", "--stats", path};
+    if (*mode) args.emplace_back(mode);
+    const Outcome o = runFosssim(args);
+    ASSERT_TRUE(o.exited && o.code == 0) << o;
+    const Csv csv = readCsv(slurp(path));
+    std::remove(path.c_str());
+    ASSERT_EQ(csv.rows.size(), 101u) << mode;
+    for (size_t r = 0; r < csv.rows.size(); ++r)
+      EXPECT_EQ(csv.at(r, "asleep"), (*mode == 0 && r >= 60) ? 1.0 : 0.0) << mode << " row " << r;
+  }
+  std::remove(scene.c_str());
 }
 
 TEST(Stats, PotentialEnergyPerForceHasAColumnEach) {

@@ -42,8 +42,8 @@ void measureStep(const Scene& scene, const State& state, const CollisionLog& log
 
 /// Column names, in row order: step, time, kinetic, potential, energy, one potential_<k>_<force>
 /// per force, momentum_x, momentum_y, angular_momentum, contacts, failsafe_zones,
-/// zone_particles, rigid_zones, candidate_pairs, newton_iterations, then the phase costs in seconds cost_integrate,
-/// cost_broad_phase, cost_narrow_phase, cost_response, cost_failsafe, cost_total.
+/// zone_particles, rigid_zones, candidate_pairs, newton_iterations, asleep, then the phase costs in seconds
+/// cost_integrate, cost_broad_phase, cost_narrow_phase, cost_response, cost_failsafe, cost_total.
 std::vector<std::string> diagnosticColumns(const Scene& scene);
 
 /// The row of `d` under diagnosticColumns(scene) (cleared and refilled).
