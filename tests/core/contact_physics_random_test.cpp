@@ -208,8 +208,17 @@ PileResult pourPile(const char* type, Failsafe failsafe, int steps) {
       landed[im.i] = 1;
       if (im.kind == PairKind::ParticleParticle) landed[im.j] = 1;
     }
+    // Landed: took an impulse, or touches a wall or another disk (a disk that settles on the pile
+    // inside a failsafe zone may never take an impulse of its own).
+    auto touching = [&](int i) {
+      for (const Vec2& w : normals)
+        if (w.normalized().dot(at(s.state.x, i)) - r <= 1e-3 * r) return true;
+      for (int j = 0; j < n; ++j)
+        if (j != i && (at(s.state.x, j) - at(s.state.x, i)).norm() - 2 * r <= 1e-3 * r) return true;
+      return false;
+    };
     for (int i = 0; i < n; ++i) {
-      landed[i] = landed[i] || sim->zoneOf(i) >= 0;
+      landed[i] = landed[i] || sim->zoneOf(i) >= 0 || touching(i);
       for (const Vec2& w : normals) EXPECT_GE(w.normalized().dot(at(s.state.x, i)), r - 1e-9) << "disk " << i << " step " << k + 1;
     }
     int count = 0, moving = 0;

@@ -136,9 +136,12 @@ int ContactZones::absorb(const Scene& scene, const StepMotion& motion, const Pai
   const PairParticles pair = pairParticles(scene, key);
   for (int k = 0; k < pair.count; ++k) zone = take(scene, motion, pair.p[k], zone, h);
   if (zone < 0) return -1;  // every particle of the pair is fixed
-  // A contact that already has rows and approaches again is met again: a jam if it repeats. Its
-  // fresh rows (normals of now) join the old ones.
-  if (rowOf_.count(key) && ++metAgain_[root(zone)] > kMaxZoneProjections && immovable_[root(zone)] && !rigidOnly_) {
+  // A contact whose row a solve has seen and that approaches again is met again: a jam if it
+  // repeats. (One whose row is still waiting for its first solve, as contacts of one instant
+  // wait for each other, is not.) Its fresh row (normal of now) replaces the old one.
+  const auto known = rowOf_.find(key);
+  const bool solved = known != rowOf_.end() && known->second < solvedRows_;
+  if (solved && ++metAgain_[root(zone)] > kMaxZoneProjections && immovable_[root(zone)] && !rigidOnly_) {
     // A jam against an obstacle: the contact keeps closing although it was solved for again and
     // again. Its particles stop for the rest of the step (obstacles from now on), not the zone.
     for (int k = 0; k < pair.count; ++k)
@@ -245,6 +248,10 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
   if (n == Vec2::Zero()) return false;  // coincident centres: no direction to keep apart along
   const auto known = rowOf_.find(key);
   if (known != rowOf_.end()) {
+    // A row no solve has seen yet was set at this instant (contacts of one instant wait for one
+    // solve together): it stands. Replacing it would make its warm start, already applied, a
+    // push that the solve could no longer take back, and that can add energy.
+    if (known->second >= solvedRows_) return false;
     projector_.setRow(known->second, row);
     return false;
   }

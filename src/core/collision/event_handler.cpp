@@ -57,15 +57,22 @@ Status EventHandler::handle(const Scene& scene, const State& start, State& state
   // that reasoning.
   const long budget = static_cast<long>(eventsPerParticle_ + kMaxZoneProjections + 2) * (n + 1) * 4 + 1000;
   long processed = 0;
+  changed_.clear();
   while (!heap_.empty()) {
     std::pop_heap(heap_.begin(), heap_.end(), later);
     const Event e = heap_.back();
     heap_.pop_back();
-    if (stale(scene, e)) continue;
-    if (++processed > budget) return Status::error("contact events do not settle (internal error: budget exceeded)");
-    changed_.clear();
-    respond(scene, e, state, ctx);  // times itself: response, or failsafe for the zones
+    if (!stale(scene, e)) {
+      if (++processed > budget) return Status::error("contact events do not settle (internal error: budget exceeded)");
+      respond(scene, e, state, ctx);  // times itself: response, or failsafe for the zones
+    }
+    // Contacts that reach the zones at one instant join them before they are solved: a resting
+    // pile's contacts all come at t = 0, and solving the zone once per contact cost hundreds of
+    // solves a step. The next later event (or none) closes the instant.
+    if (!pendingZones_.empty() && !heap_.empty() && heap_.front().t == e.t) continue;
+    solvePendingZones(scene, e.t, state, ctx);
     if (Status s = detectChanged(scene, e.t, ctx); !s) return s;
+    changed_.clear();
   }
   // Finish: the end of every particle's last piece.
   state.x = motion_.end();
@@ -176,6 +183,18 @@ Status EventHandler::query(const Scene& scene, uint64_t key, double T, StepStats
   return Status::ok();
 }
 
+void EventHandler::solvePendingZones(const Scene& scene, double T, State& state, StepContext& ctx) {
+  if (pendingZones_.empty()) return;
+  const StepTimer timer(ctx.timing, ctx.stats->failsafe);
+  for (int& z : pendingZones_) z = zones_.zoneOf(z);  // zones absorbed later may have merged them
+  std::sort(pendingZones_.begin(), pendingZones_.end());
+  pendingZones_.erase(std::unique(pendingZones_.begin(), pendingZones_.end()), pendingZones_.end());
+  for (int z : pendingZones_)
+    if (zones_.zoneOf(z) == z)  // one solve per zone, even if an earlier solve's growth merged it
+      zones_.resolve(scene, motion_, candidates_, z, T, ctx.dt, state.v, changed_, *ctx.stats);
+  pendingZones_.clear();
+}
+
 bool EventHandler::sleepingPair(const Scene& scene, uint64_t key) const {
   const PairParticles pair = pairParticles(scene, key);
   bool asleep = false;
@@ -272,7 +291,7 @@ void EventHandler::respond(const Scene& scene, const Event& e, State& state, Ste
   if (toZones) {
     const StepTimer timer(ctx.timing, ctx.stats->failsafe);
     const int z = zones_.absorb(scene, motion_, candidates_, e.key, e.t, h);
-    if (z >= 0) zones_.resolve(scene, motion_, candidates_, z, e.t, h, state.v, changed_, *ctx.stats);
+    if (z >= 0) pendingZones_.push_back(z);
     return;
   }
 

@@ -65,6 +65,8 @@ class EventHandler final : public CollisionHandler {
   /// Queries one pair over [T, 1]; a contact is appended to `out` as an event. Reads only.
   Status query(const Scene& scene, uint64_t key, double T, StepStats& stats, std::vector<Event>& out) const;
   void pushEvents(std::vector<Event>& events);
+  /// Solves, at time T, the zones that contacts of the instant T joined (each once).
+  void solvePendingZones(const Scene& scene, double T, State& state, StepContext& ctx);
   bool stale(const Scene& scene, const Event& e) const;
   /// Whether the pair cannot meet: a sleeper and nothing that moves (the others fixed or asleep).
   bool sleepingPair(const Scene& scene, uint64_t key) const;
@@ -95,6 +97,7 @@ class EventHandler final : public CollisionHandler {
     Status status = Status::ok();
   };
   std::vector<Worker> workers_;
+  std::vector<int> pendingZones_;  ///< zones contacts joined at the current instant, not solved yet
   std::vector<Event> found_;      ///< scratch: detectChanged's events before they join the heap
   std::vector<int> events_;       ///< N: impulse events taken by each particle in this step
   std::vector<int> changed_;      ///< particles whose path the last response bent
