@@ -44,7 +44,7 @@ Status EventHandler::handle(const Scene& scene, const State& start, State& state
   heap_.clear();
   {
     const StepTimer timer(ctx.timing, ctx.stats->broadPhase);
-    candidates_.build(scene, motion_.from(), motion_.end(), 0.0, /*updates=*/true);
+    candidates_.build(scene, motion_.from(), motion_.end(), 0.0, /*updates=*/true, threads_);
     if (allPairs_) candidates_.forceAllPairs();
     if (sleepers_.any()) wakeNearMoving(scene, *ctx.stats);
   }
@@ -219,20 +219,38 @@ void EventHandler::wakeIfHit(const Scene& scene, uint64_t key, double closing, S
     if (sleepers_.asleep(pair.p[k])) sleepers_.wake(pair.p[k]), ++stats.woken;
 }
 
+// A sleeper wakes when a particle p that moved in the last step is among its candidates and
+// touches it now or could reach it within what p moves in this step. The pairs of a sleeper and
+// a mover are found from whichever side is fewer (candidates are symmetric: pairsOf lists a pair
+// from each of its particles): in a gas where a few slow particles sleep, from the sleepers; in a
+// resting pile where a few disks move, from the movers. Either way the same sleepers wake.
 void EventHandler::wakeNearMoving(const Scene& scene, StepStats& stats) {
-  for (int p = 0; p < scene.numParticles(); ++p) {
-    if (sleepers_.asleep(p) || scene.isFixed(p) || !sleepers_.movedLastStep(p)) continue;
+  const int n = scene.numParticles();
+  auto moving = [&](int p) { return !sleepers_.asleep(p) && !scene.isFixed(p) && sleepers_.movedLastStep(p); };
+  int movers = 0;
+  for (int p = 0; p < n; ++p) movers += moving(p);
+  const bool fromSleepers = sleepers_.sleeping() < movers;
+  movers_.clear();
+  for (int p = 0; p < n; ++p)
+    if (fromSleepers ? sleepers_.asleep(p) : moving(p)) movers_.push_back(p);
+  for (int p : movers_) {
     keys_.clear();
     candidates_.pairsOf(p, keys_);  // candidates, not neighbours: small scenes list every pair
-    const double reach = motion_.rate(p).norm();
     for (uint64_t key : keys_) {
       const PairParticles pair = pairParticles(scene, key);
+      // The largest reach of the pair's movers (-1: none) and whether it holds a sleeper.
+      double reach = -1;
       bool sleeper = false;
-      for (int k = 0; k < pair.count; ++k) sleeper = sleeper || sleepers_.asleep(pair.p[k]);
-      if (!sleeper) continue;
-      // A neighbour: touching now, or within what p moves in this step.
+      for (int k = 0; k < pair.count; ++k) {
+        const int q = pair.p[k];
+        sleeper = sleeper || sleepers_.asleep(q);
+        if (!moving(q)) continue;
+        reach = std::max(reach, motion_.rate(q).norm() + kTouchingSlack * scene.radius[q]);
+      }
+      if (!sleeper || reach < 0) continue;
+      // A neighbour: touching now, or within what a mover moves in this step.
       const double depth = pairDepth(scene, key, [&](int q) { return motion_.at(q, 0.0); });
-      if (depth < -reach - kTouchingSlack * scene.radius[p]) continue;
+      if (depth < -reach) continue;
       for (int k = 0; k < pair.count; ++k)
         if (sleepers_.asleep(pair.p[k])) sleepers_.wake(pair.p[k]), ++stats.woken;
     }
