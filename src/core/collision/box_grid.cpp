@@ -1,5 +1,7 @@
 #include "box_grid.h"
 
+#include "parallel_rows.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -32,29 +34,35 @@ void BoxGrid::clear() {
 }
 
 double BoxGrid::chooseCell(const Box* boxes, int count, const int* ids) {
-  // The largest extent among the boxes no larger than kLargeFactor medians.
+  // The largest extent among the boxes no larger than kLargeFactor medians. The median is that
+  // of an evenly spaced sample (the grid affects speed only, never results).
+  auto extentOf = [&](int k) { return extent(boxes[ids ? ids[k] : k]); };
   scratch_.clear();
-  for (int k = 0; k < count; ++k) {
-    const double e = extent(boxes[ids ? ids[k] : k]);
-    if (std::isfinite(e)) scratch_.push_back(e);
-  }
+  const int stride = std::max(1, count / static_cast<int>(kMedianSample));
+  for (int k = 0; k < count; k += stride)
+    if (std::isfinite(extentOf(k))) scratch_.push_back(extentOf(k));
+  if (scratch_.empty())  // the sample is all infinite: the median of every finite box
+    for (int k = 0; k < count; ++k)
+      if (std::isfinite(extentOf(k))) scratch_.push_back(extentOf(k));
   if (scratch_.empty()) return 1.0;  // every box is infinite: all go to the large list
-  // The median of an evenly spaced sample (the grid affects speed only, never results).
-  const size_t stride = std::max<size_t>(1, scratch_.size() / kMedianSample);
-  size_t sampled = 0;
-  for (size_t k = 0; k < scratch_.size(); k += stride) std::swap(scratch_[sampled++], scratch_[k]);
-  auto middle = scratch_.begin() + static_cast<long>(sampled / 2);
-  std::nth_element(scratch_.begin(), middle, scratch_.begin() + static_cast<long>(sampled));
+  auto middle = scratch_.begin() + static_cast<long>(scratch_.size() / 2);
+  std::nth_element(scratch_.begin(), middle, scratch_.end());
   const double limit = kLargeFactor * *middle;
   double largest = 0;
-  for (double e : scratch_)
+  for (int k = 0; k < count; ++k) {
+    const double e = extentOf(k);
     if (e <= limit && e > largest) largest = e;
+  }
   return largest > 0 ? largest / kExtentSlack : 1.0;
 }
 
-void BoxGrid::build(const Box* boxes, int count, const int* ids, double imposedCell) {
-  clear();
+void BoxGrid::build(const Box* boxes, int count, const int* ids, double imposedCell, int threads) {
+  // As clear(), but boxes_ and ids_ keep their storage: they are refilled below.
   count_ = count;
+  start_.assign(2, 0);
+  columns_ = rows_ = 1;
+  largeBoxes_.clear();
+  largeIds_.clear();
   auto idOf = [&](int k) { return ids ? ids[k] : k; };
   double cell = imposedCell > 0 ? imposedCell : chooseCell(boxes, count, ids);
   // Which boxes are ordinary, and the bounding box of their lower corners.
@@ -76,7 +84,11 @@ void BoxGrid::build(const Box* boxes, int count, const int* ids, double imposedC
     maxY = ordinary ? std::max(maxY, b.y0) : b.y0;
     ++ordinary;
   }
-  if (ordinary == 0) return;
+  if (ordinary == 0) {
+    boxes_.clear();
+    ids_.clear();
+    return;
+  }
   const double maxCells = kCellsPerBox * ordinary + 64;
   auto cellsFor = [&](double c) { return (std::floor((maxX - minX) / c) + 1) * (std::floor((maxY - minY) / c) + 1); };
   if (cellsFor(cell) > maxCells) {
@@ -107,32 +119,53 @@ void BoxGrid::build(const Box* boxes, int count, const int* ids, double imposedC
   columns_ = static_cast<int>(std::min(std::floor((maxX - minX) * inverseCell_) + 1, maxCells));
   rows_ = static_cast<int>(std::min(std::floor((maxY - minY) * inverseCell_) + 1, maxCells / columns_ + 1));
 
-  // Counting sort by home cell; entries of a cell keep ascending box order.
+  // Counting sort by home cell; entries of a cell keep ascending box order. With threads, each
+  // takes a band of cells (contiguous in the arrays) and files every box whose home lies in it,
+  // in ascending box order: the arrays come out the same for any thread count.
   const size_t cells = static_cast<size_t>(columns_) * rows_;
   start_.assign(cells + 1, 0);
-  for (int k = 0; k < count; ++k) {
-    if (home_[k] < 0) continue;
-    const Box& b = boxes[idOf(k)];
-    home_[k] = row(b.y0) * columns_ + column(b.x0);
-    ++start_[home_[k] + 1];
-  }
-  for (size_t c = 0; c < cells; ++c) start_[c + 1] += start_[c];
+  cursor_.resize(cells);
+  forRowRanges(count, threads, [&](int, int first, int end) {
+    for (int k = first; k < end; ++k)
+      if (home_[k] >= 0) home_[k] = row(boxes[idOf(k)].y0) * columns_ + column(boxes[idOf(k)].x0);
+  });
+  const int bands = rowRangesFor(count, threads);
+  auto band = [&](int t) { return cells * static_cast<size_t>(t) / static_cast<size_t>(bands); };
+  auto inBand = [&](int k, size_t lo, size_t hi) {
+    return home_[k] >= 0 && static_cast<size_t>(home_[k]) >= lo && static_cast<size_t>(home_[k]) < hi;
+  };
+  // Each band's counts (start_[c + 1] for its cells c), summed within the band: start_[lo] is
+  // the previous band's to write, so the band's own sums start from 0 there.
+  bandStart_.assign(static_cast<size_t>(bands) + 1, 0);
+  forRowRanges(count, threads, [&](int t, int, int) {
+    const size_t lo = band(t), hi = band(t + 1);
+    for (int k = 0; k < count; ++k)
+      if (inBand(k, lo, hi)) ++start_[home_[k] + 1];
+    for (size_t c = lo + 1; c < hi; ++c) start_[c + 1] += start_[c];
+    bandStart_[t + 1] = hi > lo ? start_[hi] : 0;
+  });
+  for (int t = 0; t < bands; ++t) bandStart_[t + 1] += bandStart_[t];
   boxes_.resize(ordinary);
   ids_.resize(ordinary);
-  for (int k = 0; k < count; ++k) {  // start_[c] runs ahead as the cursor of cell c ...
-    if (home_[k] < 0) continue;
-    const int e = start_[home_[k]]++;
-    boxes_[e] = boxes[idOf(k)];
-    ids_[e] = idOf(k);
-  }
-  for (size_t c = cells; c > 0; --c) start_[c] = start_[c - 1];  // ... and is moved back
-  start_[0] = 0;
+  forRowRanges(count, threads, [&](int t, int, int) {
+    const size_t lo = band(t), hi = band(t + 1);
+    for (size_t c = lo + 1; c <= hi; ++c) start_[c] += bandStart_[t];
+    if (hi == lo) return;
+    cursor_[lo] = bandStart_[t];  // start_[lo]: the band before writes it
+    for (size_t c = lo + 1; c < hi; ++c) cursor_[c] = start_[c];
+    for (int k = 0; k < count; ++k) {
+      if (!inBand(k, lo, hi)) continue;
+      const int e = cursor_[home_[k]]++;
+      boxes_[e] = boxes[idOf(k)];
+      ids_[e] = idOf(k);
+    }
+  });
 }
 
 size_t BoxGrid::memoryBytes() const {
   return start_.capacity() * sizeof(int) + boxes_.capacity() * sizeof(Box) + ids_.capacity() * sizeof(int) +
          largeBoxes_.capacity() * sizeof(Box) + largeIds_.capacity() * sizeof(int) + home_.capacity() * sizeof(int) +
-         scratch_.capacity() * sizeof(double);
+         scratch_.capacity() * sizeof(double) + (cursor_.capacity() + bandStart_.capacity()) * sizeof(int);
 }
 
 }  // namespace fosssim

@@ -43,8 +43,8 @@ class BoxGrid {
   /// Indexes the boxes boxes[id] for id in ids[0, count) (ids == nullptr: id = 0 .. count-1).
   /// Boxes are copied; they must not contain NaN (callers check every pair for non-finite
   /// states). `cell` > 0 imposes the cell size (a small grid of boxes like another grid's saves
-  /// choosing it); 0 chooses it from the boxes.
-  void build(const Box* boxes, int count, const int* ids = nullptr, double cell = 0);
+  /// choosing it); 0 chooses it from the boxes. `threads`: the filing's (the same grid for any).
+  void build(const Box* boxes, int count, const int* ids = nullptr, double cell = 0, int threads = 1);
   /// The cell size of the last build.
   double cellSize() const { return cell_; }
   /// Empty index.
@@ -78,6 +78,8 @@ class BoxGrid {
   std::vector<Box> largeBoxes_;
   std::vector<int> largeIds_;
   std::vector<int> home_;      ///< scratch: each box's cell, or -1 for a large one
+  std::vector<int> cursor_;    ///< scratch: per cell, where its next entry goes
+  std::vector<int> bandStart_; ///< scratch: per band of cells (one per thread), its first entry
   std::vector<double> scratch_;
 };
 

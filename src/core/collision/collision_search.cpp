@@ -30,7 +30,7 @@ bool CollisionSearch::prepare(const Scene& scene, const VecX& qs, const VecX& qe
   builtQs_ = builtQe_ = nullptr;
   if (forceAll_ || logging(ctx)) return false;
   const StepTimer timer(ctx.timing, ctx.stats->broadPhase);
-  candidates_.build(scene, qs, qe, 0.0, /*updates=*/true);
+  candidates_.build(scene, qs, qe, 0.0, /*updates=*/true, threads_);
   if (candidates_.allPairs()) return false;
   builtQs_ = &qs;
   builtQe_ = &qe;

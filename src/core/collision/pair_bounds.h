@@ -52,8 +52,8 @@ static_assert(kCutoffReach * kCutoffReach >= 16 * 2 * math::kNegligibleLeadingCo
               "the half-plane reach must dominate the CCD cutoff");
 
 /// Largest |coordinate| of the positions a and b (2N each, b may equal a) and of the scene's
-/// half-plane points; NaN or infinity when some coordinate is not finite.
-double coordinateScale(const Scene& scene, const VecX& a, const VecX& b);
+/// half-plane points; infinity when some coordinate is not finite. `threads`: ranges of particles.
+double coordinateScale(const Scene& scene, const VecX& a, const VecX& b, int threads = 1);
 
 inline double margin(double scale, double radius) { return kRelativeMargin * (scale + radius) + kAbsoluteMargin; }
 

@@ -1,5 +1,7 @@
 #include "pair_candidates.h"
 
+#include "parallel_rows.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -44,9 +46,22 @@ Box PairCandidates::filed(const Box& b) const {
   return Box{b.x0 - grow, b.y0 - grow, b.x1 + grow, b.y1 + grow};
 }
 
-double coordinateScale(const Scene& scene, const VecX& a, const VecX& b) {
-  if (!a.allFinite() || !b.allFinite()) return std::numeric_limits<double>::infinity();
-  double s = a.size() > 0 ? std::max(a.lpNorm<Eigen::Infinity>(), b.lpNorm<Eigen::Infinity>()) : 0.0;
+double coordinateScale(const Scene& scene, const VecX& a, const VecX& b, int threads) {
+  // One pass over both vectors by ranges of particles; v <= DBL_MAX fails for NaN and infinity.
+  const int n = static_cast<int>(std::min(a.size(), b.size()) / 2);
+  std::vector<double> largest(static_cast<size_t>(rowRangesFor(n, threads)), 0.0);
+  forRowRanges(n, threads, [&](int range, int first, int end) {
+    double m = 0;
+    bool finite = true;
+    for (long k = 2L * first; k < 2L * end; ++k) {
+      const double u = std::fabs(a[k]), v = std::fabs(b[k]);
+      finite = finite && u <= std::numeric_limits<double>::max() && v <= std::numeric_limits<double>::max();
+      m = std::max(m, std::max(u, v));
+    }
+    largest[range] = finite ? m : std::numeric_limits<double>::infinity();
+  });
+  double s = 0;
+  for (double m : largest) s = std::max(s, m);
   for (const HalfPlane& h : scene.halfplanes) {
     if (!h.point.allFinite() || !h.normal.allFinite()) return std::numeric_limits<double>::infinity();
     s = std::max(s, h.point.lpNorm<Eigen::Infinity>());
@@ -54,20 +69,24 @@ double coordinateScale(const Scene& scene, const VecX& a, const VecX& b) {
   return s;
 }
 
-void PairCandidates::build(const Scene& scene, const VecX& qs, const VecX& qe, double extra, bool updates) {
+void PairCandidates::build(const Scene& scene, const VecX& qs, const VecX& qe, double extra, bool updates,
+                           int threads) {
   scene_ = &scene;
+  threads_ = threads;
   slack_ = updates ? kFiledSlack : 0.0;
   qs_ = &qs;
   qe_ = &qe;
   extra_ = extra;
-  scale_ = coordinateScale(scene, qs, qe);
+  scale_ = coordinateScale(scene, qs, qe, threads);
   allPairs_ = !(scale_ <= kLargestGridCoordinate) || !(std::fabs(extra) <= kLargestGridCoordinate) || !gridRadii(scene);
   staleParticles_.clear();
   staleEdges_.clear();
   if (allPairs_) return;
   const int n = scene.numParticles(), edges = static_cast<int>(scene.edges.size());
   particleBoxes_.resize(n);
-  for (int p = 0; p < n; ++p) particleBoxes_[p] = filed(particleBox(scene, qs, qe, p, scale_, extra));
+  forRowRanges(n, threads, [&](int, int first, int end) {
+    for (int p = first; p < end; ++p) particleBoxes_[p] = filed(particleBox(scene, qs, qe, p, scale_, extra));
+  });
   particleStale_.assign(n, 0);
   if (edges > 0) {  // no edge storage at all for scenes without edges
     edgeBoxes_.resize(edges);
@@ -95,8 +114,9 @@ void PairCandidates::index() {
   staleParticles_.clear();
   staleEdges_.clear();
   staleParticlesFiled_ = staleEdgesFiled_ = 0;
-  particleGrid_.build(particleBoxes_.data(), scene_->numParticles());
-  if (!scene_->edges.empty()) edgeGrid_.build(edgeBoxes_.data(), static_cast<int>(scene_->edges.size()));
+  particleGrid_.build(particleBoxes_.data(), scene_->numParticles(), nullptr, 0, threads_);
+  if (!scene_->edges.empty())
+    edgeGrid_.build(edgeBoxes_.data(), static_cast<int>(scene_->edges.size()), nullptr, 0, threads_);
 }
 
 bool PairCandidates::withinScale(int p) const {

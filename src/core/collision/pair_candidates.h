@@ -66,8 +66,10 @@ class PairCandidates {
   /// `extra` widens every particle and edge box (the penalty force passes half its thickness, so
   /// that boxes meet within the pair's thickness) and the half-plane reach by 2 * extra.
   /// `scene`, `qs` and `qe` must outlive the use (qe may change between update() calls).
-  /// `updates`: qe will change (update()); boxes are then filed with some slack.
-  void build(const Scene& scene, const VecX& qs, const VecX& qe, double extra = 0.0, bool updates = false);
+  /// `updates`: qe will change (update()); boxes are then filed with some slack. `threads`: for
+  /// the boxes and grids of this build and its rebuilds (the same candidates for any count).
+  void build(const Scene& scene, const VecX& qs, const VecX& qe, double extra = 0.0, bool updates = false,
+             int threads = 1);
 
   /// Every pair is a candidate (non-finite state or forced).
   bool allPairs() const { return allPairs_; }
@@ -127,6 +129,7 @@ class PairCandidates {
   const VecX* qs_ = nullptr;
   const VecX* qe_ = nullptr;
   double extra_ = 0, scale_ = 0, slack_ = 0;
+  int threads_ = 1;
   bool allPairs_ = false;
   std::vector<Box> particleBoxes_, edgeBoxes_;
   BoxGrid particleGrid_, edgeGrid_;

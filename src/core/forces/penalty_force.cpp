@@ -33,7 +33,7 @@ void forEachPenaltyPair(const Scene& scene, const VecX& x, double thickness, For
   std::vector<std::vector<PenaltyPair>>& found = scratch.found;
   const int n = scene.numParticles(), threads = context.threads();
   // A negative thickness shrinks the reach; the boxes are then simply not widened.
-  candidates.build(scene, x, x, std::max(0.0, 0.5 * thickness));
+  candidates.build(scene, x, x, std::max(0.0, 0.5 * thickness), false, threads);
   if (context.allPairs()) candidates.forceAllPairs();
   // Rows [first, end), each pair within reach handed to `take`.
   auto scan = [&](int first, int end, std::vector<int>& row, auto&& take) {
