@@ -152,5 +152,36 @@ TEST(Sleep, ARunInWhichNothingSleepsIsTheSameBitForBitWithSleepingOff) {
   }
 }
 
+// Sleeping's per-particle passes run on the handler's threads: a row of 4,200 disks (enough to
+// be split) resting on the floor, half of them sliding slowly (never asleep), gives the same
+// bits and the same sleepers on 1 and 2 threads, and the resting half does fall asleep.
+TEST(Sleep, ThreadCountDoesNotChangeWhoSleeps) {
+  for (const char* type : kEventTypes) {
+    SCOPED_TRACE(type);
+    std::vector<std::pair<double, double>> disks;
+    for (int k = 0; k < 4200; ++k) disks.emplace_back(3 * kR * k, k % 2 ? 0.01 : 0.0);
+    std::vector<TestScene> scenes;
+    std::vector<std::unique_ptr<Simulator>> sims;
+    for (int threads = 1; threads <= 2; ++threads) {
+      scenes.push_back(floorScene(type, disks));
+      SimulatorOptions options;
+      options.handler.compat = false;
+      options.handler.threads = threads;
+      std::unique_ptr<Simulator> sim;
+      ASSERT_TRUE(Simulator::create(scenes.back().scene, options, sim).isOk());
+      sims.push_back(std::move(sim));
+    }
+    for (int k = 0; k < kStepsToSleep + 5; ++k) {
+      for (size_t m = 0; m < sims.size(); ++m) ASSERT_TRUE(sims[m]->step(scenes[m].scene, scenes[m].state).isOk());
+      for (size_t m = 1; m < sims.size(); ++m) {
+        ASSERT_EQ(scenes[m].state.x, scenes[0].state.x) << "step " << k + 1;
+        ASSERT_EQ(scenes[m].state.v, scenes[0].state.v) << "step " << k + 1;
+        ASSERT_EQ(sims[m]->stats().asleep, sims[0]->stats().asleep) << "step " << k + 1;
+      }
+    }
+    EXPECT_EQ(sims[0]->stats().asleep, 2100);
+  }
+}
+
 }  // namespace
 }  // namespace fosssim::testing

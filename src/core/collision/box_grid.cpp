@@ -66,24 +66,45 @@ void BoxGrid::build(const Box* boxes, int count, const int* ids, double imposedC
   auto idOf = [&](int k) { return ids ? ids[k] : k; };
   double cell = imposedCell > 0 ? imposedCell : chooseCell(boxes, count, ids);
   // Which boxes are ordinary, and the bounding box of their lower corners.
+  // By ranges of boxes (min and max do not depend on the order they are taken in); the large
+  // boxes, few, are then listed in order.
   home_.resize(count);
-  double minX = 0, minY = 0, maxX = 0, maxY = 0;
-  int ordinary = 0;
-  for (int k = 0; k < count; ++k) {
-    const Box& b = boxes[idOf(k)];
-    const bool large = !(b.x1 - b.x0 <= kExtentSlack * cell && b.y1 - b.y0 <= kExtentSlack * cell);
-    home_[k] = large ? -1 : 0;
-    if (large) {
-      largeBoxes_.push_back(b);
-      largeIds_.push_back(idOf(k));
-      continue;
+  struct Corners {
+    double minX = 0, minY = 0, maxX = 0, maxY = 0;
+    int ordinary = 0, large = 0;
+  };
+  std::vector<Corners> ranges(static_cast<size_t>(rowRangesFor(count, threads)));
+  forRowRanges(count, threads, [&](int range, int first, int end) {
+    Corners c;
+    for (int k = first; k < end; ++k) {
+      const Box& b = boxes[idOf(k)];
+      const bool large = !(b.x1 - b.x0 <= kExtentSlack * cell && b.y1 - b.y0 <= kExtentSlack * cell);
+      home_[k] = large ? -1 : 0;
+      if (large) {
+        ++c.large;
+        continue;
+      }
+      c.minX = c.ordinary ? std::min(c.minX, b.x0) : b.x0;
+      c.maxX = c.ordinary ? std::max(c.maxX, b.x0) : b.x0;
+      c.minY = c.ordinary ? std::min(c.minY, b.y0) : b.y0;
+      c.maxY = c.ordinary ? std::max(c.maxY, b.y0) : b.y0;
+      ++c.ordinary;
     }
-    minX = ordinary ? std::min(minX, b.x0) : b.x0;
-    maxX = ordinary ? std::max(maxX, b.x0) : b.x0;
-    minY = ordinary ? std::min(minY, b.y0) : b.y0;
-    maxY = ordinary ? std::max(maxY, b.y0) : b.y0;
-    ++ordinary;
+    ranges[range] = c;
+  });
+  double minX = 0, minY = 0, maxX = 0, maxY = 0;
+  int ordinary = 0, large = 0;
+  for (const Corners& c : ranges) {
+    large += c.large;
+    if (c.ordinary == 0) continue;
+    minX = ordinary ? std::min(minX, c.minX) : c.minX;
+    maxX = ordinary ? std::max(maxX, c.maxX) : c.maxX;
+    minY = ordinary ? std::min(minY, c.minY) : c.minY;
+    maxY = ordinary ? std::max(maxY, c.maxY) : c.maxY;
+    ordinary += c.ordinary;
   }
+  for (int k = 0; large > 0 && k < count; ++k)
+    if (home_[k] < 0) largeBoxes_.push_back(boxes[idOf(k)]), largeIds_.push_back(idOf(k));
   if (ordinary == 0) {
     boxes_.clear();
     ids_.clear();

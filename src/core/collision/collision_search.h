@@ -79,7 +79,7 @@ class CollisionSearch {
   std::vector<uint64_t> keys_, extra_;
   std::vector<int> row_;
   std::vector<char> mark_;
-  struct Worker {  ///< one range of rows of a parallel detectAll
+  struct alignas(64) Worker {  ///< one range of rows of a parallel detectAll (a cache line of its own)
     std::vector<uint64_t> keys;
     std::vector<int> row;
     std::vector<Collision> out;

@@ -32,6 +32,7 @@ EventHandler::EventHandler(const CollisionSettings& settings, int eventsPerParti
   zones_.setRigidOnly(settings.failsafe == Failsafe::Rigid);
   zones_.setSleepers(&sleepers_);
   sleepers_.setEnabled(options.sleep);
+  sleepers_.setThreads(threads_);
 }
 
 Status EventHandler::handle(const Scene& scene, const State& start, State& state, StepContext& ctx) {

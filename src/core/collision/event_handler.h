@@ -91,8 +91,9 @@ class EventHandler final : public CollisionHandler {
   Sleepers sleepers_;
   ContinuousDetector logger_{math::DetectionRules{}};  ///< builds the trajectory log's polynomials
   std::vector<Event> heap_;
-  /// One per row range of detectAll: its events, scratch and counts.
-  struct Worker {
+  /// One per row range of detectAll: its events, scratch and counts. A cache line of its own:
+  /// each thread writes its worker's vectors and counts all the time.
+  struct alignas(64) Worker {
     std::vector<Event> events;
     std::vector<uint64_t> keys;
     std::vector<int> row;

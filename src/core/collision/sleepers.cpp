@@ -1,5 +1,7 @@
 #include "sleepers.h"
 
+#include "parallel_rows.h"
+
 #include <algorithm>
 
 namespace fosssim {
@@ -31,19 +33,24 @@ void Sleepers::begin(const Scene& scene, const State& start, State& state, doubl
       if (!scene.isFixed(e.i) || !scene.isFixed(e.j)) mayRest_[e.i] = mayRest_[e.j] = 0;
   }
   if (sleeping_ == 0) return;
-  for (int p = 0; p < n; ++p) {
-    kick_[p] = (at(state.v, p) - at(start.v, p)).norm();
-    if (!asleep_[p]) continue;
-    // A sleeper starts the step where it fell asleep, at rest, unless someone else moved it
-    // between steps (a script assigning positions or velocities, the grader's state): then it
-    // wakes and takes the integrator's prediction like any particle.
-    if (at(start.x, p) != at(rest_, p) || at(start.v, p) != Vec2::Zero()) {
-      wake(p);
-      continue;
+  // By ranges of particles: each one's work is its own; the sleepers woken are counted per range.
+  std::vector<int> woken(static_cast<size_t>(rowRangesFor(n, threads_)), 0);
+  forRowRanges(n, threads_, [&](int range, int first, int end) {
+    for (int p = first; p < end; ++p) {
+      kick_[p] = (at(state.v, p) - at(start.v, p)).norm();
+      if (!asleep_[p]) continue;
+      // A sleeper starts the step where it fell asleep, at rest, unless someone else moved it
+      // between steps (a script assigning positions or velocities, the grader's state): then it
+      // wakes and takes the integrator's prediction like any particle.
+      if (at(start.x, p) != at(rest_, p) || at(start.v, p) != Vec2::Zero()) {
+        asleep_[p] = 0, still_[p] = 0, ++woken[range];
+        continue;
+      }
+      at(state.x, p) = at(start.x, p);
+      at(state.v, p).setZero();
     }
-    at(state.x, p) = at(start.x, p);
-    at(state.v, p).setZero();
-  }
+  });
+  for (int w : woken) sleeping_ -= w;
 }
 
 void Sleepers::wake(int p) {
@@ -60,30 +67,34 @@ void Sleepers::wake(int p) {
 void Sleepers::end(const Scene& scene, const State& start, State& state) {
   if (!enabled_) return;
   const int n = scene.numParticles();
-  for (int p = 0; p < n; ++p) {
-    if (asleep_[p] || !mayRest_[p]) continue;
-    const double reach = kSleepFraction * scene.radius[p];
-    const bool still =
-        (at(state.x, p) - at(start.x, p)).norm() <= reach && h_ * at(state.v, p).norm() <= reach;
-    moved_[p] = !still;
-    if (!still) {
-      still_[p] = 0;
-      continue;
+  std::vector<int> fell(static_cast<size_t>(rowRangesFor(n, threads_)), 0);  // asleep now, per range
+  forRowRanges(n, threads_, [&](int range, int first, int end) {
+    for (int p = first; p < end; ++p) {
+      if (asleep_[p] || !mayRest_[p]) continue;
+      const double reach = kSleepFraction * scene.radius[p];
+      const bool still =
+          (at(state.x, p) - at(start.x, p)).norm() <= reach && h_ * at(state.v, p).norm() <= reach;
+      moved_[p] = !still;
+      if (!still) {
+        still_[p] = 0;
+        continue;
+      }
+      if (still_[p]++ == 0) at(anchor_, p) = at(start.x, p);
+      if (still_[p] < kStepsToSleep) continue;
+      if ((at(state.x, p) - at(anchor_, p)).norm() > reach) {
+        still_[p] = 0;  // creeping: start a new run from here
+        continue;
+      }
+      // Asleep from the next step on; where it ended, at rest (its last velocity was below the
+      // sleep speed: dropping it is what sleeping means).
+      asleep_[p] = 1;
+      moved_[p] = 0;
+      at(state.v, p).setZero();
+      at(rest_, p) = at(state.x, p);
+      ++fell[range];
     }
-    if (still_[p]++ == 0) at(anchor_, p) = at(start.x, p);
-    if (still_[p] < kStepsToSleep) continue;
-    if ((at(state.x, p) - at(anchor_, p)).norm() > reach) {
-      still_[p] = 0;  // creeping: start a new run from here
-      continue;
-    }
-    // Asleep from the next step on; where it ended, at rest (its last velocity was below the
-    // sleep speed: dropping it is what sleeping means).
-    asleep_[p] = 1;
-    moved_[p] = 0;
-    at(state.v, p).setZero();
-    at(rest_, p) = at(state.x, p);
-    ++sleeping_;
-  }
+  });
+  for (int f : fell) sleeping_ += f;
 }
 
 }  // namespace fosssim

@@ -51,6 +51,8 @@ class Sleepers {
  public:
   /// Sleeping on or off (off: nothing ever sleeps and nothing here costs anything).
   void setEnabled(bool on) { enabled_ = on; }
+  /// Threads for the per-particle passes at a step's start and end (the same result for any).
+  void setThreads(int threads) { threads_ = threads; }
 
   /// Step start: sizes the storage, works out who may sleep in this scene, and puts every
   /// sleeper back at its start position with zero velocity in `state` (the integrator's
@@ -77,6 +79,7 @@ class Sleepers {
 
  private:
   bool enabled_ = true;
+  int threads_ = 1;
   double h_ = 1;
   int sleeping_ = 0;
   std::vector<char> mayRest_;    ///< N: may sleep in this scene (see the top of this file)

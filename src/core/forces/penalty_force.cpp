@@ -73,9 +73,15 @@ void forEachPenaltyPair(const Scene& scene, const VecX& x, double thickness, For
   }
   // With threads: each range of rows lists its pairs, then they are visited in row order, so
   // the sums come out exactly as with one thread.
+  // Each range works on its own vectors moved out of the shared arrays and back: their headers
+  // sit side by side there, and every push_back would write a cache line the other thread uses.
   forRowRanges(n, threads, [&](int range, int first, int end) {
-    found[range].clear();
-    scan(first, end, rows[range], [&](const PenaltyPair& p) { found[range].push_back(p); });
+    std::vector<int> row = std::move(rows[range]);
+    std::vector<PenaltyPair> pairs = std::move(found[range]);
+    pairs.clear();
+    scan(first, end, row, [&](const PenaltyPair& p) { pairs.push_back(p); });
+    rows[range] = std::move(row);
+    found[range] = std::move(pairs);
   });
   for (int range = 0; range < ranges; ++range)
     for (const PenaltyPair& p : found[range]) visit(p);
