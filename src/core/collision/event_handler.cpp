@@ -39,7 +39,7 @@ Status EventHandler::handle(const Scene& scene, const State& start, State& state
   const int n = scene.numParticles();
   if (ctx.log->polynomials.enabled()) logReferencePolynomials(scene, start, state, ctx);
   sleepers_.begin(scene, start, state, ctx.dt);  // sleepers back where they rest
-  motion_.begin(start.x, state.x);
+  motion_.begin(start.x, state.x, threads_);
   events_.assign(n, 0);
   zones_.reset(n);
   heap_.clear();
@@ -76,7 +76,9 @@ Status EventHandler::handle(const Scene& scene, const State& start, State& state
     changed_.clear();
   }
   // Finish: the end of every particle's last piece.
-  state.x = motion_.end();
+  forRowRanges(n, threads_, [&](int, int first, int end) {
+    state.x.segment(2L * first, 2L * (end - first)) = motion_.end().segment(2L * first, 2L * (end - first));
+  });
   sleepers_.end(scene, start, state);
   ctx.stats->asleep = sleepers_.sleeping();
   zones_.sizes(*ctx.stats);

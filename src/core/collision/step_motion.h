@@ -15,7 +15,11 @@
 // piece by piece (piecewise_verify.cpp).
 #pragma once
 
+#include "parallel_rows.h"
+
 #include "fosssim/core/types.h"
+
+#include <algorithm>
 
 #include <cstdint>
 #include <vector>
@@ -31,12 +35,21 @@ struct MotionBreak {
 
 class StepMotion {
  public:
-  /// Every particle on one piece from start (t = 0) to end (t = 1).
-  void begin(const VecX& start, const VecX& end) {
-    from_ = start;
-    end_ = end;
-    rate_ = end - start;
-    t0_.assign(static_cast<size_t>(start.size() / 2), 0.0);
+  /// Every particle on one piece from start (t = 0) to end (t = 1); by ranges of particles on
+  /// `threads` (plain copies and differences: the same for any count).
+  void begin(const VecX& start, const VecX& end, int threads = 1) {
+    const int n = static_cast<int>(start.size() / 2);
+    from_.resize(start.size());
+    end_.resize(start.size());
+    rate_.resize(start.size());
+    t0_.resize(static_cast<size_t>(n));
+    forRowRanges(n, threads, [&](int, int first, int last) {
+      const long k = 2L * first, count = 2L * (last - first);
+      from_.segment(k, count) = start.segment(k, count);
+      end_.segment(k, count) = end.segment(k, count);
+      rate_.segment(k, count) = end.segment(k, count) - start.segment(k, count);
+      std::fill(t0_.begin() + first, t0_.begin() + last, 0.0);
+    });
     if (version_.size() != t0_.size()) version_.assign(t0_.size(), 0);
     breaks_.clear();
   }
