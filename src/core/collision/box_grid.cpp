@@ -25,12 +25,42 @@ double extent(const Box& b) { return std::max(b.x1 - b.x0, b.y1 - b.y0); }
 
 void BoxGrid::clear() {
   count_ = 0;
+  idLimit_ = 0;
   start_.assign(2, 0);
   columns_ = rows_ = 1;
   boxes_.clear();
   ids_.clear();
   largeBoxes_.clear();
   largeIds_.clear();
+  forgetInserted();
+}
+
+// Every head_ entry is -1 again (only the touched ones were set), so head_ can simply grow to
+// the next build's cell count.
+void BoxGrid::forgetInserted() {
+  for (int c : touched_) head_[c] = -1;
+  touched_.clear();
+  dynamic_.clear();
+  dynamicLarge_.clear();
+  live_.clear();
+}
+
+void BoxGrid::insert(int id, const Box& b) {
+  if (live_.empty()) live_.assign(static_cast<size_t>(std::max(idLimit_, id + 1)), -1);  // first since the build
+  if (id >= static_cast<int>(live_.size())) live_.resize(static_cast<size_t>(id) + 1, -1);
+  const size_t cells = static_cast<size_t>(columns_) * rows_;
+  if (head_.size() < cells) head_.resize(cells, -1);
+  const int k = static_cast<int>(dynamic_.size());
+  dynamic_.push_back(Inserted{b, id, -1});
+  live_[id] = k;
+  if (!(b.x1 - b.x0 <= kExtentSlack * cell_ && b.y1 - b.y0 <= kExtentSlack * cell_)) {
+    dynamicLarge_.push_back(k);
+    return;
+  }
+  const int c = row(b.y0) * columns_ + column(b.x0);
+  if (head_[c] < 0) touched_.push_back(c);
+  dynamic_[k].next = head_[c];
+  head_[c] = k;
 }
 
 double BoxGrid::chooseCell(const Box* boxes, int count, const int* ids) {
@@ -63,8 +93,16 @@ void BoxGrid::build(const Box* boxes, int count, const int* ids, double imposedC
   columns_ = rows_ = 1;
   largeBoxes_.clear();
   largeIds_.clear();
+  forgetInserted();
   auto idOf = [&](int k) { return ids ? ids[k] : k; };
+  idLimit_ = 0;
+  if (ids)
+    for (int k = 0; k < count; ++k) idLimit_ = std::max(idLimit_, ids[k] + 1);
+  else
+    idLimit_ = count;
   double cell = imposedCell > 0 ? imposedCell : chooseCell(boxes, count, ids);
+  cell_ = cell;
+  inverseCell_ = 1.0 / cell;
   // Which boxes are ordinary, and the bounding box of their lower corners.
   // By ranges of boxes (min and max do not depend on the order they are taken in); the large
   // boxes, few, are then listed in order.
@@ -186,7 +224,9 @@ void BoxGrid::build(const Box* boxes, int count, const int* ids, double imposedC
 size_t BoxGrid::memoryBytes() const {
   return start_.capacity() * sizeof(int) + boxes_.capacity() * sizeof(Box) + ids_.capacity() * sizeof(int) +
          largeBoxes_.capacity() * sizeof(Box) + largeIds_.capacity() * sizeof(int) + home_.capacity() * sizeof(int) +
-         scratch_.capacity() * sizeof(double) + (cursor_.capacity() + bandStart_.capacity()) * sizeof(int);
+         scratch_.capacity() * sizeof(double) + (cursor_.capacity() + bandStart_.capacity()) * sizeof(int) +
+         dynamic_.capacity() * sizeof(Inserted) +
+         (head_.capacity() + dynamicLarge_.capacity() + live_.capacity() + touched_.capacity()) * sizeof(int);
 }
 
 }  // namespace fosssim

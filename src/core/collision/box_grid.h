@@ -13,6 +13,12 @@
 // stays below about kCellsPerBox times the number of boxes (cells grow when the boxes are
 // spread thin), so memory is linear in the boxes.
 //
+// Boxes that change after the build (a particle whose path a response bent) are re-filed with
+// insert(): their home cells get a short list each, on top of the sorted entries, and the old
+// entry is skipped from then on. An insertion costs O(1) and queries stay local, so a step's
+// thousands of refreshed boxes need no rebuild until they are a good share of all (the owner
+// decides when: inserted()).
+//
 // Why this and not the alternatives: bench/broad_phase_alternatives.cpp measures it against a
 // spatial hash filing each box in every cell it covers and against sweep-and-prune (README,
 // "Performance").
@@ -50,7 +56,13 @@ class BoxGrid {
   /// Empty index.
   void clear();
 
-  /// Calls visit(id) exactly once for every indexed box that overlaps b.
+  /// Files box `id` anew with box b (id as indexed by the build; its earlier box, sorted or
+  /// inserted, no longer counts). b must not contain NaN.
+  void insert(int id, const Box& b);
+  /// Boxes inserted since the build (re-filed ones count again).
+  int inserted() const { return static_cast<int>(dynamic_.size()); }
+
+  /// Calls visit(id) exactly once for every indexed box that overlaps b (its latest box).
   template <class Visit>
   void forEachOverlap(const Box& b, Visit&& visit) const;
 
@@ -60,6 +72,7 @@ class BoxGrid {
 
  private:
   double chooseCell(const Box* boxes, int count, const int* ids);
+  void forgetInserted();
   int column(double x) const { return clamp((x - originX_) * inverseCell_, columns_); }
   int row(double y) const { return clamp((y - originY_) * inverseCell_, rows_); }
   /// floor(v) clamped to [0, n - 1]; monotone in v, so ranges of coordinates map to ranges.
@@ -70,6 +83,7 @@ class BoxGrid {
   }
 
   int count_ = 0;
+  int idLimit_ = 0;  ///< largest id indexed, plus one
   double originX_ = 0, originY_ = 0, cell_ = 1, inverseCell_ = 1;
   int columns_ = 1, rows_ = 1;
   std::vector<int> start_;     ///< per cell (row-major), its first entry; one more at the end
@@ -77,6 +91,17 @@ class BoxGrid {
   std::vector<int> ids_;       ///< entries' ids, parallel to boxes_
   std::vector<Box> largeBoxes_;
   std::vector<int> largeIds_;
+  /// A box inserted after the build, in its home cell's list (or the large ones').
+  struct Inserted {
+    Box box;
+    int id;
+    int next;  ///< the next entry of the same list, -1 at its end
+  };
+  std::vector<Inserted> dynamic_;
+  std::vector<int> head_;          ///< per cell: its first inserted entry, -1 if none (empty: none yet)
+  std::vector<int> dynamicLarge_;  ///< inserted entries too large for the cells
+  std::vector<int> live_;          ///< per id: its inserted entry, -1 while its sorted entry holds
+  std::vector<int> touched_;       ///< cells whose head_ is set
   std::vector<int> home_;      ///< scratch: each box's cell, or -1 for a large one
   std::vector<int> cursor_;    ///< scratch: per cell, where its next entry goes
   std::vector<int> bandStart_; ///< scratch: per band of cells (one per thread), its first entry
@@ -85,15 +110,28 @@ class BoxGrid {
 
 template <class Visit>
 void BoxGrid::forEachOverlap(const Box& b, Visit&& visit) const {
+  // With insertions, a sorted entry counts only while its id has not been re-filed; an inserted
+  // one only while it is its id's latest.
+  const bool refiled = !dynamic_.empty();
   for (size_t k = 0; k < largeIds_.size(); ++k)
-    if (overlap(b, largeBoxes_[k])) visit(largeIds_[k]);
-  if (boxes_.empty()) return;
+    if (overlap(b, largeBoxes_[k]) && (!refiled || live_[largeIds_[k]] < 0)) visit(largeIds_[k]);
   const int x0 = column(b.x0 - cell_), x1 = column(b.x1), y0 = row(b.y0 - cell_), y1 = row(b.y1);
-  for (int y = y0; y <= y1; ++y) {
-    const int* first = &start_[static_cast<size_t>(y) * columns_];
-    for (int e = first[x0], end = first[x1 + 1]; e < end; ++e)
-      if (overlap(b, boxes_[e])) visit(ids_[e]);
+  if (!boxes_.empty()) {
+    for (int y = y0; y <= y1; ++y) {
+      const int* first = &start_[static_cast<size_t>(y) * columns_];
+      for (int e = first[x0], end = first[x1 + 1]; e < end; ++e)
+        if (overlap(b, boxes_[e]) && (!refiled || live_[ids_[e]] < 0)) visit(ids_[e]);
+    }
   }
+  if (!refiled) return;
+  auto visitLive = [&](int k) {
+    const Inserted& d = dynamic_[k];
+    if (live_[d.id] == k && overlap(b, d.box)) visit(d.id);
+  };
+  for (int k : dynamicLarge_) visitLive(k);
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x)
+      for (int k = head_[static_cast<size_t>(y) * columns_ + x]; k >= 0; k = dynamic_[k].next) visitLive(k);
 }
 
 }  // namespace fosssim

@@ -126,7 +126,7 @@ void CollisionSearch::detectChanged(const Scene& scene, const VecX& qs, const Ve
     const StepTimer timer(ctx.timing, ctx.stats->broadPhase);
     if (mark_.size() != static_cast<size_t>(n)) mark_.assign(n, 0);
     for (int p : changed) candidates_.update(p);
-    candidates_.settle(true);
+    candidates_.settle();
     keys_.clear();
     for (int p : changed) {
       if (mark_[p]) continue;
@@ -203,7 +203,7 @@ void CollisionSearch::sweep(const Scene& scene, const VecX& qs, VecX& qe, StepCo
       candidates_.update(particles[k]);
       moved = true;
     }
-    if (moved) candidates_.settle(false);
+    if (moved) candidates_.settle();
     for (int k = 0; k < count; ++k) {
       const int p = particles[k];
       if (at(qe, p) == before[k]) continue;

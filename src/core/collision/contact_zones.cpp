@@ -215,7 +215,7 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
       const int r = root(p);
       rateScale_[r] = std::max(rateScale_[r], rate.norm());
     }
-    candidates.settle(false);
+    candidates.settle();
     int added = 0;
     zone = grow(scene, motion, candidates, zone, T, h, added);
     if (added == 0) return;

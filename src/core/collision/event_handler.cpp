@@ -144,7 +144,7 @@ Status EventHandler::detectChanged(const Scene& scene, double T, StepContext& ct
   {
     const StepTimer timer(ctx.timing, ctx.stats->broadPhase);
     for (int p : changed_) candidates_.update(p);
-    candidates_.settle(false);
+    candidates_.settle();
     keys_.clear();
     for (int p : changed_) candidates_.pairsOf(p, keys_);
     std::sort(keys_.begin(), keys_.end());

@@ -8,12 +8,9 @@
 namespace fosssim {
 namespace {
 
-/// Fresh boxes scanned by every query before they are filed (in stale grids for a batch of
-/// queries, else by rebuilding the main grids: a rebuild costs a pass over all boxes, a query
-/// scans the fresh ones, so about sqrt(N) balances one query per refreshed box).
-constexpr size_t kMinStaleBeforeFiling = 32;
-/// A batch files its fresh boxes in stale grids until they are this fraction of all boxes.
-constexpr size_t kStaleFractionInverse = 4;
+/// The grids are rebuilt when the boxes re-filed since their build are this fraction of all:
+/// each re-filed box costs its queries a list entry and leaves a dead sorted one behind.
+constexpr size_t kRefiledFractionInverse = 4;
 /// Boxes that may change (continuous-time detection) are filed this fraction of their extent
 /// larger: most later changes (a particle frozen at its start by an impact zone, a rigid refit,
 /// a small impulse) then stay inside, and the filed box remains a valid, conservative bound.
@@ -79,19 +76,15 @@ void PairCandidates::build(const Scene& scene, const VecX& qs, const VecX& qe, d
   extra_ = extra;
   scale_ = coordinateScale(scene, qs, qe, threads);
   allPairs_ = !(scale_ <= kLargestGridCoordinate) || !(std::fabs(extra) <= kLargestGridCoordinate) || !gridRadii(scene);
-  staleParticles_.clear();
-  staleEdges_.clear();
   if (allPairs_) return;
   const int n = scene.numParticles(), edges = static_cast<int>(scene.edges.size());
   particleBoxes_.resize(n);
   forRowRanges(n, threads, [&](int, int first, int end) {
     for (int p = first; p < end; ++p) particleBoxes_[p] = filed(particleBox(scene, qs, qe, p, scale_, extra));
   });
-  particleStale_.assign(n, 0);
   if (edges > 0) {  // no edge storage at all for scenes without edges
     edgeBoxes_.resize(edges);
     for (int e = 0; e < edges; ++e) edgeBoxes_[e] = filed(edgeBox(scene, qs, qe, e, scale_, extra));
-    edgeStale_.assign(edges, 0);
     incidentStart_.assign(n + 1, 0);
     for (const Edge& e : scene.edges) ++incidentStart_[e.i + 1], ++incidentStart_[e.j + 1];
     for (int p = 0; p < n; ++p) incidentStart_[p + 1] += incidentStart_[p];
@@ -109,11 +102,6 @@ void PairCandidates::build(const Scene& scene, const VecX& qs, const VecX& qe, d
 }
 
 void PairCandidates::index() {
-  for (int p : staleParticles_) particleStale_[p] = 0;
-  for (int e : staleEdges_) edgeStale_[e] = 0;
-  staleParticles_.clear();
-  staleEdges_.clear();
-  staleParticlesFiled_ = staleEdgesFiled_ = 0;
   particleGrid_.build(particleBoxes_.data(), scene_->numParticles(), nullptr, 0, threads_);
   if (!scene_->edges.empty())
     edgeGrid_.build(edgeBoxes_.data(), static_cast<int>(scene_->edges.size()), nullptr, 0, threads_);
@@ -127,17 +115,15 @@ bool PairCandidates::withinScale(int p) const {
 void PairCandidates::update(int p) {
   if (allPairs_) return;
   if (!withinScale(p)) {  // the margins' scale no longer holds (or the state is not finite)
-    build(*scene_, *qs_, *qe_, extra_, slack_ > 0);
+    build(*scene_, *qs_, *qe_, extra_, slack_ > 0, threads_);
     return;
   }
   // A filed box that still holds the new one stays (a particle put back at its start, a rigid
-  // refit's rounding, a small impulse); else the fresh box is kept aside, and if the old one was
-  // filed in a stale grid, that grid no longer holds: all fresh boxes are scanned until settle().
+  // refit's rounding, a small impulse); else the fresh box is re-filed in the grid.
   const Box fresh = particleBox(*scene_, *qs_, *qe_, p, scale_, extra_);
   if (!contains(particleBoxes_[p], fresh)) {
     particleBoxes_[p] = filed(fresh);
-    if (!particleStale_[p]) particleStale_[p] = 1, staleParticles_.push_back(p);
-    else staleParticlesFiled_ = 0;
+    particleGrid_.insert(p, particleBoxes_[p]);
   }
   if (!scene_->edges.empty()) {
     for (int k = incidentStart_[p]; k < incidentStart_[p + 1]; ++k) {
@@ -145,60 +131,26 @@ void PairCandidates::update(int p) {
       const Box freshEdge = edgeBox(*scene_, *qs_, *qe_, e, scale_, extra_);
       if (contains(edgeBoxes_[e], freshEdge)) continue;
       edgeBoxes_[e] = filed(freshEdge);
-      if (!edgeStale_[e]) edgeStale_[e] = 1, staleEdges_.push_back(e);
-      else staleEdgesFiled_ = 0;
+      edgeGrid_.insert(e, edgeBoxes_[e]);
     }
   }
 }
 
-void PairCandidates::settle(bool batch) {
+void PairCandidates::settle() {
   if (allPairs_) return;
-  const size_t stale = staleParticles_.size() + staleEdges_.size();
+  const size_t refiled = static_cast<size_t>(particleGrid_.inserted()) + static_cast<size_t>(edgeGrid_.inserted());
   const size_t n = static_cast<size_t>(scene_->numParticles()) + scene_->edges.size();
-  if (stale <= kMinStaleBeforeFiling) return;
-  if (batch && stale * kStaleFractionInverse < n) {
-    if (staleParticlesFiled_ < staleParticles_.size()) {
-      staleParticleGrid_.build(particleBoxes_.data(), static_cast<int>(staleParticles_.size()), staleParticles_.data(),
-                               particleGrid_.cellSize());
-      staleParticlesFiled_ = staleParticles_.size();
-    }
-    if (staleEdgesFiled_ < staleEdges_.size()) {
-      staleEdgeGrid_.build(edgeBoxes_.data(), static_cast<int>(staleEdges_.size()), staleEdges_.data(),
-                           edgeGrid_.cellSize());
-      staleEdgesFiled_ = staleEdges_.size();
-    }
-    return;
-  }
-  if (batch || stale > std::max(kMinStaleBeforeFiling, static_cast<size_t>(std::sqrt(static_cast<double>(n))))) index();
+  if (refiled * kRefiledFractionInverse >= n && refiled > 0) index();
 }
 
 template <class Visit>
 void PairCandidates::forEachParticleNear(const Box& b, Visit&& visit) const {
-  if (staleParticles_.empty()) {
-    particleGrid_.forEachOverlap(b, visit);
-    return;
-  }
-  particleGrid_.forEachOverlap(b, [&](int j) {
-    if (!particleStale_[j]) visit(j);
-  });
-  if (staleParticlesFiled_ > 0) staleParticleGrid_.forEachOverlap(b, visit);
-  for (size_t k = staleParticlesFiled_; k < staleParticles_.size(); ++k)
-    if (overlap(b, particleBoxes_[staleParticles_[k]])) visit(staleParticles_[k]);
+  particleGrid_.forEachOverlap(b, visit);
 }
 
 template <class Visit>
 void PairCandidates::forEachEdgeNear(const Box& b, Visit&& visit) const {
-  if (scene_->edges.empty()) return;
-  if (staleEdges_.empty()) {
-    edgeGrid_.forEachOverlap(b, visit);
-    return;
-  }
-  edgeGrid_.forEachOverlap(b, [&](int e) {
-    if (!edgeStale_[e]) visit(e);
-  });
-  if (staleEdgesFiled_ > 0) staleEdgeGrid_.forEachOverlap(b, visit);
-  for (size_t k = staleEdgesFiled_; k < staleEdges_.size(); ++k)
-    if (overlap(b, edgeBoxes_[staleEdges_[k]])) visit(staleEdges_[k]);
+  if (!scene_->edges.empty()) edgeGrid_.forEachOverlap(b, visit);
 }
 
 void PairCandidates::particlesOf(int i, int after, std::vector<int>& out) const {
@@ -261,10 +213,7 @@ void PairCandidates::pairsOf(int p, std::vector<uint64_t>& keys) const {
 
 size_t PairCandidates::memoryBytes() const {
   return particleBoxes_.capacity() * sizeof(Box) + edgeBoxes_.capacity() * sizeof(Box) +
-         particleGrid_.memoryBytes() + edgeGrid_.memoryBytes() + staleParticleGrid_.memoryBytes() +
-         staleEdgeGrid_.memoryBytes() + particleStale_.capacity() +
-         edgeStale_.capacity() + (staleParticles_.capacity() + staleEdges_.capacity()) * sizeof(int) +
-         (incidentStart_.capacity() + incident_.capacity()) * sizeof(int);
+         particleGrid_.memoryBytes() + edgeGrid_.memoryBytes() + (incidentStart_.capacity() + incident_.capacity()) * sizeof(int);
 }
 
 }  // namespace fosssim

@@ -12,10 +12,8 @@
 // 64-bit key that sorts in that order (pairKey), for the incremental searches.
 //
 // Positions may change after the build (continuous-time responses, hybrid impulse passes, rigid
-// zones): update(p) refreshes particle p's box and its edges' boxes. Their old grid entries are
-// skipped from then on; the fresh boxes are kept aside, scanned by every query while they are
-// few, filed in small grids of their own when many queries follow (settle), and merged into the
-// main grids by a rebuild when they are many.
+// zones): update(p) refreshes particle p's box and its edges' boxes, re-filed in the grids at
+// once (BoxGrid::insert, O(1)); settle() rebuilds the grids when the re-filed boxes are many.
 //
 // A state with a non-finite coordinate has no meaningful boxes: the candidates are then every
 // pair (allPairs()), exactly what the reference checks.
@@ -105,10 +103,9 @@ class PairCandidates {
 
   /// Particle p's end position changed (qe as given at the build, changed in place).
   void update(int p);
-  /// After update() calls, before queries: when the fresh boxes kept aside are many, files
-  /// them in grids of their own (`batch`: many queries follow, as in an incremental detection)
-  /// or rebuilds the main grids (a few queries follow, as after one response).
-  void settle(bool batch);
+  /// After update() calls: rebuilds the grids when the boxes re-filed since their build are a
+  /// good share of all (queries are right either way; this only keeps them fast).
+  void settle();
   /// Appends the keys of every candidate pair that involves particle p (as the particle, the
   /// other particle or an edge endpoint), unsorted; a pair may appear more than once.
   void pairsOf(int p, std::vector<uint64_t>& keys) const;
@@ -133,10 +130,6 @@ class PairCandidates {
   bool allPairs_ = false;
   std::vector<Box> particleBoxes_, edgeBoxes_;
   BoxGrid particleGrid_, edgeGrid_;
-  std::vector<char> particleStale_, edgeStale_;  ///< main grid entry out of date
-  std::vector<int> staleParticles_, staleEdges_;  ///< their fresh boxes: in the stale grids ...
-  BoxGrid staleParticleGrid_, staleEdgeGrid_;
-  size_t staleParticlesFiled_ = 0, staleEdgesFiled_ = 0;  ///< ... up to here, the rest scanned
   std::vector<int> incidentStart_, incident_;  ///< edges of each particle (compressed rows)
 };
 
