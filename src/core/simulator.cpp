@@ -2,6 +2,9 @@
 
 #include "energy_watch.h"
 
+#include "core/collision/parallel_rows.h"
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -74,6 +77,23 @@ std::string blameNonFinite(const Scene& scene, const State& start, const State& 
          shortNumber(largest) + "): a smaller dt or a weaker force may help";
 }
 
+/// to = from, by ranges of particles on `threads` (the positions and velocities are large).
+void copyState(const State& from, State& to, int threads) {
+  if (from.x.size() != from.v.size() || from.x.size() % 2 != 0) {  // malformed: checked later
+    to = from;
+    return;
+  }
+  to.time = from.time;  // State's four members
+  to.step = from.step;
+  to.x.resize(from.x.size());
+  to.v.resize(from.v.size());
+  forRowRanges(from.numParticles(), threads, [&](int, int first, int end) {
+    const long k = 2L * first, count = 2L * (end - first);
+    to.x.segment(k, count) = from.x.segment(k, count);
+    to.v.segment(k, count) = from.v.segment(k, count);
+  });
+}
+
 /// Equal, or both NaN (a hand-built scene's NaN setting is the same setting).
 bool same(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
 
@@ -98,7 +118,7 @@ Status Simulator::step(const Scene& scene, State& state, StepObserver* observer)
   const StepTimer stepTimer(timing_, stats_.total);
 
   // 1. Predict: the integrator moves every particle as if nothing collided.
-  start_ = state;
+  copyState(state, start_, forces_.threads());
   {
     const StepTimer timer(timing_, stats_.integrate);
     const Status s = integrator_->step(scene, state, dt, forces_);
@@ -117,7 +137,7 @@ Status Simulator::step(const Scene& scene, State& state, StepObserver* observer)
   // 4. Verify: a non-finite state or an energy blow-up is reported, never carried on.
   state.step = stepNumber;
   state.time = start_.time + dt;
-  if (Status s = checkFinite(state); !s)
+  if (Status s = checkFinite(state, forces_.threads()); !s)
     return failure(s.message() + blameNonFinite(scene, start_, state, predictionFinite, collision_->keyword));
   if (Status s = energyWatch_->check(scene, start_, state, forces_); !s) return failure(s.message());
   return Status::ok();
@@ -130,9 +150,17 @@ std::vector<Violation> Simulator::unresolved(const Scene& scene, const State& st
 
 double Simulator::energyGrowth() const { return energyWatch_->largestGrowth(); }
 
-Status checkFinite(const State& state) {
-  if (state.x.allFinite() && state.v.allFinite()) return Status::ok();
-  for (int i = 0; i < state.numParticles(); ++i) {
+Status checkFinite(const State& state, int threads) {
+  const int n = state.numParticles();
+  if (state.x.size() == state.v.size() && state.x.size() == 2L * n) {
+    std::vector<char> finite(static_cast<size_t>(rowRangesFor(n, threads)), 1);
+    forRowRanges(n, threads, [&](int range, int first, int end) {
+      const long k = 2L * first, count = 2L * (end - first);
+      finite[range] = state.x.segment(k, count).allFinite() && state.v.segment(k, count).allFinite();
+    });
+    if (std::all_of(finite.begin(), finite.end(), [](char f) { return f != 0; })) return Status::ok();
+  }
+  for (int i = 0; 2L * i + 1 < std::min(state.x.size(), state.v.size()); ++i) {
     const bool badX = !at(state.x, i).allFinite(), badV = !at(state.v, i).allFinite();
     if (!badX && !badV) continue;
     std::ostringstream msg;

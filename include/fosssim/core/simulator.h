@@ -81,6 +81,7 @@ class Simulator {
 };
 
 /// Checks that every position and velocity is finite; otherwise names the first bad particle.
-Status checkFinite(const State& state);
+/// `threads`: ranges of particles checked at once (the same answer for any count).
+Status checkFinite(const State& state, int threads = 1);
 
 }  // namespace fosssim
