@@ -187,6 +187,38 @@ TEST(ContactProjector, FrozenBodiesKeepTheirVelocityAndChangesAreListedOnce) {
   EXPECT_GE(compared, 120);  // 152 of 300 here; others infeasible or out of budget
 }
 
+// Freezing is a state, not an action: freezing a body again at the same velocity (a rigid zone
+// moved again, whose members are frozen each time) changes nothing, before or after rows that
+// name it were added, and freezing it again at another velocity is freezing it there.
+TEST(ContactProjector, FreezingAgainAtTheSameVelocityChangesNothing) {
+  std::mt19937 rng(778);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 100; ++trial) {
+    const Zone z = randomZone(rng), more = randomZone(rng);
+    const int b = std::uniform_int_distribution<int>(1, static_cast<int>(z.v.size()) - 1)(rng);
+    const Vec2 frozen(u(rng), u(rng)), moved(u(rng), u(rng));
+    ContactProjector once, twice;
+    for (ContactProjector* cp : {&once, &twice}) {
+      addBodies(*cp, z);
+      for (const ConstraintRow& r : z.rows) cp->addRow(r);
+      cp->freeze(b, frozen);
+      if (cp == &twice) cp->freeze(b, frozen);
+      for (ConstraintRow r : more.rows) {
+        r.body[0] = b;
+        for (int m = 1; m < r.count; ++m) r.body[m] = (b + m) % static_cast<int>(z.v.size());
+        cp->addRow(r);
+      }
+      if (cp == &twice) cp->freeze(b, frozen);
+      cp->solve(speedScale(z.v) + 1.0, kTol, kFrozenBudget);
+      cp->freeze(b, moved);
+      cp->solve(speedScale(z.v) + 1.0, kTol, kFrozenBudget);
+    }
+    EXPECT_EQ(twice.velocity(b), moved) << "trial " << trial;
+    for (size_t c = 0; c < z.v.size(); ++c)
+      EXPECT_EQ(twice.velocity(static_cast<int>(c)), once.velocity(static_cast<int>(c))) << "trial " << trial;
+  }
+}
+
 // A row may name a body twice (an edge whose ends are one particle acts as a pair contact); after
 // freezing the row's other body it must still stop the approach exactly like the pair row does.
 TEST(ContactProjector, FreezeKeepsARowThatNamesABodyTwiceExact) {
