@@ -269,7 +269,7 @@ void define(CLI::App& app, Options& o) {
                  "timed runs per scene and size, 1 to 1000 (default 3 below 10^5 particles, 1 from there)")
       ->option_text("R")
       ->check(cli::integerIn(1, 1000));
-  app.add_option("--threads", o.threads, "threads for collision detection, 1 to 1024 (default 1)")
+  app.add_option("--threads", o.threads, "threads for the per-particle phases (forces, integration, broad phase, detection, sleeping), 1 to 1024 (default 1)")
       ->option_text("T")
       ->check(cli::integerIn(1, 1024));
   app.add_option("--seed", o.seed, "seed of the scenes' jitter and random velocities, 0 to 2^31 - 1 (default 1)")

@@ -143,7 +143,8 @@ void define(CLI::App& app, Options& o, Given& g) {
        "after every step check that no pair is left colliding and the state is finite; report violations and "
        "exit 1 when there was any");
   value("--threads", g.threads, "N", run,
-        "threads for collision detection and the penalty force, 1 to " + std::to_string(kMaxThreads) +
+        "threads for the per-particle phases (forces, integration, broad phase, detection, sleeping), 1 to " +
+            std::to_string(kMaxThreads) +
             " (default 1); the results are the same for every N (scenes of a few thousand particles and up use "
             "them)");
   value("--stats", g.stats, "FILE", run,
