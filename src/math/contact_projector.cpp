@@ -98,14 +98,18 @@ bool ContactProjector::solve(double speedScale, double tolerance, long maxUpdate
     for (int m = 0; m < row.r.count; ++m) w += row.r.coef[m].dot(body_[row.r.body[m]].v);
     const double threshold = tolerance * row.norm * speedScale;
     if (row.diag <= 0.0) continue;  // every body immovable: nothing to move (a violation stays)
-    if (std::fabs(std::fmin(row.diag * row.lambda, w)) <= threshold) continue;
+    // fmin and fmax written out (glibc's own definitions, NaN included): the calls were not
+    // inlined, and this loop is the failsafe's.
+    const double reached = row.diag * row.lambda <= w || std::isnan(w) ? row.diag * row.lambda : w;
+    if (std::fabs(reached) <= threshold) continue;
     if (++updates > maxUpdates) {
+      for (size_t q = head_; q < work_.size(); ++q) row_[work_[q]].queued = false;  // the rows still queued
       work_.clear();
       head_ = 0;
-      for (Row& r : row_) r.queued = false;
       return false;
     }
-    apply(k, std::fmax(0.0, row.lambda - w / row.diag));
+    const double lambda = row.lambda - w / row.diag;
+    apply(k, 0.0 >= lambda || std::isnan(lambda) ? 0.0 : lambda);
   }
   work_.clear();
   head_ = 0;
