@@ -64,7 +64,7 @@ class BoxGrid {
 
   /// Calls visit(id) exactly once for every indexed box that overlaps b (its latest box).
   template <class Visit>
-  void forEachOverlap(const Box& b, Visit&& visit) const;
+  void forEachOverlap(const Box& query, Visit&& visit) const;
 
   int size() const { return count_; }
   /// Bytes held (capacity), for the benchmark's memory figures.
@@ -109,29 +109,38 @@ class BoxGrid {
 };
 
 template <class Visit>
-void BoxGrid::forEachOverlap(const Box& b, Visit&& visit) const {
+void BoxGrid::forEachOverlap(const Box& query, Visit&& visit) const {
+  // The query and the arrays in locals: visit() writes memory (a caller's vector) that the
+  // compiler must otherwise assume aliases them, and would reload them for every entry.
+  const Box b = query;
+  const Box* boxes = boxes_.data();
+  const int* ids = ids_.data();
+  const int* live = live_.data();
   // With insertions, a sorted entry counts only while its id has not been re-filed; an inserted
   // one only while it is its id's latest.
   const bool refiled = !dynamic_.empty();
   for (size_t k = 0; k < largeIds_.size(); ++k)
-    if (overlap(b, largeBoxes_[k]) && (!refiled || live_[largeIds_[k]] < 0)) visit(largeIds_[k]);
+    if (overlap(b, largeBoxes_[k]) && (!refiled || live[largeIds_[k]] < 0)) visit(largeIds_[k]);
   const int x0 = column(b.x0 - cell_), x1 = column(b.x1), y0 = row(b.y0 - cell_), y1 = row(b.y1);
   if (!boxes_.empty()) {
+    const int* start = start_.data();
+    const int columns = columns_;
     for (int y = y0; y <= y1; ++y) {
-      const int* first = &start_[static_cast<size_t>(y) * columns_];
+      const int* first = start + static_cast<size_t>(y) * columns;
       for (int e = first[x0], end = first[x1 + 1]; e < end; ++e)
-        if (overlap(b, boxes_[e]) && (!refiled || live_[ids_[e]] < 0)) visit(ids_[e]);
+        if (overlap(b, boxes[e]) && (!refiled || live[ids[e]] < 0)) visit(ids[e]);
     }
   }
   if (!refiled) return;
+  const Inserted* dynamic = dynamic_.data();
   auto visitLive = [&](int k) {
-    const Inserted& d = dynamic_[k];
-    if (live_[d.id] == k && overlap(b, d.box)) visit(d.id);
+    if (live[dynamic[k].id] == k && overlap(b, dynamic[k].box)) visit(dynamic[k].id);
   };
   for (int k : dynamicLarge_) visitLive(k);
+  const int* head = head_.data();
   for (int y = y0; y <= y1; ++y)
     for (int x = x0; x <= x1; ++x)
-      for (int k = head_[static_cast<size_t>(y) * columns_ + x]; k >= 0; k = dynamic_[k].next) visitLive(k);
+      for (int k = head[static_cast<size_t>(y) * columns_ + x]; k >= 0; k = dynamic[k].next) visitLive(k);
 }
 
 }  // namespace fosssim
