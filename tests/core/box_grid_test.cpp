@@ -1,9 +1,8 @@
 // The broad phase's grid against brute force: every indexed box that overlaps a query box is
 // visited exactly once, nothing else is, for boxes of mixed sizes (some larger than the cell
-// limit, some far-away outliers that make the grid trim its range), for a subset given by ids,
-// for every thread count (the threaded build files the boxes band by band and must produce
-// the same answers as the sequential one), and after boxes are re-filed (insert) any number of
-// times: only each box's latest counts.
+// limit, some far-away outliers that make the grid trim its range), for every thread count (the
+// threaded build files the boxes band by band and must give the same answers as the sequential
+// one), and after boxes are re-filed (insert) any number of times: only each box's latest counts.
 #include "core/collision/box_grid.h"
 
 #include <gtest/gtest.h>
@@ -41,28 +40,22 @@ TEST(BoxGrid, QueriesEqualBruteForceForAnyThreadCount) {
   std::mt19937 rng(7);
   const int n = 20000;  // several thousand boxes per thread: the threaded filing really runs
   const std::vector<Box> boxes = randomBoxes(rng, n);
-  std::vector<int> ids;  // every third box, as the stale grids index a subset
-  for (int k = 0; k < n; k += 3) ids.push_back(k);
-  for (const bool subset : {false, true}) {
-    BoxGrid grids[3];
-    for (int t = 0; t < 3; ++t)
-      grids[t].build(boxes.data(), subset ? static_cast<int>(ids.size()) : n, subset ? ids.data() : nullptr, 0, t + 1);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    for (int q = 0; q < 400; ++q) {
-      const double x = 110 * unit(rng) - 5, y = 70 * unit(rng) - 5, s = q % 10 == 0 ? 10.0 : 0.5;
-      const Box query{x, y, x + s * unit(rng), y + s * unit(rng)};
-      std::vector<int> expected;
-      for (int k = 0; k < n; ++k)
-        if ((!subset || k % 3 == 0) && overlap(query, boxes[k])) expected.push_back(k);
-      for (int t = 0; t < 3; ++t) ASSERT_EQ(visited(grids[t], query), expected) << "threads " << t + 1;
-    }
-    // The outliers are found too (filed in the border cells).
-    const Box far{1e6, -1e6, 1e6 + 101, -1e6 + 61};
+  BoxGrid grids[3];
+  for (int t = 0; t < 3; ++t) grids[t].build(boxes.data(), n, t + 1);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int q = 0; q < 400; ++q) {
+    const double x = 110 * unit(rng) - 5, y = 70 * unit(rng) - 5, s = q % 10 == 0 ? 10.0 : 0.5;
+    const Box query{x, y, x + s * unit(rng), y + s * unit(rng)};
     std::vector<int> expected;
-    for (int k = 0; k < n; k += 501)
-      if (!subset || k % 3 == 0) expected.push_back(k);
-    for (int t = 0; t < 3; ++t) EXPECT_EQ(visited(grids[t], far), expected);
+    for (int k = 0; k < n; ++k)
+      if (overlap(query, boxes[k])) expected.push_back(k);
+    for (int t = 0; t < 3; ++t) ASSERT_EQ(visited(grids[t], query), expected) << "threads " << t + 1;
   }
+  // The outliers are found too (filed in the border cells).
+  const Box far{1e6, -1e6, 1e6 + 101, -1e6 + 61};
+  std::vector<int> expected;
+  for (int k = 0; k < n; k += 501) expected.push_back(k);
+  for (int t = 0; t < 3; ++t) EXPECT_EQ(visited(grids[t], far), expected);
 }
 
 TEST(BoxGrid, ReFiledBoxesReplaceTheirEarlierOnes) {
@@ -96,12 +89,12 @@ TEST(BoxGrid, ReFiledBoxesReplaceTheirEarlierOnes) {
 
 TEST(BoxGrid, EmptyAndAllLargeIndexes) {
   BoxGrid grid;
-  grid.build(nullptr, 0, nullptr, 0, 2);
+  grid.build(nullptr, 0, 2);
   EXPECT_TRUE(visited(grid, Box{-1, -1, 1, 1}).empty());
   // Boxes whose extents are all infinite go to the large list and are still found.
   const double inf = std::numeric_limits<double>::infinity();
   const std::vector<Box> boxes = {Box{-inf, 0, inf, 1}, Box{0, -inf, 1, inf}};
-  grid.build(boxes.data(), 2, nullptr, 0, 2);
+  grid.build(boxes.data(), 2, 2);
   EXPECT_EQ(visited(grid, Box{5, 0.5, 6, 0.6}), std::vector<int>({0}));
   EXPECT_EQ(visited(grid, Box{0.5, 0.5, 0.6, 0.6}), std::vector<int>({0, 1}));
 }

@@ -25,7 +25,6 @@ double extent(const Box& b) { return std::max(b.x1 - b.x0, b.y1 - b.y0); }
 
 void BoxGrid::clear() {
   count_ = 0;
-  idLimit_ = 0;
   start_.assign(2, 0);
   columns_ = rows_ = 1;
   boxes_.clear();
@@ -46,7 +45,7 @@ void BoxGrid::forgetInserted() {
 }
 
 void BoxGrid::insert(int id, const Box& b) {
-  if (live_.empty()) live_.assign(static_cast<size_t>(std::max(idLimit_, id + 1)), -1);  // first since the build
+  if (live_.empty()) live_.assign(static_cast<size_t>(std::max(count_, id + 1)), -1);  // first since the build
   if (id >= static_cast<int>(live_.size())) live_.resize(static_cast<size_t>(id) + 1, -1);
   const size_t cells = static_cast<size_t>(columns_) * rows_;
   if (head_.size() < cells) head_.resize(cells, -1);
@@ -63,10 +62,10 @@ void BoxGrid::insert(int id, const Box& b) {
   head_[c] = k;
 }
 
-double BoxGrid::chooseCell(const Box* boxes, int count, const int* ids) {
+double BoxGrid::chooseCell(const Box* boxes, int count) {
   // The largest extent among the boxes no larger than kLargeFactor medians. The median is that
   // of an evenly spaced sample (the grid affects speed only, never results).
-  auto extentOf = [&](int k) { return extent(boxes[ids ? ids[k] : k]); };
+  auto extentOf = [&](int k) { return extent(boxes[k]); };
   scratch_.clear();
   const int stride = std::max(1, count / static_cast<int>(kMedianSample));
   for (int k = 0; k < count; k += stride)
@@ -86,7 +85,7 @@ double BoxGrid::chooseCell(const Box* boxes, int count, const int* ids) {
   return largest > 0 ? largest / kExtentSlack : 1.0;
 }
 
-void BoxGrid::build(const Box* boxes, int count, const int* ids, double imposedCell, int threads) {
+void BoxGrid::build(const Box* boxes, int count, int threads) {
   // As clear(), but boxes_ and ids_ keep their storage: they are refilled below.
   count_ = count;
   start_.assign(2, 0);
@@ -94,13 +93,7 @@ void BoxGrid::build(const Box* boxes, int count, const int* ids, double imposedC
   largeBoxes_.clear();
   largeIds_.clear();
   forgetInserted();
-  auto idOf = [&](int k) { return ids ? ids[k] : k; };
-  idLimit_ = 0;
-  if (ids)
-    for (int k = 0; k < count; ++k) idLimit_ = std::max(idLimit_, ids[k] + 1);
-  else
-    idLimit_ = count;
-  double cell = imposedCell > 0 ? imposedCell : chooseCell(boxes, count, ids);
+  double cell = chooseCell(boxes, count);
   cell_ = cell;
   inverseCell_ = 1.0 / cell;
   // Which boxes are ordinary, and the bounding box of their lower corners.
@@ -115,7 +108,7 @@ void BoxGrid::build(const Box* boxes, int count, const int* ids, double imposedC
   forRowRanges(count, threads, [&](int range, int first, int end) {
     Corners c;
     for (int k = first; k < end; ++k) {
-      const Box& b = boxes[idOf(k)];
+      const Box& b = boxes[k];
       const bool large = !(b.x1 - b.x0 <= kExtentSlack * cell && b.y1 - b.y0 <= kExtentSlack * cell);
       home_[k] = large ? -1 : 0;
       if (large) {
@@ -142,7 +135,7 @@ void BoxGrid::build(const Box* boxes, int count, const int* ids, double imposedC
     ordinary += c.ordinary;
   }
   for (int k = 0; large > 0 && k < count; ++k)
-    if (home_[k] < 0) largeBoxes_.push_back(boxes[idOf(k)]), largeIds_.push_back(idOf(k));
+    if (home_[k] < 0) largeBoxes_.push_back(boxes[k]), largeIds_.push_back(k);
   if (ordinary == 0) {
     boxes_.clear();
     ids_.clear();
@@ -157,7 +150,7 @@ void BoxGrid::build(const Box* boxes, int count, const int* ids, double imposedC
     auto trim = [&](bool yAxis, double& lo, double& hi) {
       scratch_.clear();
       for (int k = 0; k < count; k += stride)
-        if (home_[k] >= 0) scratch_.push_back(yAxis ? boxes[idOf(k)].y0 : boxes[idOf(k)].x0);
+        if (home_[k] >= 0) scratch_.push_back(yAxis ? boxes[k].y0 : boxes[k].x0);
       if (scratch_.empty()) return;
       const long skip = static_cast<long>(kTrimmedFraction * static_cast<double>(scratch_.size()));
       std::nth_element(scratch_.begin(), scratch_.begin() + skip, scratch_.end());
@@ -186,7 +179,7 @@ void BoxGrid::build(const Box* boxes, int count, const int* ids, double imposedC
   cursor_.resize(cells);
   forRowRanges(count, threads, [&](int, int first, int end) {
     for (int k = first; k < end; ++k)
-      if (home_[k] >= 0) home_[k] = row(boxes[idOf(k)].y0) * columns_ + column(boxes[idOf(k)].x0);
+      if (home_[k] >= 0) home_[k] = row(boxes[k].y0) * columns_ + column(boxes[k].x0);
   });
   const int bands = rowRangesFor(count, threads);
   auto band = [&](int t) { return cells * static_cast<size_t>(t) / static_cast<size_t>(bands); };
@@ -215,8 +208,8 @@ void BoxGrid::build(const Box* boxes, int count, const int* ids, double imposedC
     for (int k = 0; k < count; ++k) {
       if (!inBand(k, lo, hi)) continue;
       const int e = cursor_[home_[k]]++;
-      boxes_[e] = boxes[idOf(k)];
-      ids_[e] = idOf(k);
+      boxes_[e] = boxes[k];
+      ids_[e] = k;
     }
   });
 }

@@ -46,13 +46,10 @@ class BoxGrid {
   /// At most about this many cells per box.
   static constexpr double kCellsPerBox = 2.0;
 
-  /// Indexes the boxes boxes[id] for id in ids[0, count) (ids == nullptr: id = 0 .. count-1).
-  /// Boxes are copied; they must not contain NaN (callers check every pair for non-finite
-  /// states). `cell` > 0 imposes the cell size (a small grid of boxes like another grid's saves
-  /// choosing it); 0 chooses it from the boxes. `threads`: the filing's (the same grid for any).
-  void build(const Box* boxes, int count, const int* ids = nullptr, double cell = 0, int threads = 1);
-  /// The cell size of the last build.
-  double cellSize() const { return cell_; }
+  /// Indexes the boxes boxes[0, count) (box id k is boxes[k]). Boxes are copied; they must not
+  /// contain NaN (callers check every pair for non-finite states). `threads`: the filing's (the
+  /// same grid for any count).
+  void build(const Box* boxes, int count, int threads = 1);
   /// Empty index.
   void clear();
 
@@ -71,7 +68,7 @@ class BoxGrid {
   size_t memoryBytes() const;
 
  private:
-  double chooseCell(const Box* boxes, int count, const int* ids);
+  double chooseCell(const Box* boxes, int count);
   void forgetInserted();
   int column(double x) const { return clamp((x - originX_) * inverseCell_, columns_); }
   int row(double y) const { return clamp((y - originY_) * inverseCell_, rows_); }
@@ -83,7 +80,6 @@ class BoxGrid {
   }
 
   int count_ = 0;
-  int idLimit_ = 0;  ///< largest id indexed, plus one
   double originX_ = 0, originY_ = 0, cell_ = 1, inverseCell_ = 1;
   int columns_ = 1, rows_ = 1;
   std::vector<int> start_;     ///< per cell (row-major), its first entry; one more at the end

@@ -102,9 +102,9 @@ void PairCandidates::build(const Scene& scene, const VecX& qs, const VecX& qe, d
 }
 
 void PairCandidates::index() {
-  particleGrid_.build(particleBoxes_.data(), scene_->numParticles(), nullptr, 0, threads_);
+  particleGrid_.build(particleBoxes_.data(), scene_->numParticles(), threads_);
   if (!scene_->edges.empty())
-    edgeGrid_.build(edgeBoxes_.data(), static_cast<int>(scene_->edges.size()), nullptr, 0, threads_);
+    edgeGrid_.build(edgeBoxes_.data(), static_cast<int>(scene_->edges.size()), threads_);
 }
 
 bool PairCandidates::withinScale(int p) const {
