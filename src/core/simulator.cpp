@@ -77,21 +77,12 @@ std::string blameNonFinite(const Scene& scene, const State& start, const State& 
          shortNumber(largest) + "): a smaller dt or a weaker force may help";
 }
 
-/// to = from, by ranges of particles on `threads` (the positions and velocities are large).
+/// to = from, the positions and velocities by ranges of particles on `threads`.
 void copyState(const State& from, State& to, int threads) {
-  if (from.x.size() != from.v.size() || from.x.size() % 2 != 0) {  // malformed: checked later
-    to = from;
-    return;
-  }
   to.time = from.time;  // State's four members
   to.step = from.step;
-  to.x.resize(from.x.size());
-  to.v.resize(from.v.size());
-  forRowRanges(from.numParticles(), threads, [&](int, int first, int end) {
-    const long k = 2L * first, count = 2L * (end - first);
-    to.x.segment(k, count) = from.x.segment(k, count);
-    to.v.segment(k, count) = from.v.segment(k, count);
-  });
+  copyByParticles(from.x, to.x, threads);
+  copyByParticles(from.v, to.v, threads);
 }
 
 /// Equal, or both NaN (a hand-built scene's NaN setting is the same setting).

@@ -27,6 +27,21 @@ std::vector<Box> randomBoxes(std::mt19937& rng, int n) {
   return boxes;
 }
 
+/// The ids of the boxes that overlap q, by checking every box.
+std::vector<int> bruteForce(const std::vector<Box>& boxes, const Box& q) {
+  std::vector<int> out;
+  for (int k = 0; k < static_cast<int>(boxes.size()); ++k)
+    if (overlap(q, boxes[k])) out.push_back(k);
+  return out;
+}
+
+/// A random query box in the boxes' region, every tenth one large.
+Box randomQuery(std::mt19937& rng, int q) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double x = 110 * unit(rng) - 5, y = 70 * unit(rng) - 5, s = q % 10 == 0 ? 10.0 : 0.5;
+  return Box{x, y, x + s * unit(rng), y + s * unit(rng)};
+}
+
 /// The ids visited for query q, sorted, failing on a repeat.
 std::vector<int> visited(const BoxGrid& grid, const Box& q) {
   std::vector<int> out;
@@ -42,13 +57,9 @@ TEST(BoxGrid, QueriesEqualBruteForceForAnyThreadCount) {
   const std::vector<Box> boxes = randomBoxes(rng, n);
   BoxGrid grids[3];
   for (int t = 0; t < 3; ++t) grids[t].build(boxes.data(), n, t + 1);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (int q = 0; q < 400; ++q) {
-    const double x = 110 * unit(rng) - 5, y = 70 * unit(rng) - 5, s = q % 10 == 0 ? 10.0 : 0.5;
-    const Box query{x, y, x + s * unit(rng), y + s * unit(rng)};
-    std::vector<int> expected;
-    for (int k = 0; k < n; ++k)
-      if (overlap(query, boxes[k])) expected.push_back(k);
+    const Box query = randomQuery(rng, q);
+    const std::vector<int> expected = bruteForce(boxes, query);
     for (int t = 0; t < 3; ++t) ASSERT_EQ(visited(grids[t], query), expected) << "threads " << t + 1;
   }
   // The outliers are found too (filed in the border cells).
@@ -76,12 +87,8 @@ TEST(BoxGrid, ReFiledBoxesReplaceTheirEarlierOnes) {
       grid.insert(id, boxes[id]);
     }
     for (int q = 0; q < 200; ++q) {
-      const double x = 110 * unit(rng) - 5, y = 70 * unit(rng) - 5, s = q % 10 == 0 ? 10.0 : 0.5;
-      const Box query{x, y, x + s * unit(rng), y + s * unit(rng)};
-      std::vector<int> expected;
-      for (int k = 0; k < n; ++k)
-        if (overlap(query, boxes[k])) expected.push_back(k);
-      ASSERT_EQ(visited(grid, query), expected) << "round " << round;
+      const Box query = randomQuery(rng, q);
+      ASSERT_EQ(visited(grid, query), bruteForce(boxes, query)) << "round " << round;
     }
     if (round == 3) grid.build(boxes.data(), n);  // a rebuild forgets the insertions
   }

@@ -23,17 +23,6 @@ double extent(const Box& b) { return std::max(b.x1 - b.x0, b.y1 - b.y0); }
 
 }  // namespace
 
-void BoxGrid::clear() {
-  count_ = 0;
-  start_.assign(2, 0);
-  columns_ = rows_ = 1;
-  boxes_.clear();
-  ids_.clear();
-  largeBoxes_.clear();
-  largeIds_.clear();
-  forgetInserted();
-}
-
 // Every head_ entry is -1 again (only the touched ones were set), so head_ can simply grow to
 // the next build's cell count.
 void BoxGrid::forgetInserted() {
@@ -86,7 +75,7 @@ double BoxGrid::chooseCell(const Box* boxes, int count) {
 }
 
 void BoxGrid::build(const Box* boxes, int count, int threads) {
-  // As clear(), but boxes_ and ids_ keep their storage: they are refilled below.
+  // boxes_ and ids_ keep their storage: they are refilled below.
   count_ = count;
   start_.assign(2, 0);
   columns_ = rows_ = 1;

@@ -50,8 +50,6 @@ class BoxGrid {
   /// contain NaN (callers check every pair for non-finite states). `threads`: the filing's (the
   /// same grid for any count).
   void build(const Box* boxes, int count, int threads = 1);
-  /// Empty index.
-  void clear();
 
   /// Files box `id` anew with box b (id as indexed by the build; its earlier box, sorted or
   /// inserted, no longer counts). b must not contain NaN.

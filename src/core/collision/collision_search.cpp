@@ -95,21 +95,8 @@ void CollisionSearch::detectAll(const Scene& scene, const VecX& qs, const VecX& 
         if (query(scene, qs, qe, key, hit, w.stats)) w.out.push_back(hit);
     }
   });
-  double broad = 0, narrow = 0;
-  for (int k = 0; k < ranges; ++k) {
-    const Worker& w = workers_[k];
-    out.insert(out.end(), w.out.begin(), w.out.end());
-    ctx.stats->candidatePairs += w.stats.candidatePairs;
-    for (int kind = 0; kind < 3; ++kind) ctx.stats->queries[kind] += w.stats.queries[kind];
-    broad += w.stats.broadPhase;
-    narrow += w.stats.narrowPhase;
-  }
-  if (ctx.timing && broad + narrow > 0) {
-    // Wall time, shared out in the proportion of the threads' own broad and narrow times.
-    const double wall = seconds(start, std::chrono::steady_clock::now());
-    ctx.stats->broadPhase += wall * broad / (broad + narrow);
-    ctx.stats->narrowPhase += wall * narrow / (broad + narrow);
-  }
+  for (int k = 0; k < ranges; ++k) out.insert(out.end(), workers_[k].out.begin(), workers_[k].out.end());
+  joinRangeStats(ranges, [&](int k) -> const StepStats& { return workers_[k].stats; }, start, ctx.timing, *ctx.stats);
 }
 
 void CollisionSearch::detectChanged(const Scene& scene, const VecX& qs, const VecX& qe, StepContext& ctx,

@@ -24,6 +24,7 @@
 
 #include "fosssim/core/collision_handler.h"
 
+#include <chrono>
 #include <functional>
 #include <vector>
 
@@ -87,6 +88,26 @@ class CollisionSearch {
   };
   std::vector<Worker> workers_;
 };
+
+/// Adds the counts of a detection's row ranges (range k's in stats(k)) to `total`; with timing,
+/// the wall time since `start` is shared out between the broad and the narrow phase in the
+/// proportion of the ranges' own times (with threads, their sum exceeds the wall time).
+template <class RangeStats>
+void joinRangeStats(int ranges, RangeStats&& stats, std::chrono::steady_clock::time_point start, bool timing,
+                    StepStats& total) {
+  double broad = 0, narrow = 0;
+  for (int k = 0; k < ranges; ++k) {
+    const StepStats& range = stats(k);
+    total.candidatePairs += range.candidatePairs;
+    for (int kind = 0; kind < 3; ++kind) total.queries[kind] += range.queries[kind];
+    broad += range.broadPhase;
+    narrow += range.narrowPhase;
+  }
+  if (!timing || broad + narrow <= 0) return;
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  total.broadPhase += wall * broad / (broad + narrow);
+  total.narrowPhase += wall * narrow / (broad + narrow);
+}
 
 inline uint64_t pairKey(const Collision& c) { return pairKey(c.i, c.kind, c.j); }
 

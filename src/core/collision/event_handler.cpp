@@ -76,9 +76,7 @@ Status EventHandler::handle(const Scene& scene, const State& start, State& state
     changed_.clear();
   }
   // Finish: the end of every particle's last piece.
-  forRowRanges(n, threads_, [&](int, int first, int end) {
-    state.x.segment(2L * first, 2L * (end - first)) = motion_.end().segment(2L * first, 2L * (end - first));
-  });
+  copyByParticles(motion_.end(), state.x, threads_);
   sleepers_.end(scene, start, state);
   ctx.stats->asleep = sleepers_.sleeping();
   zones_.sizes(*ctx.stats);
@@ -88,7 +86,7 @@ Status EventHandler::handle(const Scene& scene, const State& start, State& state
 
 // Rows are collected in blocks of candidates and then queried: two clock reads per block, not per
 // particle (with timing on, per-row timers cost more than the sparse scenes' narrow phase). With
-// threads, each range's broad and narrow times share out the wall time, as in CollisionSearch.
+// threads, each range's broad and narrow times share out the wall time (joinRangeStats).
 Status EventHandler::detectAll(const Scene& scene, StepContext& ctx) {
   const int n = scene.numParticles();
   const int ranges = rowRangesFor(n, threads_);
@@ -111,21 +109,11 @@ Status EventHandler::detectAll(const Scene& scene, StepContext& ctx) {
         if (w.status = query(scene, key, 0.0, w.stats, w.events); !w.status) break;
     }
   });
-  double broad = 0, narrow = 0;
   for (int k = 0; k < ranges; ++k) {
-    Worker& w = workers_[k];
-    if (!w.status) return w.status;  // the first range's failure: the first in pair order
-    pushEvents(w.events);
-    ctx.stats->candidatePairs += w.stats.candidatePairs;
-    for (int kind = 0; kind < 3; ++kind) ctx.stats->queries[kind] += w.stats.queries[kind];
-    broad += w.stats.broadPhase;
-    narrow += w.stats.narrowPhase;
+    if (!workers_[k].status) return workers_[k].status;  // the first range's failure: the first in pair order
+    pushEvents(workers_[k].events);
   }
-  if (ctx.timing && broad + narrow > 0) {
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    ctx.stats->broadPhase += wall * broad / (broad + narrow);
-    ctx.stats->narrowPhase += wall * narrow / (broad + narrow);
-  }
+  joinRangeStats(ranges, [&](int k) -> const StepStats& { return workers_[k].stats; }, start, ctx.timing, *ctx.stats);
   return Status::ok();
 }
 
@@ -233,10 +221,10 @@ void EventHandler::wakeNearMoving(const Scene& scene, StepStats& stats) {
   int movers = 0;
   for (int p = 0; p < n; ++p) movers += moving(p);
   const bool fromSleepers = sleepers_.sleeping() < movers;
-  movers_.clear();
+  wakeFrom_.clear();
   for (int p = 0; p < n; ++p)
-    if (fromSleepers ? sleepers_.asleep(p) : moving(p)) movers_.push_back(p);
-  for (int p : movers_) {
+    if (fromSleepers ? sleepers_.asleep(p) : moving(p)) wakeFrom_.push_back(p);
+  for (int p : wakeFrom_) {
     keys_.clear();
     candidates_.pairsOf(p, keys_);  // candidates, not neighbours: small scenes list every pair
     for (uint64_t key : keys_) {

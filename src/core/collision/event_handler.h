@@ -105,9 +105,8 @@ class EventHandler final : public CollisionHandler {
   std::vector<Event> found_;      ///< scratch: detectChanged's events before they join the heap
   std::vector<int> events_;       ///< N: impulse events taken by each particle in this step
   std::vector<int> changed_;      ///< particles whose path the last response bent
-  std::vector<int> movers_;       ///< scratch: the side wakeNearMoving searches from
+  std::vector<int> wakeFrom_;     ///< scratch: the sleepers or the movers wakeNearMoving searches from
   std::vector<uint64_t> keys_;    ///< scratch: pairs to query
-  std::vector<int> row_;          ///< scratch: one row of candidates
 };
 
 }  // namespace fosssim

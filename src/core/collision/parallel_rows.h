@@ -7,6 +7,8 @@
 // runs the ranges (without it, or for small n, one range on the calling thread).
 #pragma once
 
+#include "fosssim/core/types.h"
+
 #include <algorithm>
 
 #ifdef _OPENMP
@@ -44,6 +46,16 @@ void forRowRanges(int n, int threads, Body&& body) {
     body(static_cast<int>(k), static_cast<int>(n * k / count), static_cast<int>(n * (k + 1) / count));
   }
 #endif
+}
+
+/// to = from, for a vector of two entries per particle (positions, velocities, 2N), by ranges of
+/// particles on `threads` (large copies are a per-step cost of their own).
+inline void copyByParticles(const VecX& from, VecX& to, int threads) {
+  to.resize(from.size());
+  forRowRanges(static_cast<int>(from.size() / 2), threads, [&](int, int first, int end) {
+    to.segment(2L * first, 2L * (end - first)) = from.segment(2L * first, 2L * (end - first));
+  });
+  if (from.size() % 2 != 0) to[from.size() - 1] = from[from.size() - 1];
 }
 
 }  // namespace fosssim

@@ -43,7 +43,7 @@ void Sleepers::begin(const Scene& scene, const State& start, State& state, doubl
       // between steps (a script assigning positions or velocities, the grader's state): then it
       // wakes and takes the integrator's prediction like any particle.
       if (at(start.x, p) != at(rest_, p) || at(start.v, p) != Vec2::Zero()) {
-        asleep_[p] = 0, still_[p] = 0, ++woken[range];
+        asleep_[p] = 0, still_[p] = 0, ++woken[range];  // wake(), its count summed below
         continue;
       }
       at(state.x, p) = at(start.x, p);

@@ -19,7 +19,6 @@
 
 #include "fosssim/core/types.h"
 
-#include <algorithm>
 
 #include <cstdint>
 #include <vector>
@@ -39,17 +38,14 @@ class StepMotion {
   /// `threads` (plain copies and differences: the same for any count).
   void begin(const VecX& start, const VecX& end, int threads = 1) {
     const int n = static_cast<int>(start.size() / 2);
-    from_.resize(start.size());
-    end_.resize(start.size());
+    copyByParticles(start, from_, threads);
+    copyByParticles(end, end_, threads);
     rate_.resize(start.size());
-    t0_.resize(static_cast<size_t>(n));
     forRowRanges(n, threads, [&](int, int first, int last) {
-      const long k = 2L * first, count = 2L * (last - first);
-      from_.segment(k, count) = start.segment(k, count);
-      end_.segment(k, count) = end.segment(k, count);
-      rate_.segment(k, count) = end.segment(k, count) - start.segment(k, count);
-      std::fill(t0_.begin() + first, t0_.begin() + last, 0.0);
+      rate_.segment(2L * first, 2L * (last - first)) =
+          end.segment(2L * first, 2L * (last - first)) - start.segment(2L * first, 2L * (last - first));
     });
+    t0_.assign(static_cast<size_t>(n), 0.0);
     if (version_.size() != t0_.size()) version_.assign(t0_.size(), 0);
     breaks_.clear();
   }
