@@ -68,6 +68,9 @@ class EventHandler final : public CollisionHandler {
   /// Queries one pair over [T, 1]; a contact is appended to `out` as an event. Reads only.
   Status query(const Scene& scene, uint64_t key, double T, StepStats& stats, std::vector<Event>& out) const;
   void pushEvents(std::vector<Event>& events);
+  /// Whether detectChanged queries `key` from changed particle p: no lower particle of the pair
+  /// is in changed_ (which lists it too).
+  bool listsFrom(const Scene& scene, uint64_t key, int p) const;
   /// Solves, at time T, the zones that contacts of the instant T joined (each once).
   void solvePendingZones(const Scene& scene, double T, State& state, StepContext& ctx);
   bool stale(const Scene& scene, const Event& e) const;
@@ -107,6 +110,7 @@ class EventHandler final : public CollisionHandler {
   std::vector<int> changed_;      ///< particles whose path the last response bent
   std::vector<int> wakeFrom_;     ///< scratch: the sleepers or the movers wakeNearMoving searches from
   std::vector<uint64_t> keys_;    ///< scratch: pairs to query
+  std::vector<char> inChanged_;   ///< N: whether the particle is in changed_ (detectChanged's scratch, all 0 between)
 };
 
 }  // namespace fosssim
