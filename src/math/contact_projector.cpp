@@ -10,6 +10,7 @@ void ContactProjector::reset(int capacity) {
   for (const Body& b : body_) slot_[b.id] = -1;
   body_.clear();
   row_.clear();
+  queued_.clear();
   work_.clear();
   head_ = 0;
   changed_.clear();
@@ -27,6 +28,7 @@ void ContactProjector::addBody(int b, double inverseMass, const Vec2& v) {
 
 int ContactProjector::addRow(const ConstraintRow& row, double warmStart) {
   row_.emplace_back();
+  queued_.push_back(0);
   const int index = static_cast<int>(row_.size()) - 1;
   setRow(index, row);
   if (warmStart > 0.0) apply(index, warmStart);  // from 0
@@ -51,8 +53,8 @@ void ContactProjector::setRow(int index, const ConstraintRow& row) {
   k.diag = diagonal(k.r);
   k.norm = std::sqrt(normSquared);
   for (int m = 0; m < row.count; ++m) {
-    std::vector<int>& rows = body_[k.r.body[m]].rows;
-    if (std::find(rows.begin(), rows.end(), index) == rows.end()) rows.push_back(index);
+    Body& body = body_[k.r.body[m]];
+    if (!body.hasRow(index)) body.addRow(index);
   }
   queue(index);
 }
@@ -75,14 +77,15 @@ void ContactProjector::apply(int k, double lambda) {
 }
 
 void ContactProjector::queue(int k) {
-  if (row_[k].queued) return;
-  row_[k].queued = true;
+  if (queued_[k]) return;
+  queued_[k] = 1;
   work_.push_back(k);
 }
 
 void ContactProjector::queueRowsOf(int slot, int except) {
-  for (int k : body_[slot].rows)
+  body_[slot].forEachRow([&](int k) {
     if (k != except) queue(k);
+  });
 }
 
 // One Gauss-Seidel step on row k (ZoneProjector's, in velocity form): w = G_k v, then
@@ -93,7 +96,7 @@ bool ContactProjector::solve(double speedScale, double tolerance, long maxUpdate
   while (head_ < work_.size()) {
     const int k = work_[head_++];
     Row& row = row_[k];
-    row.queued = false;
+    queued_[k] = 0;
     double w = 0;
     for (int m = 0; m < row.r.count; ++m) w += row.r.coef[m].dot(body_[row.r.body[m]].v);
     const double threshold = tolerance * row.norm * speedScale;
@@ -103,7 +106,7 @@ bool ContactProjector::solve(double speedScale, double tolerance, long maxUpdate
     const double reached = row.diag * row.lambda <= w || std::isnan(w) ? row.diag * row.lambda : w;
     if (std::fabs(reached) <= threshold) continue;
     if (++updates > maxUpdates) {
-      for (size_t q = head_; q < work_.size(); ++q) row_[work_[q]].queued = false;  // the rows still queued
+      for (size_t q = head_; q < work_.size(); ++q) queued_[work_[q]] = 0;  // the rows still queued
       work_.clear();
       head_ = 0;
       return false;
@@ -139,10 +142,22 @@ void ContactProjector::freeze(int b, const Vec2& v) {
   // and recomputing their diagonals took a fifth of rain's time (N = 10^4).
   if (body.inverseMass == 0.0 && body.v == v) return;
   body.inverseMass = 0.0;
-  for (int k : body.rows) row_[k].diag = diagonal(row_[k].r);  // the body no longer takes a share
+  body.forEachRow([&](int k) { row_[k].diag = diagonal(row_[k].r); });  // the body no longer takes a share
   if (body.v == v) return;
   body.v = v;
   if (!body.changed) body.changed = true, changed_.push_back(slot_[b]);
+}
+
+bool ContactProjector::Body::hasRow(int k) const {
+  bool found = false;
+  forEachRow([&](int row) { found = found || row == k; });
+  return found;
+}
+
+void ContactProjector::Body::addRow(int k) {
+  if (rowCount < kInlineRows) rows[rowCount] = k;
+  else moreRows.push_back(k);
+  ++rowCount;
 }
 
 void ContactProjector::takeChanged(std::vector<int>& out) {

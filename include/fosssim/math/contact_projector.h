@@ -57,19 +57,31 @@ class ContactProjector {
   int rows() const { return static_cast<int>(row_.size()); }
 
  private:
+  /// Rows a body keeps beside it: a disk in a pile touches up to six others and a wall.
+  static constexpr int kInlineRows = 7;
   struct Body {
     int id = 0;
     double inverseMass = 0;
     Vec2 v = Vec2::Zero();
-    std::vector<int> rows;  ///< the rows it appears in
+    int rowCount = 0;       ///< rows it appears in: the first kInlineRows in `rows`, the rest in `moreRows`
+    int rows[kInlineRows] = {};
+    std::vector<int> moreRows;
     bool changed = false;
+    bool hasRow(int k) const;
+    void addRow(int k);
+    /// Calls f(k) for each of its rows (inline: the worklist's hot loop reads them with the body).
+    template <class F>
+    void forEachRow(F&& f) const {
+      const int inline_ = rowCount < kInlineRows ? rowCount : kInlineRows;
+      for (int q = 0; q < inline_; ++q) f(rows[q]);
+      for (int k : moreRows) f(k);
+    }
   };
   struct Row {
     ConstraintRow r;        ///< bodies as slots into body_
     double diag = 0;        ///< A_kk = G_k M^-1 G_k^T
     double norm = 0;        ///< |G_k|
     double lambda = 0;
-    bool queued = false;
   };
   void apply(int k, double lambda);
   void queue(int k);
@@ -79,6 +91,7 @@ class ContactProjector {
   std::vector<int> slot_;     ///< per body id: index into body_, -1 when absent
   std::vector<Body> body_;
   std::vector<Row> row_;
+  std::vector<char> queued_;  ///< per row: in work_ (apart from the rows: queueing touches only these bytes)
   std::vector<int> work_;     ///< FIFO of row indices (head_ marks the front)
   size_t head_ = 0;
   std::vector<int> changed_;  ///< body slots changed since the last takeChanged
