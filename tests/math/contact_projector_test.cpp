@@ -1,7 +1,8 @@
 // The failsafe's worklist Gauss-Seidel (ContactProjector) against its promises: a batch solve is
 // the single projection (checked against the active-set enumeration), incremental solves never
 // add energy and end feasible, warm starts from the last impulses make a resting pile cheap,
-// frozen bodies stay put, and a spent budget is reported without gaining energy.
+// frozen bodies stay put, a body in more rows than it keeps inline is solved as exactly, and a
+// spent budget is reported without gaining energy.
 #include "fosssim/math/contact_projector.h"
 
 #include <gtest/gtest.h>
@@ -131,6 +132,33 @@ TEST(ContactProjector, WarmStartFromTheLastImpulsesSettlesARestingColumnAtOnce) 
   for (int k = 0; k < cold.rows(); ++k) warm.addRow(z.rows[k], cold.impulse(k));
   EXPECT_TRUE(warm.solve(gh, kTol, small));
   for (int i = 0; i < disks; ++i) EXPECT_LE((warm.velocity(i) - cold.velocity(i)).norm(), 1e-9 * gh) << "disk " << i;
+}
+
+// A disk jammed among many contacts (a hub: more rows than a body stores beside it) must still have
+// every row revisited when any of them moves it: the batch solve equals the single projection.
+TEST(ContactProjector, ABodyInMoreRowsThanItStoresInlineIsSolvedExactly) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> spread(-1.4, 1.4), speed(0.5, 2.0);
+  for (int trial = 0; trial < 60; ++trial) {
+    Zone z;
+    z.invMass = {0.0, 1.0, 0.5};  // an obstacle, the hub, a neighbour
+    z.v = {Vec2::Zero(), speed(rng) * unit(spread(rng)), Vec2::Zero()};
+    const int rows = 9 + trial % 4;  // 9-12 rows, all naming the hub
+    for (int k = 0; k < rows; ++k) {
+      const Vec2 n = unit(3.141592653589793 + spread(rng));  // pointing back against the hub's motion
+      if (k % 3 == 2) z.rows.push_back(pairRow(1, 2, -n));
+      else z.rows.push_back(halfPlaneRow(1, n));
+    }
+    ContactProjector cp;
+    addBodies(cp, z);
+    for (const ConstraintRow& r : z.rows) cp.addRow(r);
+    ASSERT_TRUE(cp.solve(speedScale(z.v), kTol, kLargeBudget)) << "trial " << trial;
+    std::vector<Vec2> ref = z.v;
+    ASSERT_TRUE(projectByEnumeration(z.invMass, z.rows, ref)) << "trial " << trial;
+    for (size_t b = 0; b < z.v.size(); ++b)
+      EXPECT_LE((cp.velocity(static_cast<int>(b)) - ref[b]).norm(), 1e-7 * speedScale(z.v))
+          << "trial " << trial << " body " << b;
+  }
 }
 
 void expectChangedOnce(ContactProjector& cp, const std::vector<Vec2>& before, int trial) {
