@@ -1,6 +1,5 @@
 #include "fosssim/math/contact_projector.h"
 
-#include <algorithm>
 #include <cmath>
 
 namespace fosssim::math {

@@ -72,8 +72,8 @@ class ContactProjector {
     /// Calls f(k) for each of its rows (inline: the worklist's hot loop reads them with the body).
     template <class F>
     void forEachRow(F&& f) const {
-      const int inline_ = rowCount < kInlineRows ? rowCount : kInlineRows;
-      for (int q = 0; q < inline_; ++q) f(rows[q]);
+      const int stored = rowCount < kInlineRows ? rowCount : kInlineRows;
+      for (int q = 0; q < stored; ++q) f(rows[q]);
       for (int k : moreRows) f(k);
     }
   };
