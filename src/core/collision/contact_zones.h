@@ -23,6 +23,7 @@
 #pragma once
 
 #include "pair_candidates.h"
+#include "pair_key_map.h"
 #include "sleepers.h"
 #include "step_motion.h"
 
@@ -30,7 +31,6 @@
 #include "fosssim/core/step_stats.h"
 #include "fosssim/math/contact_projector.h"
 
-#include <unordered_map>
 #include <vector>
 
 namespace fosssim {
@@ -143,10 +143,11 @@ class ContactZones {
   std::vector<char> rigid_;                ///< per root: moving rigidly for the rest of the step
   std::vector<char> immovable_;            ///< per root: a fixed particle or a half-plane among its rows
   std::vector<double> rateScale_;          ///< per root: see rateScale()
+  std::vector<int> frozen_;                ///< per root: its first members_ frozen at rest (immovable and rigid)
   std::vector<char> stopped_;              ///< N: stopped for the rest of the step (a jam's particles)
   std::vector<int> roots_;                 ///< every particle that has been a root this step
-  std::unordered_map<uint64_t, int> rowOf_;  ///< the projector's row of each pair with one this step
-  std::unordered_map<uint64_t, double> lastImpulse_;  ///< each contact's impulse at the end of the last step
+  PairKeyMap<int> rowOf_;                  ///< the projector's row of each pair with one this step
+  PairKeyMap<double> lastImpulse_;         ///< each contact's positive impulse at the end of the last step
   std::vector<int> queue_;
   std::vector<uint64_t> keys_;
   std::vector<int> moved_;
