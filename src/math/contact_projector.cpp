@@ -8,6 +8,8 @@ void ContactProjector::reset(int capacity) {
   if (static_cast<int>(slot_.size()) != capacity) slot_.assign(capacity, -1);
   for (const Body& b : body_) slot_[b.id] = -1;
   body_.clear();
+  velocity_.clear();
+  inverseMass_.clear();
   row_.clear();
   queued_.clear();
   work_.clear();
@@ -20,9 +22,9 @@ void ContactProjector::addBody(int b, double inverseMass, const Vec2& v) {
   slot_[b] = static_cast<int>(body_.size());
   Body body;
   body.id = b;
-  body.inverseMass = inverseMass;
-  body.v = v;
   body_.push_back(std::move(body));
+  velocity_.push_back(v);
+  inverseMass_.push_back(inverseMass);
 }
 
 int ContactProjector::addRow(const ConstraintRow& row, double warmStart) {
@@ -66,13 +68,14 @@ void ContactProjector::apply(int k, double lambda) {
   const double delta = lambda - row.lambda;
   row.lambda = lambda;
   for (int m = 0; m < row.r.count; ++m) {
-    Body& b = body_[row.r.body[m]];
-    if (b.inverseMass == 0.0) continue;
-    b.v += b.inverseMass * delta * row.r.coef[m];
-    if (!b.changed) b.changed = true, changed_.push_back(row.r.body[m]);
+    const int s = row.r.body[m];
+    if (inverseMass_[s] == 0.0) continue;
+    velocity_[s] += inverseMass_[s] * delta * row.r.coef[m];
+    Body& b = body_[s];
+    if (!b.changed) b.changed = true, changed_.push_back(s);
   }
   for (int m = 0; m < row.r.count; ++m)
-    if (body_[row.r.body[m]].inverseMass != 0.0) queueRowsOf(row.r.body[m], k);
+    if (inverseMass_[row.r.body[m]] != 0.0) queueRowsOf(row.r.body[m], k);
 }
 
 void ContactProjector::queue(int k) {
@@ -97,7 +100,7 @@ bool ContactProjector::solve(double speedScale, double tolerance, long maxUpdate
     Row& row = row_[k];
     queued_[k] = 0;
     double w = 0;
-    for (int m = 0; m < row.r.count; ++m) w += row.r.coef[m].dot(body_[row.r.body[m]].v);
+    for (int m = 0; m < row.r.count; ++m) w += row.r.coef[m].dot(velocity_[row.r.body[m]]);
     const double threshold = tolerance * row.norm * speedScale;
     if (row.diag <= 0.0) continue;  // every body immovable: nothing to move (a violation stays)
     // fmin and fmax written out (glibc's own definitions, NaN included): the calls were not
@@ -129,22 +132,23 @@ double ContactProjector::diagonal(const ConstraintRow& r) const {
     Vec2 c = Vec2::Zero();
     for (int q = m; q < r.count; ++q)
       if (r.body[q] == r.body[m]) c += r.coef[q];
-    diag += body_[r.body[m]].inverseMass * c.squaredNorm();
+    diag += inverseMass_[r.body[m]] * c.squaredNorm();
   }
   return diag;
 }
 
 void ContactProjector::freeze(int b, const Vec2& v) {
-  Body& body = body_[slot_[b]];
+  const int s = slot_[b];
+  Body& body = body_[s];
   // Already immovable at v (a rigid zone moved again, a stopped particle stopped again): its rows'
   // diagonals know it. moveRigidly freezes every member of a zone each time the zone is resolved,
   // and recomputing their diagonals took a fifth of rain's time (N = 10^4).
-  if (body.inverseMass == 0.0 && body.v == v) return;
-  body.inverseMass = 0.0;
+  if (inverseMass_[s] == 0.0 && velocity_[s] == v) return;
+  inverseMass_[s] = 0.0;
   body.forEachRow([&](int k) { row_[k].diag = diagonal(row_[k].r); });  // the body no longer takes a share
-  if (body.v == v) return;
-  body.v = v;
-  if (!body.changed) body.changed = true, changed_.push_back(slot_[b]);
+  if (velocity_[s] == v) return;
+  velocity_[s] = v;
+  if (!body.changed) body.changed = true, changed_.push_back(s);
 }
 
 bool ContactProjector::Body::hasRow(int k) const {

@@ -49,7 +49,7 @@ class ContactProjector {
   /// velocities are still safe, see above, but some contact may approach).
   bool solve(double speedScale, double tolerance, long maxUpdates);
 
-  const Vec2& velocity(int b) const { return body_[slot_[b]].v; }
+  const Vec2& velocity(int b) const { return velocity_[slot_[b]]; }
   /// Makes body b immovable from now on, at velocity v (the rigid fallback moves it instead).
   void freeze(int b, const Vec2& v);
   /// Appends the bodies whose velocity changed since the last call, each once.
@@ -59,10 +59,11 @@ class ContactProjector {
  private:
   /// Rows a body keeps beside it: a disk in a pile touches up to six others and a wall.
   static constexpr int kInlineRows = 7;
+  /// A body's bookkeeping; its velocity and inverse mass, which every update reads, are kept
+  /// apart in dense arrays (velocity_, inverseMass_): a pile's velocities then fit the first-level
+  /// cache, and an update does not pull its bodies' row lists through it just to read them.
   struct Body {
     int id = 0;
-    double inverseMass = 0;
-    Vec2 v = Vec2::Zero();
     int rowCount = 0;       ///< rows it appears in: the first kInlineRows in `rows`, the rest in `moreRows`
     int rows[kInlineRows] = {};
     std::vector<int> moreRows;
@@ -90,6 +91,8 @@ class ContactProjector {
 
   std::vector<int> slot_;     ///< per body id: index into body_, -1 when absent
   std::vector<Body> body_;
+  std::vector<Vec2> velocity_;       ///< per slot: the body's velocity
+  std::vector<double> inverseMass_;  ///< per slot: 0 for an immovable body
   std::vector<Row> row_;
   std::vector<char> queued_;  ///< per row: in work_ (apart from the rows: queueing touches only these bytes)
   std::vector<int> work_;     ///< FIFO of row indices (head_ marks the front)
