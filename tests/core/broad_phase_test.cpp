@@ -206,6 +206,71 @@ TEST(BroadPhase, IncrementalDetectionEqualsFullDetection) {
   }
 }
 
+// pairsOf keeps each particle's particle pairs between calls (scenes without edges) until a box
+// that meets the particle's is re-filed. After every round of moves (back to the start, nudges
+// within the filed slack, long throws that re-file), every particle's kept list must equal what
+// the grid gives now (particlesOf, which keeps nothing). Lists are asked for before the moves
+// too, so stale ones would be returned if a re-filed box did not forget them.
+TEST(BroadPhase, KeptPairListsFollowEveryRefiledBox) {
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  long refiledPairsSeen = 0;
+  for (int s = 0; s < 40; ++s) {
+    Motion m = randomMotion(rng, 60 + 5 * s, s % 2 ? 0.0 : 1e3);
+    m.scene.edges.clear();
+    const int n = m.scene.numParticles();
+    PairCandidates c;
+    c.build(m.scene, m.qs, m.qe, 0.0, /*updates=*/true);
+    ASSERT_FALSE(c.allPairs());
+    std::vector<uint64_t> keys;
+    std::vector<int> row;
+    std::vector<std::set<uint64_t>> before(n);
+    for (int round = 0; round < 8; ++round) {
+      for (int p = 0; p < n; ++p) {
+        keys.clear();
+        c.pairsOf(p, keys);
+        before[p].clear();
+        for (uint64_t k : keys)
+          if (keyKind(k) == PairKind::ParticleParticle) before[p].insert(k);
+      }
+      const int moves = 1 + (round + s) % 7 * n / 20;
+      for (int k = 0; k < moves; ++k) {
+        const int p = static_cast<int>(unit(rng) * n);
+        const double pick = unit(rng);
+        if (pick < 0.2) at(m.qe, p) = at(m.qs, p);
+        else if (pick < 0.5) at(m.qe, p) += 1e-9 * Vec2(unit(rng) - 0.5, unit(rng) - 0.5);
+        else at(m.qe, p) += 3.0 * Vec2(unit(rng) - 0.5, unit(rng) - 0.5);
+        c.update(p);
+      }
+      c.settle();
+      // What the grid holds now, every pair once.
+      std::vector<std::set<uint64_t>> truth(n);
+      for (int i = 0; i < n; ++i) {
+        row.clear();
+        c.particlesOf(i, -1, row);
+        for (int j : row) {
+          truth[i].insert(pairKey(i, PairKind::ParticleParticle, j));
+          truth[j].insert(pairKey(i, PairKind::ParticleParticle, j));
+        }
+      }
+      SCOPED_TRACE("scene " + std::to_string(s) + " round " + std::to_string(round));
+      for (int p = 0; p < n; ++p) {
+        keys.clear();
+        c.pairsOf(p, keys);
+        std::set<uint64_t> listed;
+        for (uint64_t k : keys) {
+          if (keyKind(k) == PairKind::ParticleParticle) {
+            EXPECT_TRUE(listed.insert(k).second) << "listed twice";
+          }
+        }
+        EXPECT_EQ(listed, truth[p]) << "particle " << p;
+        refiledPairsSeen += listed != before[p];
+      }
+    }
+  }
+  EXPECT_GT(refiledPairsSeen, 100);  // the moves did change lists: a list kept blindly would fail
+}
+
 // Pairs that graze: the closest approach lies along an axis, just outside or inside reach, with
 // displacements so small that the CCD drops leading coefficients (|c| < 1e-12) and so reports
 // collisions that exact arithmetic would not. These are the pairs the margins exist for: boxes

@@ -102,6 +102,7 @@ void PairCandidates::build(const Scene& scene, const VecX& qs, const VecX& qe, d
 }
 
 void PairCandidates::index() {
+  ++generation_;
   particleGrid_.build(particleBoxes_.data(), scene_->numParticles(), threads_);
   if (!scene_->edges.empty())
     edgeGrid_.build(edgeBoxes_.data(), static_cast<int>(scene_->edges.size()), threads_);
@@ -122,8 +123,10 @@ void PairCandidates::update(int p) {
   // refit's rounding, a small impulse); else the fresh box is re-filed in the grid.
   const Box fresh = particleBox(*scene_, *qs_, *qe_, p, scale_, extra_);
   if (!contains(particleBoxes_[p], fresh)) {
+    if (keepsPairs()) forgetPairsNear(particleBoxes_[p]);  // the lists that hold p
     particleBoxes_[p] = filed(fresh);
     particleGrid_.insert(p, particleBoxes_[p]);
+    if (keepsPairs()) forgetPairsNear(particleBoxes_[p]);  // the lists that must hold it now
   }
   if (!scene_->edges.empty()) {
     for (int k = incidentStart_[p]; k < incidentStart_[p + 1]; ++k) {
@@ -184,9 +187,10 @@ void PairCandidates::edgesOf(int i, int after, std::vector<int>& out) const {
 void PairCandidates::pairsOf(int p, std::vector<uint64_t>& keys) const {
   const std::vector<Edge>& edges = scene_->edges;
   const int n = scene_->numParticles(), planes = static_cast<int>(scene_->halfplanes.size());
-  auto particlePair = [&](int q) {
-    if (q != p) keys.push_back(q < p ? pairKey(q, PairKind::ParticleParticle, p) : pairKey(p, PairKind::ParticleParticle, q));
+  auto particlePairInto = [&](std::vector<uint64_t>& into, int q) {
+    if (q != p) into.push_back(q < p ? pairKey(q, PairKind::ParticleParticle, p) : pairKey(p, PairKind::ParticleParticle, q));
   };
+  auto particlePair = [&](int q) { particlePairInto(keys, q); };
   auto edgePair = [&](int q, int e) {
     if (edges[e].i != q && edges[e].j != q) keys.push_back(pairKey(q, PairKind::ParticleEdge, e));
   };
@@ -197,6 +201,18 @@ void PairCandidates::pairsOf(int p, std::vector<uint64_t>& keys) const {
       if (edges[e].i == p || edges[e].j == p)
         for (int q = 0; q < n; ++q) edgePair(q, e);
     }
+  } else if (keepsPairs()) {
+    if (keptIn_.size() != static_cast<size_t>(n)) {  // the first call: only users of pairsOf pay for the lists
+      keptIn_.assign(n, 0);
+      keptPairs_.assign(n, {});
+    }
+    std::vector<uint64_t>& kept = keptPairs_[p];
+    if (keptIn_[p] != generation_) {
+      kept.clear();
+      forEachParticleNear(particleBoxes_[p], [&](int q) { particlePairInto(kept, q); });
+      keptIn_[p] = generation_;
+    }
+    keys.insert(keys.end(), kept.begin(), kept.end());
   } else {
     forEachParticleNear(particleBoxes_[p], particlePair);
     forEachEdgeNear(particleBoxes_[p], [&](int e) { edgePair(p, e); });
@@ -211,8 +227,15 @@ void PairCandidates::pairsOf(int p, std::vector<uint64_t>& keys) const {
     if (nearPlane(p, h)) keys.push_back(pairKey(p, PairKind::ParticleHalfPlane, h));
 }
 
+void PairCandidates::forgetPairsNear(const Box& b) {
+  if (keptIn_.size() != static_cast<size_t>(scene_->numParticles())) return;  // none kept
+  particleGrid_.forEachOverlap(b, [&](int q) { keptIn_[q] = 0; });
+}
+
 size_t PairCandidates::memoryBytes() const {
-  return particleBoxes_.capacity() * sizeof(Box) + edgeBoxes_.capacity() * sizeof(Box) +
+  size_t kept = keptIn_.capacity() * sizeof(uint64_t) + keptPairs_.capacity() * sizeof(std::vector<uint64_t>);
+  for (const std::vector<uint64_t>& list : keptPairs_) kept += list.capacity() * sizeof(uint64_t);
+  return kept + particleBoxes_.capacity() * sizeof(Box) + edgeBoxes_.capacity() * sizeof(Box) +
          particleGrid_.memoryBytes() + edgeGrid_.memoryBytes() + (incidentStart_.capacity() + incident_.capacity()) * sizeof(int);
 }
 
