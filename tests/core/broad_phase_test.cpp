@@ -207,7 +207,7 @@ TEST(BroadPhase, IncrementalDetectionEqualsFullDetection) {
 }
 
 // pairsOf keeps each particle's particle pairs between calls (scenes without edges) until a box
-// that meets the particle's is re-filed. After every round of moves (back to the start, nudges
+// that meets the particle's is re-filed, and lists its keys in pair order. After every round of moves (back to the start, nudges
 // within the filed slack, long throws that re-file), every particle's kept list must equal what
 // the grid gives now (particlesOf, which keeps nothing). Lists are asked for before the moves
 // too, so stale ones would be returned if a re-filed box did not forget them.
@@ -257,6 +257,10 @@ TEST(BroadPhase, KeptPairListsFollowEveryRefiledBox) {
       for (int p = 0; p < n; ++p) {
         keys.clear();
         c.pairsOf(p, keys);
+        // Without edges the keys come ascending and once each (zone growth relies on it).
+        ASSERT_TRUE(c.sortedPairs());
+        EXPECT_TRUE(std::is_sorted(keys.begin(), keys.end())) << "particle " << p;
+        EXPECT_EQ(std::adjacent_find(keys.begin(), keys.end()), keys.end()) << "particle " << p;
         std::set<uint64_t> listed;
         for (uint64_t k : keys) {
           if (keyKind(k) == PairKind::ParticleParticle) {

@@ -167,8 +167,10 @@ int ContactZones::grow(const Scene& scene, const StepMotion& motion, const PairC
     candidates.pairsOf(q, keys_);
     // In pair order (the broad phase lists them in grid order): the rows' order decides the
     // solve's rounding, which must not depend on how candidates were found.
-    std::sort(keys_.begin(), keys_.end());
-    keys_.erase(std::unique(keys_.begin(), keys_.end()), keys_.end());
+    if (!candidates.sortedPairs()) {
+      std::sort(keys_.begin(), keys_.end());
+      keys_.erase(std::unique(keys_.begin(), keys_.end()), keys_.end());
+    }
     for (uint64_t k : keys_) {
       if (rowOf_.contains(k) || !near(scene, motion, k, T)) continue;
       const PairParticles other = pairParticles(scene, k);

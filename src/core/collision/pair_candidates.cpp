@@ -210,6 +210,7 @@ void PairCandidates::pairsOf(int p, std::vector<uint64_t>& keys) const {
     if (keptIn_[p] != generation_) {
       kept.clear();
       forEachParticleNear(particleBoxes_[p], [&](int q) { particlePairInto(kept, q); });
+      std::sort(kept.begin(), kept.end());  // once here, instead of by every caller that needs pair order
       keptIn_[p] = generation_;
     }
     keys.insert(keys.end(), kept.begin(), kept.end());

@@ -111,8 +111,12 @@ class PairCandidates {
   /// In scenes without edges, p's particle pairs are kept from one call to the next until a box
   /// that meets p's is re-filed (the event loop asks for the same particles' pairs after every
   /// solve that moves them: on rain at N = 10^5, 90,000 calls a step against 550 re-filed
-  /// boxes). Not for concurrent use.
+  /// boxes); the keys then come ascending, each once (sortedPairs()). Not for concurrent use.
   void pairsOf(int p, std::vector<uint64_t>& keys) const;
+  /// Whether pairsOf appends its keys ascending and each once: scenes without edges. (The kept
+  /// particle pairs are sorted; pairs (q, p) with q < p sort before (p, q) with q > p, and those
+  /// before p's half-plane pairs, which follow ascending.)
+  bool sortedPairs() const { return keepsPairs(); }
 
   /// Bytes held (capacity), for the benchmark's memory figures.
   size_t memoryBytes() const;
