@@ -123,10 +123,10 @@ void PairCandidates::update(int p) {
   // refit's rounding, a small impulse); else the fresh box is re-filed in the grid.
   const Box fresh = particleBox(*scene_, *qs_, *qe_, p, scale_, extra_);
   if (!contains(particleBoxes_[p], fresh)) {
-    if (keepsPairs()) forgetPairsNear(particleBoxes_[p]);  // the lists that hold p
+    if (sortedPairs()) forgetPairsNear(particleBoxes_[p]);  // the lists that hold p
     particleBoxes_[p] = filed(fresh);
     particleGrid_.insert(p, particleBoxes_[p]);
-    if (keepsPairs()) forgetPairsNear(particleBoxes_[p]);  // the lists that must hold it now
+    if (sortedPairs()) forgetPairsNear(particleBoxes_[p]);  // the lists that must hold it now
   }
   if (!scene_->edges.empty()) {
     for (int k = incidentStart_[p]; k < incidentStart_[p + 1]; ++k) {
@@ -201,7 +201,7 @@ void PairCandidates::pairsOf(int p, std::vector<uint64_t>& keys) const {
       if (edges[e].i == p || edges[e].j == p)
         for (int q = 0; q < n; ++q) edgePair(q, e);
     }
-  } else if (keepsPairs()) {
+  } else if (sortedPairs()) {
     if (keptIn_.size() != static_cast<size_t>(n)) {  // the first call: only users of pairsOf pay for the lists
       keptIn_.assign(n, 0);
       keptPairs_.assign(n, {});

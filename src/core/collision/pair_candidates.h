@@ -113,18 +113,17 @@ class PairCandidates {
   /// solve that moves them: on rain at N = 10^5, 90,000 calls a step against 550 re-filed
   /// boxes); the keys then come ascending, each once (sortedPairs()). Not for concurrent use.
   void pairsOf(int p, std::vector<uint64_t>& keys) const;
-  /// Whether pairsOf appends its keys ascending and each once: scenes without edges. (The kept
-  /// particle pairs are sorted; pairs (q, p) with q < p sort before (p, q) with q > p, and those
-  /// before p's half-plane pairs, which follow ascending.)
-  bool sortedPairs() const { return keepsPairs(); }
+  /// Whether pairsOf keeps its lists and so appends its keys ascending and each once: scenes
+  /// without edges. (The kept particle pairs are sorted; pairs (q, p) with q < p sort before
+  /// (p, q) with q > p, and those before p's half-plane pairs, which follow ascending.)
+  bool sortedPairs() const { return !allPairs_ && scene_->edges.empty(); }
 
   /// Bytes held (capacity), for the benchmark's memory figures.
   size_t memoryBytes() const;
 
  private:
   void index();  ///< (re)builds the main grids from the current boxes (and forgets pairsOf's lists)
-  bool keepsPairs() const { return !allPairs_ && scene_->edges.empty(); }
-  /// Forgets pairsOf's lists of the particles whose boxes meet b (keepsPairs(); the lists are
+  /// Forgets pairsOf's lists of the particles whose boxes meet b (sortedPairs(); the lists are
   /// made at pairsOf's first call).
   void forgetPairsNear(const Box& b);
   bool withinScale(int p) const;
@@ -143,7 +142,7 @@ class PairCandidates {
   std::vector<Box> particleBoxes_, edgeBoxes_;
   BoxGrid particleGrid_, edgeGrid_;
   std::vector<int> incidentStart_, incident_;  ///< edges of each particle (compressed rows)
-  // pairsOf's lists (keepsPairs()): a list is good while its particle's entry of keptIn_ equals
+  // pairsOf's lists (sortedPairs()): a list is good while its particle's entry of keptIn_ equals
   // generation_, which every index() advances; a re-filed box clears the entries of the
   // particles it met before and meets now (their lists may have lost or gained it).
   mutable std::vector<std::vector<uint64_t>> keptPairs_;  ///< N: p's particle-particle candidate keys

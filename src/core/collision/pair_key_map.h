@@ -83,7 +83,7 @@ class PairKeyMap {
   }
 
   std::vector<Slot> slots_;  ///< capacity (a power of two, at most half full): key and value, kEmpty when free
-  std::size_t mask_ = 0;          ///< capacity - 1
+  std::size_t mask_ = 0;     ///< capacity - 1
   int shift_ = 64;           ///< 64 - log2(capacity): home() keeps the hash's top bits
   int size_ = 0;             ///< entries
 };
