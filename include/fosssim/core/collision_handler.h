@@ -42,6 +42,10 @@ struct HandlerOptions {
   /// a contact or a moving neighbour wakes them (src/core/collision/sleepers.h). A run in which
   /// no particle sleeps is identical with it on or off. --compat never sleeps.
   bool sleep = true;
+  /// Default mode: Gauss-Seidel updates a failsafe solve may spend per row it adds (0: the
+  /// tuned kZoneUpdatesPerRow of src/core/collision/contact_zones.h). For tests and measurements:
+  /// a starved failsafe must still leave no contact closing unseen, only cost more events.
+  long zoneUpdatesPerRow = 0;
 };
 
 /// Everything a handler may use during one step besides the scene and the two states.

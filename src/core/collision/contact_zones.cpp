@@ -42,6 +42,7 @@ void ContactZones::reset(int n) {
     if (projector_.impulse(row) > 0.0) lastImpulse_.insert(key, projector_.impulse(row));
   });
   rowOf_.clear();
+  unsolved_.clear();
   solvedRows_ = 0;
   projector_.reset(n);
 }
@@ -195,9 +196,21 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
       // A zone's first solve in the step may sweep all the rows (warm-started, a resting pile
       // needs few); later solves pay for what they add.
       const int fresh = solves_[zone]++ == 0 ? projector_.rows() : projector_.rows() - solvedRows_;
-      const long budget = kZoneUpdatesPerRow * std::max(fresh, 8);
+      const long budget = updatesPerRow_ * std::max(fresh, 8);
       solvedRows_ = projector_.rows();
-      if (!projector_.solve(rateScale_[zone] / h, kZoneProjectionTolerance, budget)) ++metAgain_[zone];
+      if (!projector_.solve(rateScale_[zone] / h, kZoneProjectionTolerance, budget)) {
+        ++metAgain_[zone];
+        // The rows set since the last solve stand for contacts whose events were taken: one that
+        // the solve did not reach (its bodies' velocities unchanged) would not be queried again,
+        // and its pair would close unseen for the rest of the step. Their particles are queried
+        // again at T, so such a contact comes back as an event (met again).
+        for (uint64_t key : unsolved_) {
+          const PairParticles pair = pairParticles(scene, key);
+          for (int k = 0; k < pair.count; ++k)
+            if (!scene.isFixed(pair.p[k])) changed.push_back(pair.p[k]);
+        }
+      }
+      unsolved_.clear();
     } else {
       rigid_[zone] = 1;
     }
@@ -257,10 +270,12 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
     // push that the solve could no longer take back, and that can add energy.
     if (*known >= solvedRows_) return false;
     projector_.setRow(*known, row);
+    unsolved_.push_back(key);
     return false;
   }
   const double* last = lastImpulse_.find(key);
   rowOf_.insert(key, projector_.addRow(row, last ? *last : 0.0));
+  unsolved_.push_back(key);
   return true;
 }
 

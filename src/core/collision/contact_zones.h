@@ -109,6 +109,8 @@ class ContactZones {
   /// Adds the zones (count, particles, largest, rigid ones) to the statistics.
   void sizes(StepStats& stats) const;
   void setRigidOnly(bool rigid) { rigidOnly_ = rigid; }
+  /// The solves' budget per added row (kZoneUpdatesPerRow unless a test or measurement says).
+  void setUpdatesPerRow(long updates) { updatesPerRow_ = updates; }
   /// The handler's sleepers: obstacles, as fixed particles are.
   void setSleepers(const Sleepers* sleepers) { sleepers_ = sleepers; }
 
@@ -135,6 +137,7 @@ class ContactZones {
   void moveRigidly(const Scene& scene, const StepMotion& motion, int zone, double T);
 
   bool rigidOnly_ = false;
+  long updatesPerRow_ = kZoneUpdatesPerRow;
   const Sleepers* sleepers_ = nullptr;
   std::vector<int> parent_;                ///< N: union-find parent, -1 when in no zone
   std::vector<std::vector<int>> members_;  ///< per root: its particles
@@ -148,6 +151,7 @@ class ContactZones {
   std::vector<int> roots_;                 ///< every particle that has been a root this step
   PairKeyMap<int> rowOf_;                  ///< the projector's row of each pair with one this step
   PairKeyMap<double> lastImpulse_;         ///< each contact's positive impulse at the end of the last step
+  std::vector<uint64_t> unsolved_;         ///< pairs whose rows were set since the last solve
   std::vector<int> queue_;
   std::vector<uint64_t> keys_;
   std::vector<int> moved_;

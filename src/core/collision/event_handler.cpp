@@ -31,6 +31,7 @@ EventHandler::EventHandler(const CollisionSettings& settings, int eventsPerParti
       threads_(std::max(options.threads, 1)) {
   zones_.setRigidOnly(settings.failsafe == Failsafe::Rigid);
   zones_.setSleepers(&sleepers_);
+  if (options.zoneUpdatesPerRow > 0) zones_.setUpdatesPerRow(options.zoneUpdatesPerRow);
   sleepers_.setEnabled(options.sleep);
   sleepers_.setThreads(threads_);
 }
