@@ -82,9 +82,11 @@ class ContactZones {
 
   /// Puts pair `key` (met at time T) and every particle that could touch its particles in the
   /// rest of the step (transitively) into one zone, with a row per contact; returns the zone, or
-  /// -1 when every particle of the pair is fixed. h: the step.
+  /// -1 when every particle of the pair is fixed. h: the step. deepening: the contact barely
+  /// closes at T but its overlap deepens later in the step (an edge rotating into a particle),
+  /// so its row takes the normal where it would overlap deepest.
   int absorb(const Scene& scene, const StepMotion& motion, const PairCandidates& candidates, uint64_t key, double T,
-             double h);
+             double h, bool deepening = false);
 
   /// Solves zone `zone` at time T, growing it while its new velocities bring more pairs near:
   /// writes its particles' new rates into `motion` (and the broad phase's boxes), their velocity
@@ -128,8 +130,9 @@ class ContactZones {
   int grow(const Scene& scene, const StepMotion& motion, const PairCandidates& candidates, int zone, double T,
            double h, int& added);
   /// The contact's row (added, or replaced if it has one) with its normal at T, or where it
-  /// would overlap deepest if it deepens without closing; returns whether a row was added.
-  bool setRow(const Scene& scene, const StepMotion& motion, int zone, uint64_t key, double T);
+  /// would overlap deepest if it deepens without closing (or `deepening` says it does);
+  /// returns whether a row was added.
+  bool setRow(const Scene& scene, const StepMotion& motion, int zone, uint64_t key, double T, bool deepening = false);
   /// The row of `key` with its particles at position(p), and its normal (zero: none).
   template <class Position>
   math::ConstraintRow contactRow(const Scene& scene, uint64_t key, Position&& position, Vec2& normal) const;

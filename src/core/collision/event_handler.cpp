@@ -287,9 +287,9 @@ void EventHandler::respond(const Scene& scene, const Event& e, State& state, Ste
   // to the zones, whose projection uses the normals where the overlap would be. One that does not
   // deepen beyond rounding is resolved already.
   bool curving = false;
+  const auto position = [&](int p, double t) { return motion_.at(p, t); };
   if (closing <= kRestingClosingFraction * scale) {
     double length = 0;
-    const auto position = [&](int p, double t) { return motion_.at(p, t); };
     if (pairDeepening(scene, e.key, position, e.t, 1.0, length) <= kDepthTolerance * length) return;
     curving = true;
   }
@@ -318,10 +318,17 @@ void EventHandler::respond(const Scene& scene, const Event& e, State& state, Ste
   // Inside one zone that its projection solved, closing speeds within the projection's tolerance
   // of the zone's speeds are what the solve leaves, not new approaches (solving again would
   // change nothing but the count that sends the zone to rigid motion).
-  if (sameZone && !curving && closing <= kZoneClosingFraction * zones_.rateScale(zone)) return;
+  // Unless it deepens later in the step all the same (an edge rotating into a particle: the
+  // overlap grows at second order while the normal at T sees almost no approach); the zone then
+  // takes its row with the normal where it would overlap deepest, as for a curving contact.
+  if (sameZone && !curving && closing <= kZoneClosingFraction * zones_.rateScale(zone)) {
+    double length = 0;
+    if (pairDeepening(scene, e.key, position, e.t, 1.0, length) <= kDepthTolerance * length) return;
+    curving = true;
+  }
   if (toZones) {
     const StepTimer timer(ctx.timing, ctx.stats->failsafe);
-    const int z = zones_.absorb(scene, motion_, candidates_, e.key, e.t, h);
+    const int z = zones_.absorb(scene, motion_, candidates_, e.key, e.t, h, curving);
     if (z >= 0) pendingZones_.push_back(z);
     return;
   }
