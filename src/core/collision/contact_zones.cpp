@@ -203,7 +203,10 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
         // The rows set since the last solve stand for contacts whose events were taken: one that
         // the solve did not reach (its bodies' velocities unchanged) would not be queried again,
         // and its pair would close unseen for the rest of the step. Their particles are queried
-        // again at T, so such a contact comes back as an event (met again).
+        // again at T, so such a contact comes back as an event (met again). All of them, not only
+        // this zone's: the projector's worklist is shared, so a solve checks every queued row
+        // when it succeeds and drops every one when it spends its budget (zones waiting for
+        // their solve at this instant included).
         for (uint64_t key : unsolved_) {
           const PairParticles pair = pairParticles(scene, key);
           for (int k = 0; k < pair.count; ++k)

@@ -154,7 +154,7 @@ class ContactZones {
   std::vector<int> roots_;                 ///< every particle that has been a root this step
   PairKeyMap<int> rowOf_;                  ///< the projector's row of each pair with one this step
   PairKeyMap<double> lastImpulse_;         ///< each contact's positive impulse at the end of the last step
-  std::vector<uint64_t> unsolved_;         ///< pairs whose rows were set since the last solve
+  std::vector<uint64_t> unsolved_;         ///< pairs whose rows were set since the last solve (any zone's)
   std::vector<int> queue_;
   std::vector<uint64_t> keys_;
   std::vector<int> moved_;
