@@ -134,7 +134,7 @@ bool ContactZones::near(const Scene& scene, const StepMotion& motion, uint64_t k
 }
 
 int ContactZones::absorb(const Scene& scene, const StepMotion& motion, const PairCandidates& candidates, uint64_t key,
-                         double T, double h, bool deepening) {
+                         double T, double h, double deepest) {
   int zone = -1;
   queue_.clear();
   const PairParticles pair = pairParticles(scene, key);
@@ -154,7 +154,7 @@ int ContactZones::absorb(const Scene& scene, const StepMotion& motion, const Pai
         projector_.freeze(pair.p[k], Vec2::Zero());
       }
   }
-  setRow(scene, motion, zone, key, T, deepening);
+  setRow(scene, motion, zone, key, T, deepest);
   int added = 0;
   return grow(scene, motion, candidates, zone, T, h, added);
 }
@@ -244,7 +244,7 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
 }
 
 bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone, uint64_t key, double T,
-                          bool deepening) {
+                          double deepest) {
   const int z = root(zone);
   const PairParticles pair = pairParticles(scene, key);
   immovable_[z] = immovable_[z] || keyKind(key) == PairKind::ParticleHalfPlane;
@@ -261,7 +261,9 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
     alpha = math::segmentParameterClamped(motion.at(keyParticle(key), T), motion.at(e.i, T), motion.at(e.j, T));
   }
   const auto rate = [&](int p) { return motion.rate(p); };
-  if (deepening || closingSpeed(scene, key, n, alpha, rate, scale) <= kRestingClosingFraction * scale) {
+  if (deepest >= 0.0) {  // the caller found it deepening already
+    row = contactRow(scene, key, [&](int p) { return motion.at(p, deepest); }, n);
+  } else if (closingSpeed(scene, key, n, alpha, rate, scale) <= kRestingClosingFraction * scale) {
     const auto position = [&](int p, double t) { return motion.at(p, t); };
     double length = 0, td = 1.0;
     if (pairDeepening(scene, key, position, T, 1.0, length, &td) > kDepthTolerance * length)

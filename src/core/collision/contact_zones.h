@@ -82,11 +82,11 @@ class ContactZones {
 
   /// Puts pair `key` (met at time T) and every particle that could touch its particles in the
   /// rest of the step (transitively) into one zone, with a row per contact; returns the zone, or
-  /// -1 when every particle of the pair is fixed. h: the step. deepening: the contact barely
-  /// closes at T but its overlap deepens later in the step (an edge rotating into a particle),
-  /// so its row takes the normal where it would overlap deepest.
+  /// -1 when every particle of the pair is fixed. h: the step. deepest (if >= 0): the caller
+  /// found that the contact, barely closing at T, overlaps deepest at that step fraction (an edge
+  /// rotating into a particle), so its row takes the normal there.
   int absorb(const Scene& scene, const StepMotion& motion, const PairCandidates& candidates, uint64_t key, double T,
-             double h, bool deepening = false);
+             double h, double deepest = -1.0);
 
   /// Solves zone `zone` at time T, growing it while its new velocities bring more pairs near:
   /// writes its particles' new rates into `motion` (and the broad phase's boxes), their velocity
@@ -130,9 +130,9 @@ class ContactZones {
   int grow(const Scene& scene, const StepMotion& motion, const PairCandidates& candidates, int zone, double T,
            double h, int& added);
   /// The contact's row (added, or replaced if it has one) with its normal at T, or where it
-  /// would overlap deepest if it deepens without closing (or `deepening` says it does);
-  /// returns whether a row was added.
-  bool setRow(const Scene& scene, const StepMotion& motion, int zone, uint64_t key, double T, bool deepening = false);
+  /// would overlap deepest if it deepens without closing (at `deepest` if the caller found that
+  /// already, >= 0); returns whether a row was added.
+  bool setRow(const Scene& scene, const StepMotion& motion, int zone, uint64_t key, double T, double deepest = -1.0);
   /// The row of `key` with its particles at position(p), and its normal (zero: none).
   template <class Position>
   math::ConstraintRow contactRow(const Scene& scene, uint64_t key, Position&& position, Vec2& normal) const;

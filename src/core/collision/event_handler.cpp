@@ -286,13 +286,15 @@ void EventHandler::respond(const Scene& scene, const Event& e, State& state, Ste
   // resting disk: the overlap grows at second order) is one that impulses cannot settle: it goes
   // to the zones, whose projection uses the normals where the overlap would be. One that does not
   // deepen beyond rounding is resolved already.
-  bool curving = false;
-  const auto position = [&](int p, double t) { return motion_.at(p, t); };
-  if (closing <= kRestingClosingFraction * scale) {
-    double length = 0;
-    if (pairDeepening(scene, e.key, position, e.t, 1.0, length) <= kDepthTolerance * length) return;
-    curving = true;
-  }
+  // deepest: the step fraction where a curving contact would overlap deepest (-1: not curving).
+  const auto deepestTime = [&] {
+    const auto position = [&](int p, double t) { return motion_.at(p, t); };
+    double length = 0, when = 1.0;
+    return pairDeepening(scene, e.key, position, e.t, 1.0, length, &when) > kDepthTolerance * length ? when : -1.0;
+  };
+  double deepest = -1.0;
+  if (closing <= kRestingClosingFraction * scale && (deepest = deepestTime()) < 0.0) return;
+  const bool curving = deepest >= 0.0;
   if (sleepers_.any()) wakeIfHit(scene, e.key, curving ? 0.0 : closing, *ctx.stats);
 
   // A contact is inside one rigid zone (exempt) only if every particle of it moves with that zone:
@@ -321,14 +323,12 @@ void EventHandler::respond(const Scene& scene, const Event& e, State& state, Ste
   // Unless it deepens later in the step all the same (an edge rotating into a particle: the
   // overlap grows at second order while the normal at T sees almost no approach); the zone then
   // takes its row with the normal where it would overlap deepest, as for a curving contact.
-  if (sameZone && !curving && closing <= kZoneClosingFraction * zones_.rateScale(zone)) {
-    double length = 0;
-    if (pairDeepening(scene, e.key, position, e.t, 1.0, length) <= kDepthTolerance * length) return;
-    curving = true;
-  }
+  if (sameZone && !curving && closing <= kZoneClosingFraction * zones_.rateScale(zone) &&
+      (deepest = deepestTime()) < 0.0)
+    return;
   if (toZones) {
     const StepTimer timer(ctx.timing, ctx.stats->failsafe);
-    const int z = zones_.absorb(scene, motion_, candidates_, e.key, e.t, h, curving);
+    const int z = zones_.absorb(scene, motion_, candidates_, e.key, e.t, h, deepest);
     if (z >= 0) pendingZones_.push_back(z);
     return;
   }
