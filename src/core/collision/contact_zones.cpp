@@ -364,6 +364,7 @@ void ContactZones::sizes(StepStats& stats) const {
     ++stats.zones;
     stats.rigidZones += rigid_[r];
     stats.zoneParticles += static_cast<int>(members_[r].size());
+    for (int p : members_[r]) stats.jammedParticles += stopped_[p];
     stats.largestZone = std::max(stats.largestZone, static_cast<int>(members_[r].size()));
   }
   stats.failsafeUsed = stats.failsafeUsed || stats.zones > 0;
