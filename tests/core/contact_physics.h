@@ -32,12 +32,15 @@ inline TestScene contactScene(const std::string& type, double cor, double dt = 0
   return s;
 }
 
-/// sleep: resting particles may sleep (HandlerOptions::sleep).
-inline std::unique_ptr<Simulator> defaultModeSimulator(const TestScene& s, bool sleep = true) {
+/// sleep: resting particles may sleep (HandlerOptions::sleep); zoneUpdatesPerRow > 0 starves
+/// (or feeds) the failsafe's solves (HandlerOptions::zoneUpdatesPerRow).
+inline std::unique_ptr<Simulator> defaultModeSimulator(const TestScene& s, bool sleep = true,
+                                                       long zoneUpdatesPerRow = 0) {
   std::unique_ptr<Simulator> sim;
   SimulatorOptions options;
   options.handler.compat = false;
   options.handler.sleep = sleep;
+  options.handler.zoneUpdatesPerRow = zoneUpdatesPerRow;
   const Status status = Simulator::create(s.scene, options, sim);
   EXPECT_TRUE(status.isOk()) << status.message();
   return sim;

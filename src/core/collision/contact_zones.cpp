@@ -43,6 +43,7 @@ void ContactZones::reset(int n) {
   });
   rowOf_.clear();
   unsolved_.clear();
+  requeried_.clear();
   solvedRows_ = 0;
   projector_.reset(n);
 }
@@ -142,10 +143,12 @@ int ContactZones::absorb(const Scene& scene, const StepMotion& motion, const Pai
   if (zone < 0) return -1;  // every particle of the pair is fixed
   // A contact whose row a solve has seen and that approaches again is met again: a jam if it
   // repeats. (One whose row is still waiting for its first solve, as contacts of one instant
-  // wait for each other, is not.) Its fresh row (normal of now) replaces the old one.
+  // wait for each other, is not; nor one back only because a solve ran out of budget before
+  // settling it: that solve counted already.) Its fresh row (normal of now) replaces the old one.
   const int* known = rowOf_.find(key);
   const bool solved = known && *known < solvedRows_;
-  if (solved && ++metAgain_[root(zone)] > kMaxZoneProjections && immovable_[root(zone)] && !rigidOnly_) {
+  if (solved && !requeried_[*known]) ++metAgain_[root(zone)];
+  if (solved && metAgain_[root(zone)] > kMaxZoneProjections && immovable_[root(zone)] && !rigidOnly_) {
     // A jam against an obstacle: the contact keeps closing although it was solved for again and
     // again. Its particles stop for the rest of the step (obstacles from now on), not the zone.
     for (int k = 0; k < pair.count; ++k)
@@ -207,10 +210,17 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
         // this zone's: the projector's worklist is shared, so a solve checks every queued row
         // when it succeeds and drops every one when it spends its budget (zones waiting for
         // their solve at this instant included).
+        // Only this zone's contacts are marked as back for its failure, which metAgain_ counted;
+        // another zone's, dropped with the shared worklist, count when they come back: their
+        // zone's solve did not fail, and not counting them let such a zone lose every failure to
+        // its neighbours' and never reach its last resort (chains 2,500, --verify).
         for (uint64_t key : unsolved_) {
           const PairParticles pair = pairParticles(scene, key);
           for (int k = 0; k < pair.count; ++k)
-            if (!scene.isFixed(pair.p[k])) changed.push_back(pair.p[k]);
+            if (!scene.isFixed(pair.p[k])) {
+              changed.push_back(pair.p[k]);
+              if (zoneOf(pair.p[k]) == zone) requeried_[*rowOf_.find(key)] = 1;
+            }
         }
       }
       unsolved_.clear();
@@ -276,11 +286,13 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
     // push that the solve could no longer take back, and that can add energy.
     if (*known >= solvedRows_) return false;
     projector_.setRow(*known, row);
+    requeried_[*known] = 0;
     unsolved_.push_back(key);
     return false;
   }
   const double* last = lastImpulse_.find(key);
   rowOf_.insert(key, projector_.addRow(row, last ? *last : 0.0));
+  requeried_.push_back(0);
   unsolved_.push_back(key);
   return true;
 }

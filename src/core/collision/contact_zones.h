@@ -144,7 +144,7 @@ class ContactZones {
   const Sleepers* sleepers_ = nullptr;
   std::vector<int> parent_;                ///< N: union-find parent, -1 when in no zone
   std::vector<std::vector<int>> members_;  ///< per root: its particles
-  std::vector<int> metAgain_;              ///< per root: contacts back after a solve, failed solves
+  std::vector<int> metAgain_;              ///< per root: contacts back after a solve, failed solves (jam count)
   std::vector<int> solves_;                ///< per root: solves in this step
   std::vector<char> rigid_;                ///< per root: moving rigidly for the rest of the step
   std::vector<char> immovable_;            ///< per root: a fixed particle or a half-plane among its rows
@@ -155,6 +155,10 @@ class ContactZones {
   PairKeyMap<int> rowOf_;                  ///< the projector's row of each pair with one this step
   PairKeyMap<double> lastImpulse_;         ///< each contact's positive impulse at the end of the last step
   std::vector<uint64_t> unsolved_;         ///< pairs whose rows were set since the last solve (any zone's)
+  /// Per projector row: its contact was queried again because a solve spent its budget before
+  /// settling it. Coming back as an event then shows the budget, not a jam (the failed solve was
+  /// counted once, in metAgain_), so it is not counted again. Cleared when the row is set again.
+  std::vector<char> requeried_;
   std::vector<int> queue_;
   std::vector<uint64_t> keys_;
   std::vector<int> moved_;
