@@ -199,7 +199,9 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
       // A zone's first solve in the step may sweep all the rows (warm-started, a resting pile
       // needs few); later solves pay for what they add.
       const int fresh = solves_[zone]++ == 0 ? projector_.rows() : projector_.rows() - solvedRows_;
-      const long budget = updatesPerRow_ * std::max(fresh, 8);
+      const bool jammed = metAgain_[zone] > kMaxZoneProjections;
+      const long perRow = jammed ? std::max(updatesPerRow_ / kJammedBudgetDivisor, 1L) : updatesPerRow_;
+      const long budget = perRow * std::max(fresh, 8);
       solvedRows_ = projector_.rows();
       if (!projector_.solve(rateScale_[zone] / h, kZoneProjectionTolerance, budget)) {
         ++metAgain_[zone];
