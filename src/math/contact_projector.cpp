@@ -27,11 +27,11 @@ void ContactProjector::addBody(int b, double inverseMass, const Vec2& v) {
   inverseMass_.push_back(inverseMass);
 }
 
-int ContactProjector::addRow(const ConstraintRow& row, double warmStart) {
+int ContactProjector::addRow(const ConstraintRow& row, double warmStart, int group) {
   row_.emplace_back();
   queued_.push_back(0);
   const int index = static_cast<int>(row_.size()) - 1;
-  setRow(index, row);
+  setRow(index, row, group);
   if (warmStart > 0.0) apply(index, warmStart);  // from 0
   return index;
 }
@@ -40,9 +40,10 @@ int ContactProjector::addRow(const ConstraintRow& row, double warmStart) {
 // to those of new bodies (a stale entry only queues a row needlessly). Its impulse so far stays
 // applied to the velocities; lambda restarts at 0, so the row can only push further along its new
 // normal: every later update is again a projection onto a half-space through v = 0.
-void ContactProjector::setRow(int index, const ConstraintRow& row) {
+void ContactProjector::setRow(int index, const ConstraintRow& row, int group) {
   Row& k = row_[index];
   k.r = row;
+  k.group = group;
   k.diag = 0;
   k.lambda = 0;
   double normSquared = 0;
@@ -93,7 +94,7 @@ void ContactProjector::queueRowsOf(int slot, int except) {
 // One Gauss-Seidel step on row k (ZoneProjector's, in velocity form): w = G_k v, then
 // lambda' = max(0, lambda - w / A_kk) and v_b += w_b coef_b (lambda' - lambda). Its residual
 // |min(A_kk lambda, w)| / (|G_k| V) is zero exactly when the row is satisfied and complementary.
-bool ContactProjector::solve(double speedScale, double tolerance, long maxUpdates) {
+bool ContactProjector::solve(const double* groupScale, double factor, double tolerance, long maxUpdates) {
   long updates = 0;
   while (head_ < work_.size()) {
     const int k = work_[head_++];
@@ -101,7 +102,7 @@ bool ContactProjector::solve(double speedScale, double tolerance, long maxUpdate
     queued_[k] = 0;
     double w = 0;
     for (int m = 0; m < row.r.count; ++m) w += row.r.coef[m].dot(velocity_[row.r.body[m]]);
-    const double threshold = tolerance * row.norm * speedScale;
+    const double threshold = tolerance * row.norm * (factor * groupScale[row.group]);
     if (row.diag <= 0.0) continue;  // every body immovable: nothing to move (a violation stays)
     // fmin and fmax written out (glibc's own definitions, NaN included): the calls were not
     // inlined, and this loop is the failsafe's.

@@ -1,8 +1,9 @@
 // The failsafe's worklist Gauss-Seidel (ContactProjector) against its promises: a batch solve is
 // the single projection (checked against the active-set enumeration), incremental solves never
 // add energy and end feasible, warm starts from the last impulses make a resting pile cheap,
-// frozen bodies stay put, a body in more rows than it keeps inline is solved as exactly, and a
-// spent budget is reported without gaining energy.
+// frozen bodies stay put, a body in more rows than it keeps inline is solved as exactly, a
+// spent budget is reported without gaining energy, and rows grouped by speed scale each settle
+// to their own group's tolerance.
 #include "fosssim/math/contact_projector.h"
 
 #include <gtest/gtest.h>
@@ -292,6 +293,34 @@ TEST(ContactProjector, SpentBudgetIsReportedAndAddsNoEnergy) {
           << "trial " << trial << " budget " << budget;
     }
   }
+}
+
+// Two independent problems sharing the worklist, a fast one (a disk at 1 m/s into a wall) and a
+// slow one (the same at 10^-12 m/s: the first at another unit of length). Measured against one
+// scale, the fast one's, the slow disk's closing speed 10^-12 is below the tolerance (10^-12 of
+// 1 m/s) and its row passes as settled while it still approaches; with a scale per group each row
+// is held to its own problem's tolerance and the slow disk stops approaching as the fast one does.
+TEST(ContactProjector, EachGroupSettlesToItsOwnSpeedScale) {
+  const Vec2 n(0.0, 1.0);  // both walls' normals
+  const double fast = 1.0, slow = 1e-12;
+  const auto run = [&](bool grouped) {
+    ContactProjector cp;
+    cp.reset(2);
+    cp.addBody(0, 1.0, Vec2(0.5, -fast));
+    cp.addBody(1, 1.0, Vec2(0.5 * slow, -slow));
+    cp.addRow(halfPlaneRow(0, n), 0.0, 0);
+    cp.addRow(halfPlaneRow(1, n), 0.0, grouped ? 1 : 0);
+    const double scales[2] = {fast, slow};
+    EXPECT_TRUE(cp.solve(scales, 1.0, kTol, kLargeBudget));
+    return cp;
+  };
+  const ContactProjector grouped = run(true);
+  EXPECT_GE(grouped.velocity(0).dot(n), -kTol * fast);
+  EXPECT_GE(grouped.velocity(1).dot(n), -kTol * slow);
+  EXPECT_EQ(grouped.velocity(1).x(), 0.5 * slow);  // tangential motion kept
+  // Control: one scale for both leaves the slow disk approaching at its full speed.
+  const ContactProjector shared = run(false);
+  EXPECT_EQ(shared.velocity(1).dot(n), -slow);
 }
 
 }  // namespace

@@ -37,17 +37,25 @@ class ContactProjector {
   /// index. A positive `warmStart` (the contact's impulse of the last step) is applied at once
   /// as its starting multiplier: resting contacts then start where they ended, which is what
   /// makes Gauss-Seidel affordable on a pile at rest (from zero it needs O(depth^2) sweeps).
-  int addRow(const ConstraintRow& row, double warmStart = 0.0);
+  /// `group` indexes the speed scales a solve measures residuals against (see solve).
+  int addRow(const ConstraintRow& row, double warmStart = 0.0, int group = 0);
   /// The multiplier (impulse) of row `index`.
   double impulse(int index) const { return row_[index].lambda; }
   /// Replaces row `index` (a contact's normal of a later time), its impulse so far kept applied
   /// to the velocities and its multiplier restarted at 0; queues it.
-  void setRow(int index, const ConstraintRow& row);
+  void setRow(int index, const ConstraintRow& row, int group = 0);
 
   /// Gauss-Seidel updates from the queued rows until every row it reaches is within `tolerance`
   /// (ZoneProjector's residual, with V = speedScale), or `maxUpdates` updates: false then (the
   /// velocities are still safe, see above, but some contact may approach).
-  bool solve(double speedScale, double tolerance, long maxUpdates);
+  bool solve(double speedScale, double tolerance, long maxUpdates) {
+    return solve(&speedScale, 1.0, tolerance, maxUpdates);  // every row in group 0
+  }
+  /// The same with a speed scale per group of rows: row k's residual is measured against
+  /// V = factor * groupScale[group of k]. Independent problems can then share the worklist (no
+  /// body in two groups' rows moves) and each still settle to its own tolerance: under one
+  /// scale, the largest group's would let a slow group's approaching rows pass as settled.
+  bool solve(const double* groupScale, double factor, double tolerance, long maxUpdates);
 
   const Vec2& velocity(int b) const { return velocity_[slot_[b]]; }
   /// Makes body b immovable from now on, at velocity v (the rigid fallback moves it instead).
@@ -83,6 +91,7 @@ class ContactProjector {
     double diag = 0;        ///< A_kk = G_k M^-1 G_k^T
     double norm = 0;        ///< |G_k|
     double lambda = 0;
+    int group = 0;          ///< index into solve's groupScale
   };
   void apply(int k, double lambda);
   void queue(int k);

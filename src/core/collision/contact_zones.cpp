@@ -203,7 +203,14 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
       const long perRow = jammed ? std::max(updatesPerRow_ / kJammedBudgetDivisor, 1L) : updatesPerRow_;
       const long budget = perRow * std::max(fresh, 8);
       solvedRows_ = projector_.rows();
-      if (!projector_.solve(rateScale_[zone] / h, kZoneProjectionTolerance, budget)) {
+      // Each row settles to its own zone's tolerance (its group: the zone's root when the row
+      // was set), whichever zone's solve runs the shared worklist. Under the solving zone's
+      // tolerance, a slower zone's contact could pass as settled with its closing left above its
+      // own zone's tolerance; that zone's solve would then find nothing queued, and the contact
+      // was never queried again (an edge rotating into a chain's disk deepened 5e-9 unseen:
+      // chains 2,500, --verify). A root merged into another since keeps the smaller scale it had
+      // (scales only grow within a step), so its rows are held, if anything, tighter.
+      if (!projector_.solve(rateScale_.data(), 1.0 / h, kZoneProjectionTolerance, budget)) {
         ++metAgain_[zone];
         // The rows set since the last solve stand for contacts whose events were taken: one that
         // the solve did not reach (its bodies' velocities unchanged) would not be queried again,
@@ -287,13 +294,13 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
     // solve together): it stands. Replacing it would make its warm start, already applied, a
     // push that the solve could no longer take back, and that can add energy.
     if (*known >= solvedRows_) return false;
-    projector_.setRow(*known, row);
+    projector_.setRow(*known, row, z);
     requeried_[*known] = 0;
     unsolved_.push_back(key);
     return false;
   }
   const double* last = lastImpulse_.find(key);
-  rowOf_.insert(key, projector_.addRow(row, last ? *last : 0.0));
+  rowOf_.insert(key, projector_.addRow(row, last ? *last : 0.0, z));
   requeried_.push_back(0);
   unsolved_.push_back(key);
   return true;
