@@ -108,10 +108,9 @@ bool ContactProjector::solve(const double* groupScale, double factor, double tol
     // inlined, and this loop is the failsafe's.
     const double reached = row.diag * row.lambda <= w || std::isnan(w) ? row.diag * row.lambda : w;
     if (std::fabs(reached) <= threshold) continue;
-    if (++updates > maxUpdates) {
-      for (size_t q = head_; q < work_.size(); ++q) queued_[work_[q]] = 0;  // the rows still queued
-      work_.clear();
-      head_ = 0;
+    if (++updates > maxUpdates) {  // row k stays queued, at the front, with the rest
+      queued_[k] = 1;
+      --head_;
       return false;
     }
     const double lambda = row.lambda - w / row.diag;
@@ -120,6 +119,12 @@ bool ContactProjector::solve(const double* groupScale, double factor, double tol
   work_.clear();
   head_ = 0;
   return true;
+}
+
+void ContactProjector::unqueueAll() {
+  for (size_t q = head_; q < work_.size(); ++q) queued_[work_[q]] = 0;
+  work_.clear();
+  head_ = 0;
 }
 
 // A_kk = sum over the row's distinct bodies of w_b |sum of that body's coefficients|^2 (a body

@@ -2,8 +2,8 @@
 // the single projection (checked against the active-set enumeration), incremental solves never
 // add energy and end feasible, warm starts from the last impulses make a resting pile cheap,
 // frozen bodies stay put, a body in more rows than it keeps inline is solved as exactly, a
-// spent budget is reported without gaining energy, and rows grouped by speed scale each settle
-// to their own group's tolerance.
+// spent budget is reported without gaining energy and leaves the rows it did not settle queued,
+// and rows grouped by speed scale each settle to their own group's tolerance.
 #include "fosssim/math/contact_projector.h"
 
 #include <gtest/gtest.h>
@@ -321,6 +321,30 @@ TEST(ContactProjector, EachGroupSettlesToItsOwnSpeedScale) {
   // Control: one scale for both leaves the slow disk approaching at its full speed.
   const ContactProjector shared = run(false);
   EXPECT_EQ(shared.velocity(1).dot(n), -slow);
+}
+
+// Independent problems share the worklist, and a spent budget is one problem's failure: the
+// rows it leaves stay queued, the caller drops that problem's (unqueueIf), and the other
+// problem's rows wait for their own solve. A disk in a V (two rows, queued first) and a disk
+// over a floor (one row, queued last): two updates settle neither the V nor reach the floor.
+TEST(ContactProjector, SpentBudgetLeavesOtherProblemsQueued) {
+  const double a = 0.1;
+  const Vec2 down(0.0, -1.0), floor(0.0, 1.0);
+  ContactProjector cp;
+  cp.reset(2);
+  cp.addBody(0, 1.0, down);
+  cp.addBody(1, 1.0, down);
+  cp.addRow(halfPlaneRow(0, Vec2(std::sin(a), std::cos(a))));
+  cp.addRow(halfPlaneRow(0, Vec2(-std::sin(a), std::cos(a))));
+  cp.addRow(halfPlaneRow(1, floor));
+  ASSERT_FALSE(cp.solve(1.0, kTol, 2));
+  EXPECT_EQ(cp.velocity(1), down);  // the floor's row was not reached
+  cp.unqueueIf([](int body) { return body == 0; });
+  EXPECT_EQ(cp.queuedRows(), 1);  // only the floor's row is left
+  const Vec2 inV = cp.velocity(0);
+  ASSERT_TRUE(cp.solve(1.0, kTol, kLargeBudget));
+  EXPECT_EQ(cp.velocity(0), inV);  // the V's rows were dropped: not solved again
+  EXPECT_GE(cp.velocity(1).dot(floor), -kTol);
 }
 
 }  // namespace

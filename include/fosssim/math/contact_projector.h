@@ -47,7 +47,8 @@ class ContactProjector {
 
   /// Gauss-Seidel updates from the queued rows until every row it reaches is within `tolerance`
   /// (ZoneProjector's residual, with V = speedScale), or `maxUpdates` updates: false then (the
-  /// velocities are still safe, see above, but some contact may approach).
+  /// velocities are still safe, see above, but some contact may approach), and the rows not yet
+  /// settled stay queued for the next solve (unqueueIf, unqueueAll drop them).
   bool solve(double speedScale, double tolerance, long maxUpdates) {
     return solve(&speedScale, 1.0, tolerance, maxUpdates);  // every row in group 0
   }
@@ -56,6 +57,30 @@ class ContactProjector {
   /// body in two groups' rows moves) and each still settle to its own tolerance: under one
   /// scale, the largest group's would let a slow group's approaching rows pass as settled.
   bool solve(const double* groupScale, double factor, double tolerance, long maxUpdates);
+
+  /// Drops from the queue every row with a movable body b for which dropBody(b) holds (a solve
+  /// that spent its budget leaves its rows queued: a caller solving independent problems drops
+  /// only the failed problem's and lets the others' wait for their own solves).
+  template <class Pred>
+  void unqueueIf(Pred&& dropBody) {
+    size_t kept = head_;
+    for (size_t q = head_; q < work_.size(); ++q) {
+      const int k = work_[q];
+      const Row& row = row_[k];
+      bool drop = false;
+      for (int m = 0; m < row.r.count; ++m) {
+        const int s = row.r.body[m];
+        drop = drop || (inverseMass_[s] != 0.0 && dropBody(body_[s].id));
+      }
+      if (drop) queued_[k] = 0;
+      else work_[kept++] = k;
+    }
+    work_.resize(kept);
+  }
+  /// Drops every queued row.
+  void unqueueAll();
+  /// Rows waiting in the queue.
+  int queuedRows() const { return static_cast<int>(work_.size() - head_); }
 
   const Vec2& velocity(int b) const { return velocity_[slot_[b]]; }
   /// Makes body b immovable from now on, at velocity v (the rigid fallback moves it instead).

@@ -197,8 +197,10 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
       // A solve that runs out of its budget leaves safe velocities (no energy gained) that may
       // still let some contact close: that contact comes back as an event, counted as met again.
       // A zone's first solve in the step may sweep all the rows (warm-started, a resting pile
-      // needs few); later solves pay for what they add.
-      const int fresh = solves_[zone]++ == 0 ? projector_.rows() : projector_.rows() - solvedRows_;
+      // needs few); later solves pay for what they add, or for what waits in the queue (its rows
+      // left there by another zone's solve at this instant that spent its budget).
+      const int fresh = solves_[zone]++ == 0 ? projector_.rows()
+                                             : std::max(projector_.rows() - solvedRows_, projector_.queuedRows());
       const bool jammed = metAgain_[zone] > kMaxZoneProjections;
       const long perRow = jammed ? std::max(updatesPerRow_ / kJammedBudgetDivisor, 1L) : updatesPerRow_;
       const long budget = perRow * std::max(fresh, 8);
@@ -212,27 +214,34 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
       // (scales only grow within a step), so its rows are held, if anything, tighter.
       if (!projector_.solve(rateScale_.data(), 1.0 / h, kZoneProjectionTolerance, budget)) {
         ++metAgain_[zone];
+        // A failure is its zone's alone. This zone's rows still queued are dropped; those of
+        // other zones waiting for their solves at this instant stay queued for them (the worklist
+        // is shared: dropping them too sent their contacts back as events counted against zones
+        // whose solves had not failed, and the fed rain pile then had zones moving rigidly in up
+        // to twice as many steps).
+        projector_.unqueueIf([&](int p) { return zoneOf(p) == zone; });
         // The rows set since the last solve stand for contacts whose events were taken: one that
         // the solve did not reach (its bodies' velocities unchanged) would not be queried again,
-        // and its pair would close unseen for the rest of the step. Their particles are queried
-        // again at T, so such a contact comes back as an event (met again). All of them, not only
-        // this zone's: the projector's worklist is shared, so a solve checks every queued row
-        // when it succeeds and drops every one when it spends its budget (zones waiting for
-        // their solve at this instant included).
-        // Only this zone's contacts are marked as back for its failure, which metAgain_ counted;
-        // another zone's, dropped with the shared worklist, count when they come back: their
-        // zone's solve did not fail, and not counting them let such a zone lose every failure to
-        // its neighbours' and never reach its last resort (chains 2,500, --verify).
+        // and its pair would close unseen for the rest of the step. So this zone's are queried
+        // again at T: such a contact comes back as an event, marked as back for this failure,
+        // which metAgain_ counted once.
+        size_t waiting = 0;
         for (uint64_t key : unsolved_) {
           const PairParticles pair = pairParticles(scene, key);
+          bool ours = false;
+          for (int k = 0; k < pair.count; ++k) ours = ours || zoneOf(pair.p[k]) == zone;
+          if (!ours) {
+            unsolved_[waiting++] = key;
+            continue;
+          }
           for (int k = 0; k < pair.count; ++k)
-            if (!scene.isFixed(pair.p[k])) {
-              changed.push_back(pair.p[k]);
-              if (zoneOf(pair.p[k]) == zone) requeried_[*rowOf_.find(key)] = 1;
-            }
+            if (!scene.isFixed(pair.p[k])) changed.push_back(pair.p[k]);
+          requeried_[*rowOf_.find(key)] = 1;
         }
+        unsolved_.resize(waiting);
+      } else {
+        unsolved_.clear();  // every queued row settled, whichever zone's
       }
-      unsolved_.clear();
     } else {
       rigid_[zone] = 1;
     }
