@@ -72,10 +72,10 @@ constexpr long kZoneUpdatesPerRow = 100;
 /// Gauss-Seidel updates, and those of zones past the limit 68%. Measured with the contacts a
 /// budget-ended solve leaves not counted as jams (see ContactZones::requeried_), 1/10 against the
 /// full budget: pile-rest 2,500 (200 steps) 6.8 -> 3.5 s, pile-low-cor0.5 2,500 (600 steps)
-/// 23 -> 11 ms/step, and rain 800-3,000 (300 steps) has rigid zones in no more steps than
-/// before (8-144 instead of 15-179); the price: those piles end 1-4% higher in energy (less
-/// settled within the step's budget). 1/100 gained little more (3.1 s). (Figures of both
-/// changes on the benchmark, chains' price included: README, Performance > Dense piles.)
+/// 23 -> 11 ms/step, rain 800-3,000 (400 steps) 2.8-5.3 -> 1.9-4.0 ms/step; the price: those
+/// piles end 1-4% higher in energy (less settled within the step's budget). 1/100 gained little
+/// more (3.1 s). (Figures of the session's changes together, what they cost included: README,
+/// Performance > Dense piles.)
 constexpr long kJammedBudgetDivisor = 10;
 
 /// A solve looks for new neighbours only around particles whose rate it changed by more than
