@@ -121,8 +121,11 @@ bool ContactProjector::solve(const double* groupScale, double factor, double tol
   return true;
 }
 
-void ContactProjector::unqueueAll() {
-  for (size_t q = head_; q < work_.size(); ++q) queued_[work_[q]] = 0;
+void ContactProjector::takeQueued(std::vector<int>& out) {
+  for (size_t q = head_; q < work_.size(); ++q) {
+    queued_[work_[q]] = 0;
+    out.push_back(work_[q]);
+  }
   work_.clear();
   head_ = 0;
 }

@@ -2,8 +2,9 @@
 // the single projection (checked against the active-set enumeration), incremental solves never
 // add energy and end feasible, warm starts from the last impulses make a resting pile cheap,
 // frozen bodies stay put, a body in more rows than it keeps inline is solved as exactly, a
-// spent budget is reported without gaining energy and leaves the rows it did not settle queued,
-// and rows grouped by speed scale each settle to their own group's tolerance.
+// spent budget is reported without gaining energy and leaves the rows it did not settle queued
+// (to be dropped or set aside per problem), and rows grouped by speed scale each settle to their
+// own group's tolerance.
 #include "fosssim/math/contact_projector.h"
 
 #include <gtest/gtest.h>
@@ -324,9 +325,10 @@ TEST(ContactProjector, EachGroupSettlesToItsOwnSpeedScale) {
 }
 
 // Independent problems share the worklist, and a spent budget is one problem's failure: the
-// rows it leaves stay queued, the caller drops that problem's (unqueueIf), and the other
-// problem's rows wait for their own solve. A disk in a V (two rows, queued first) and a disk
-// over a floor (one row, queued last): two updates settle neither the V nor reach the floor.
+// rows it leaves stay queued, the caller drops that problem's (unqueueIf) and sets the other's
+// aside (takeQueued) until their own solve (queueRow). A disk in a V (two rows, queued first)
+// and a disk over a floor (one row, queued last): two updates settle neither the V nor reach
+// the floor.
 TEST(ContactProjector, SpentBudgetLeavesOtherProblemsQueued) {
   const double a = 0.1;
   const Vec2 down(0.0, -1.0), floor(0.0, 1.0);
@@ -341,7 +343,16 @@ TEST(ContactProjector, SpentBudgetLeavesOtherProblemsQueued) {
   EXPECT_EQ(cp.velocity(1), down);  // the floor's row was not reached
   cp.unqueueIf([](int body) { return body == 0; });
   EXPECT_EQ(cp.queuedRows(), 1);  // only the floor's row is left
+  EXPECT_TRUE(cp.moves(2, [](int body) { return body == 1; }));
+  EXPECT_FALSE(cp.moves(2, [](int body) { return body == 0; }));
+  std::vector<int> aside;
+  cp.takeQueued(aside);
+  EXPECT_EQ(aside, std::vector<int>{2});
+  EXPECT_EQ(cp.queuedRows(), 0);
   const Vec2 inV = cp.velocity(0);
+  ASSERT_TRUE(cp.solve(1.0, kTol, 0));  // nothing queued: no update needed
+  EXPECT_EQ(cp.velocity(1), down);
+  cp.queueRow(aside[0]);
   ASSERT_TRUE(cp.solve(1.0, kTol, kLargeBudget));
   EXPECT_EQ(cp.velocity(0), inV);  // the V's rows were dropped: not solved again
   EXPECT_GE(cp.velocity(1).dot(floor), -kTol);

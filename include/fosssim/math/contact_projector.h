@@ -48,7 +48,7 @@ class ContactProjector {
   /// Gauss-Seidel updates from the queued rows until every row it reaches is within `tolerance`
   /// (ZoneProjector's residual, with V = speedScale), or `maxUpdates` updates: false then (the
   /// velocities are still safe, see above, but some contact may approach), and the rows not yet
-  /// settled stay queued for the next solve (unqueueIf, unqueueAll drop them).
+  /// settled stay queued for the next solve (unqueueIf drops some, takeQueued sets them aside).
   bool solve(double speedScale, double tolerance, long maxUpdates) {
     return solve(&speedScale, 1.0, tolerance, maxUpdates);  // every row in group 0
   }
@@ -66,19 +66,26 @@ class ContactProjector {
     size_t kept = head_;
     for (size_t q = head_; q < work_.size(); ++q) {
       const int k = work_[q];
-      const Row& row = row_[k];
-      bool drop = false;
-      for (int m = 0; m < row.r.count; ++m) {
-        const int s = row.r.body[m];
-        drop = drop || (inverseMass_[s] != 0.0 && dropBody(body_[s].id));
-      }
-      if (drop) queued_[k] = 0;
+      if (moves(k, dropBody)) queued_[k] = 0;
       else work_[kept++] = k;
     }
     work_.resize(kept);
   }
-  /// Drops every queued row.
-  void unqueueAll();
+  /// Moves every queued row, in queue order, out of the queue and onto `out` (to be queued again
+  /// with queueRow when its problem is solved).
+  void takeQueued(std::vector<int>& out);
+  /// Queues row k (if it is not queued).
+  void queueRow(int k) { queue(k); }
+  /// Whether row k has a movable body b for which pred(b) holds.
+  template <class Pred>
+  bool moves(int k, Pred&& pred) const {
+    const Row& row = row_[k];
+    for (int m = 0; m < row.r.count; ++m) {
+      const int s = row.r.body[m];
+      if (inverseMass_[s] != 0.0 && pred(body_[s].id)) return true;
+    }
+    return false;
+  }
   /// Rows waiting in the queue.
   int queuedRows() const { return static_cast<int>(work_.size() - head_); }
 

@@ -43,6 +43,7 @@ void ContactZones::reset(int n) {
   });
   rowOf_.clear();
   unsolved_.clear();
+  waiting_.clear();
   requeried_.clear();
   solvedRows_ = 0;
   projector_.reset(n);
@@ -198,7 +199,8 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
       // still let some contact close: that contact comes back as an event, counted as met again.
       // A zone's first solve in the step may sweep all the rows (warm-started, a resting pile
       // needs few); later solves pay for what they add, or for what waits in the queue (its rows
-      // left there by another zone's solve at this instant that spent its budget).
+      // set aside by another zone's solve at this instant that spent its budget).
+      if (!waiting_.empty()) requeueWaiting(zone);
       const int fresh = solves_[zone]++ == 0 ? projector_.rows()
                                              : std::max(projector_.rows() - solvedRows_, projector_.queuedRows());
       const bool jammed = metAgain_[zone] > kMaxZoneProjections;
@@ -215,32 +217,28 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
       if (!projector_.solve(rateScale_.data(), 1.0 / h, kZoneProjectionTolerance, budget)) {
         ++metAgain_[zone];
         // A failure is its zone's alone. This zone's rows still queued are dropped; those of
-        // other zones waiting for their solves at this instant stay queued for them (the worklist
-        // is shared: dropping them too sent their contacts back as events counted against zones
-        // whose solves had not failed, and the fed rain pile then had zones moving rigidly in up
-        // to twice as many steps).
+        // other zones waiting for their solves at this instant are set aside for those solves
+        // (the worklist is shared: dropping them too sent their contacts back as events counted
+        // against zones whose solves had not failed, and the fed rain pile then had zones moving
+        // rigidly in up to twice as many steps; leaving them queued let this zone's next solves
+        // spend their budgets on them).
         projector_.unqueueIf([&](int p) { return zoneOf(p) == zone; });
+        projector_.takeQueued(waiting_);
         // The rows set since the last solve stand for contacts whose events were taken: one that
         // the solve did not reach (its bodies' velocities unchanged) would not be queried again,
         // and its pair would close unseen for the rest of the step. So this zone's are queried
         // again at T: such a contact comes back as an event, marked as back for this failure,
         // which metAgain_ counted once.
-        size_t waiting = 0;
-        for (uint64_t key : unsolved_) {
+        takeUnsolved(scene, zone, [&](uint64_t key) {
           const PairParticles pair = pairParticles(scene, key);
-          bool ours = false;
-          for (int k = 0; k < pair.count; ++k) ours = ours || zoneOf(pair.p[k]) == zone;
-          if (!ours) {
-            unsolved_[waiting++] = key;
-            continue;
-          }
           for (int k = 0; k < pair.count; ++k)
             if (!scene.isFixed(pair.p[k])) changed.push_back(pair.p[k]);
           requeried_[*rowOf_.find(key)] = 1;
-        }
-        unsolved_.resize(waiting);
+        });
+      } else if (waiting_.empty()) {
+        unsolved_.clear();  // every row settled, whichever zone's
       } else {
-        unsolved_.clear();  // every queued row settled, whichever zone's
+        takeUnsolved(scene, zone, [](uint64_t) {});  // this zone's settled; the rows set aside wait
       }
     } else {
       rigid_[zone] = 1;
@@ -267,8 +265,29 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
     candidates.settle();
     int added = 0;
     zone = grow(scene, motion, candidates, zone, T, h, added);
-    if (added == 0) return;
+    // Growing may have merged a zone whose rows wait set aside (a pair can join without a row of
+    // its own, at coincident centres): they are this zone's now, and only its solve settles them.
+    if (added == 0 && (rigid_[zone] || !waitingFor(zone))) return;
   }
+}
+
+// Queues again the rows set aside for zone `zone` (those of zones that rigid motion or a jam
+// froze are dropped: no solve can move their bodies).
+bool ContactZones::waitingFor(int zone) const {
+  for (int k : waiting_)
+    if (projector_.moves(k, [&](int p) { return zoneOf(p) == zone; })) return true;
+  return false;
+}
+
+void ContactZones::requeueWaiting(int zone) {
+  size_t kept = 0;
+  for (int k : waiting_) {
+    if (projector_.moves(k, [&](int p) { return zoneOf(p) == zone; }))
+      projector_.queueRow(k);
+    else if (projector_.moves(k, [](int) { return true; }))
+      waiting_[kept++] = k;
+  }
+  waiting_.resize(kept);
 }
 
 bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone, uint64_t key, double T,

@@ -150,6 +150,21 @@ class ContactZones {
   template <class Position>
   math::ConstraintRow contactRow(const Scene& scene, uint64_t key, Position&& position, Vec2& normal) const;
   bool near(const Scene& scene, const StepMotion& motion, uint64_t key, double T) const;
+  void requeueWaiting(int zone);
+  bool waitingFor(int zone) const;
+  /// Removes zone `zone`'s pairs from unsolved_, calling take(key) for each.
+  template <class Take>
+  void takeUnsolved(const Scene& scene, int zone, Take&& take) {
+    size_t kept = 0;
+    for (uint64_t key : unsolved_) {
+      const PairParticles pair = pairParticles(scene, key);
+      bool ours = false;
+      for (int k = 0; k < pair.count; ++k) ours = ours || zoneOf(pair.p[k]) == zone;
+      if (ours) take(key);
+      else unsolved_[kept++] = key;
+    }
+    unsolved_.resize(kept);
+  }
   void moveRigidly(const Scene& scene, const StepMotion& motion, int zone, double T);
 
   bool rigidOnly_ = false;
@@ -168,6 +183,9 @@ class ContactZones {
   PairKeyMap<int> rowOf_;                  ///< the projector's row of each pair with one this step
   PairKeyMap<double> lastImpulse_;         ///< each contact's positive impulse at the end of the last step
   std::vector<uint64_t> unsolved_;         ///< pairs whose rows were set since the last solve (any zone's)
+  /// Projector rows of zones waiting for their solves at this instant, set aside (out of the
+  /// queue) when another zone's solve spent its budget; requeueWaiting queues a zone's again.
+  std::vector<int> waiting_;
   /// Per projector row: its contact was queried again because a solve spent its budget before
   /// settling it. Coming back as an event then shows the budget, not a jam (the failed solve was
   /// counted once, in metAgain_), so it is not counted again. Cleared when the row is set again.
