@@ -271,14 +271,15 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
   }
 }
 
-// Queues again the rows set aside for zone `zone` (those of zones that rigid motion or a jam
-// froze are dropped: no solve can move their bodies).
+// Whether rows set aside wait for zone `zone`'s solve.
 bool ContactZones::waitingFor(int zone) const {
   for (int k : waiting_)
     if (projector_.moves(k, [&](int p) { return zoneOf(p) == zone; })) return true;
   return false;
 }
 
+// Queues again the rows set aside for zone `zone` (those of zones that rigid motion or a jam
+// froze are dropped: no solve can move their bodies).
 void ContactZones::requeueWaiting(int zone) {
   size_t kept = 0;
   for (int k : waiting_) {
