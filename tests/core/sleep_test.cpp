@@ -76,6 +76,34 @@ TEST(Sleep, ADiskHittingASleeperWakesItInTheSameStepAndGivesItsSpeed) {
   }
 }
 
+TEST(Sleep, ASleeperHitByADiskThatWasStillWakesAtTheImpact) {
+  // A Newton's cradle without gravity (COR 1, equal masses, on the x axis): disks 0 and 1 rest
+  // 1 mm apart and fall asleep at step kStepsToSleep; disk 2 arrives at 0.5 m/s and hits disk 1
+  // 0.2 into step 81, which crosses the gap and hits disk 0 0.4 into it. Disk 1 was still in
+  // step 80, so only the impact itself can wake disk 0 (a moving neighbour wakes sleepers at a
+  // step's start). It closes at 0.5 m/s, 50 times disk 0's sleep speed (10^-3 r / h = 0.01 m/s),
+  // and there are no forces: disk 0 must wake and take all the speed, disks 1 and 2 stop.
+  // (The wake rule once compared that speed in metres per step, 0.005, with the sleep speed in
+  // m/s: disk 0 stayed asleep and disk 1 bounced off it as off a wall.)
+  for (const char* type : kEventTypes) {
+    SCOPED_TRACE(type);
+    TestScene s = contactScene(type, 1.0);
+    addBody(s, 1.0, Vec2(0.0, 0.0), Vec2::Zero(), kR);
+    addBody(s, 1.0, Vec2(-2 * kR - 1e-3, 0.0), Vec2::Zero(), kR);
+    addBody(s, 1.0, Vec2(-4 * kR - 1e-3 - 0.401, 0.0), Vec2(0.5, 0.0), kR);
+    auto sim = defaultModeSimulator(s, true);
+    int asleepMost = 0;
+    for (int k = 0; k < 90; ++k) {
+      ASSERT_TRUE(stepClean(*sim, s));
+      asleepMost = std::max(asleepMost, sim->stats().asleep);
+    }
+    EXPECT_EQ(asleepMost, 2) << "disks 0 and 1 should have slept before the hit";
+    EXPECT_NEAR(at(s.state.v, 0).x(), 0.5, 1e-12);
+    EXPECT_NEAR(at(s.state.v, 1).x(), 0.0, 1e-12);
+    EXPECT_NEAR(at(s.state.v, 2).x(), 0.0, 1e-12);
+  }
+}
+
 TEST(Sleep, ASleeperWhoseSupportIsKnockedAwayFalls) {
   // Disk 2 sits on disk 0; both are asleep by the time disk 1 slides in at 2 m/s and knocks
   // disk 0 away (COR 0: both go on at 1 m/s).

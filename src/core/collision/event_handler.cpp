@@ -295,7 +295,8 @@ void EventHandler::respond(const Scene& scene, const Event& e, State& state, Ste
   double deepest = -1.0;
   if (closing <= kRestingClosingFraction * scale && (deepest = deepestTime()) < 0.0) return;
   const bool curving = deepest >= 0.0;
-  if (sleepers_.any()) wakeIfHit(scene, e.key, curving ? 0.0 : closing, *ctx.stats);
+  // closing is a rate (displacement per step); the wake rule compares speeds.
+  if (sleepers_.any()) wakeIfHit(scene, e.key, curving ? 0.0 : closing / h, *ctx.stats);
 
   // A contact is inside one rigid zone (exempt) only if every particle of it moves with that zone:
   // a half-plane or a fixed particle met by a rigid zone is an obstacle, which joins the zone. A

@@ -76,7 +76,8 @@ class EventHandler final : public CollisionHandler {
   bool stale(const Scene& scene, const Event& e) const;
   /// Whether the pair cannot meet: a sleeper and nothing that moves (the others fixed or asleep).
   bool sleepingPair(const Scene& scene, uint64_t key) const;
-  /// Wakes the sleepers of the event's pair if it closes harder than resting contact (sleepers.h).
+  /// Wakes the sleepers of the event's pair if it closes harder than resting contact (sleepers.h);
+  /// closing: its closing speed (m/s, as the kicks and the sleep speed it is compared with).
   void wakeIfHit(const Scene& scene, uint64_t key, double closing, StepStats& stats);
   /// Wakes every sleeper among the candidates of a particle that moved in the last step.
   void wakeNearMoving(const Scene& scene, StepStats& stats);
