@@ -104,6 +104,30 @@ TEST(Sleep, ASleeperHitByADiskThatWasStillWakesAtTheImpact) {
   }
 }
 
+TEST(Sleep, AHitRunsThroughARowOfTouchingSleepersInTheSameStep) {
+  // The same cradle with four touching sleepers (radius 1/8, centres 1/4 apart: exact in binary,
+  // so they touch without overlapping). Only the first is within the moving disk's reach at the
+  // step's start; each of the others is woken by its neighbour's impact within the step, as the
+  // impulse runs along the row (COR 1, one contact after another): the far disk leaves at 0.5 m/s
+  // and the rest stop, whatever the step.
+  for (const char* type : kEventTypes) {
+    SCOPED_TRACE(type);
+    const double r = 0.125;
+    TestScene s = contactScene(type, 1.0);
+    for (int k = 0; k < 4; ++k) addBody(s, 1.0, Vec2(-0.25 * k, 0.0), Vec2::Zero(), r);
+    addBody(s, 1.0, Vec2(-0.75 - 2 * r - 0.401, 0.0), Vec2(0.5, 0.0), r);
+    auto sim = defaultModeSimulator(s, true);
+    int asleepMost = 0;
+    for (int k = 0; k < 90; ++k) {
+      ASSERT_TRUE(stepClean(*sim, s));
+      asleepMost = std::max(asleepMost, sim->stats().asleep);
+    }
+    EXPECT_EQ(asleepMost, 4) << "the row should have slept before the hit";
+    EXPECT_NEAR(at(s.state.v, 0).x(), 0.5, 1e-12);
+    for (int k = 1; k < 5; ++k) EXPECT_NEAR(at(s.state.v, k).norm(), 0.0, 1e-12) << "disk " << k;
+  }
+}
+
 TEST(Sleep, ASleeperWhoseSupportIsKnockedAwayFalls) {
   // Disk 2 sits on disk 0; both are asleep by the time disk 1 slides in at 2 m/s and knocks
   // disk 0 away (COR 0: both go on at 1 m/s).
