@@ -1,0 +1,141 @@
+// ContactZones' rows: which pairs are near enough to join a zone, and the constraint row of each
+// contact (contact_zones.h). Geometry only: no solve, no zone bookkeeping beyond what a row sets.
+#include "contact_zones.h"
+
+#include "pair_query.h"
+
+#include "fosssim/math/geometry.h"
+
+#include <algorithm>
+
+namespace fosssim {
+namespace {
+
+Vec2 unit(const Vec2& a) {
+  const double n = a.norm();
+  return n > 0.0 ? Vec2(a / n) : Vec2(Vec2::Zero());
+}
+
+}  // namespace
+
+// Could the pair touch before the step ends? Its distance at T against the radius sum plus what
+// the pair can close in the rest of the step, and the boxes of its remaining motions (grown by
+// the radii) must meet. The box test keeps zones from depending on the broad phase: its boxes
+// contain these, so every pair found near here is among its candidates.
+bool ContactZones::near(const Scene& scene, const StepMotion& motion, uint64_t key, double T) const {
+  const int i = keyParticle(key), other = keyOther(key);
+  const Vec2 x = motion.at(i, T);
+  const double left = 1.0 - T;
+  auto box = [&](int p, double grow) {
+    const Vec2 a = motion.at(p, T), b = motion.end().segment<2>(2 * p);
+    return Box{std::min(a.x(), b.x()) - grow, std::min(a.y(), b.y()) - grow, std::max(a.x(), b.x()) + grow,
+               std::max(a.y(), b.y()) + grow};
+  };
+  switch (keyKind(key)) {
+    case PairKind::ParticleParticle: {
+      const double rs = (scene.radius[i] + scene.radius[other]) * (1.0 + kTouchingSlack);
+      const double reach = rs + left * (motion.rate(other) - motion.rate(i)).norm();
+      return overlap(box(i, rs), box(other, 0.0)) && (motion.at(other, T) - x).squaredNorm() <= reach * reach;
+    }
+    case PairKind::ParticleEdge: {
+      const Edge& e = scene.edges[other];
+      const double rs = (scene.radius[i] + e.radius) * (1.0 + kTouchingSlack);
+      const double reach = rs + left * (motion.rate(i).norm() + motion.rate(e.i).norm() + motion.rate(e.j).norm());
+      const Box a = box(e.i, 0.0), b = box(e.j, 0.0);
+      const Box edge{std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
+      return overlap(box(i, rs), edge) &&
+             math::segmentContactVector(x, motion.at(e.i, T), motion.at(e.j, T)).squaredNorm() <= reach * reach;
+    }
+    case PairKind::ParticleHalfPlane: {
+      // The signed distance is linear in time: its extremes over [T, 1] are at the two ends.
+      const HalfPlane& h = scene.halfplanes[other];
+      const Vec2 n = unit(h.normal);
+      const double r = scene.radius[i] * (1.0 + kTouchingSlack);
+      const double s0 = (x - h.point).dot(n), s1 = s0 + left * motion.rate(i).dot(n);
+      return std::min(s0, s1) <= r && std::max(s0, s1) >= -r;
+    }
+  }
+  return false;
+}
+
+bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone, uint64_t key, double T,
+                          double deepest) {
+  const int z = root(zone);
+  const PairParticles pair = pairParticles(scene, key);
+  immovable_[z] = immovable_[z] || keyKind(key) == PairKind::ParticleHalfPlane;
+  for (int k = 0; k < pair.count; ++k)
+    immovable_[z] = immovable_[z] || (isImmobile(scene, pair.p[k]) && zoneOf(pair.p[k]) != z);
+  Vec2 n = Vec2::Zero();
+  math::ConstraintRow row = contactRow(scene, key, [&](int p) { return motion.at(p, T); }, n);
+  // A contact that does not close at T but deepens later in the step (an edge rotating under a
+  // resting disk) takes the normal where it would overlap deepest: only that normal sees the
+  // approach. (One row per contact: two nearly parallel rows would stall Gauss-Seidel.)
+  double scale = 0, alpha = 0;
+  if (keyKind(key) == PairKind::ParticleEdge) {
+    const Edge& e = scene.edges[keyOther(key)];
+    alpha = math::segmentParameterClamped(motion.at(keyParticle(key), T), motion.at(e.i, T), motion.at(e.j, T));
+  }
+  const auto rate = [&](int p) { return motion.rate(p); };
+  if (deepest >= 0.0) {  // the caller found it deepening already
+    row = contactRow(scene, key, [&](int p) { return motion.at(p, deepest); }, n);
+  } else if (closingSpeed(scene, key, n, alpha, rate, scale) <= kRestingClosingFraction * scale) {
+    const auto position = [&](int p, double t) { return motion.at(p, t); };
+    double length = 0, td = 1.0;
+    if (pairDeepening(scene, key, position, T, 1.0, length, &td) > kDepthTolerance * length)
+      row = contactRow(scene, key, [&](int p) { return motion.at(p, td); }, n);
+  }
+  if (n == Vec2::Zero()) return false;  // coincident centres: no direction to keep apart along
+  if (const int* known = rowOf_.find(key)) {
+    // A row no solve has seen yet was set at this instant (contacts of one instant wait for one
+    // solve together): it stands. Replacing it would make its warm start, already applied, a
+    // push that the solve could no longer take back, and that can add energy.
+    if (*known >= solvedRows_) return false;
+    projector_.setRow(*known, row, z);
+    requeried_[*known] = 0;
+    unsolved_.push_back(key);
+    return false;
+  }
+  const double* last = lastImpulse_.find(key);
+  rowOf_.insert(key, projector_.addRow(row, last ? *last : 0.0, z));
+  requeried_.push_back(0);
+  unsolved_.push_back(key);
+  return true;
+}
+
+// Rows, n·(relative velocity) >= 0 with n the unit contact normal (from the particle toward the
+// other object), written as sum_k coef_k · v_k >= 0:
+//   particle-particle (i, j):       n·(v_j - v_i)                       >= 0
+//   particle-edge (p; a, b; alpha): n·((1 - alpha) v_a + alpha v_b - v_p) >= 0
+//   particle-half-plane (p):        -n·v_p = m^·v_p                     >= 0
+template <class Position>
+math::ConstraintRow ContactZones::contactRow(const Scene& scene, uint64_t key, Position&& position, Vec2& n) const {
+  const int i = keyParticle(key), other = keyOther(key);
+  const Vec2 x = position(i);
+  math::ConstraintRow row;
+  switch (keyKind(key)) {
+    case PairKind::ParticleParticle:
+      n = unit(position(other) - x);
+      row.count = 2;
+      row.body[0] = i, row.coef[0] = -n;
+      row.body[1] = other, row.coef[1] = n;
+      break;
+    case PairKind::ParticleEdge: {
+      const Edge& e = scene.edges[other];
+      double alpha = 0;
+      n = unit(math::segmentContactVector(x, position(e.i), position(e.j), &alpha));
+      row.count = 3;
+      row.body[0] = i, row.coef[0] = -n;
+      row.body[1] = e.i, row.coef[1] = (1.0 - alpha) * n;
+      row.body[2] = e.j, row.coef[2] = alpha * n;
+      break;
+    }
+    case PairKind::ParticleHalfPlane:
+      n = -unit(scene.halfplanes[other].normal);
+      row.count = 1;
+      row.body[0] = i, row.coef[0] = -n;
+      break;
+  }
+  return row;
+}
+
+}  // namespace fosssim
