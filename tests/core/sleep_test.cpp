@@ -76,6 +76,25 @@ TEST(Sleep, ADiskHittingASleeperWakesItInTheSameStepAndGivesItsSpeed) {
   }
 }
 
+/// A Newton's cradle without gravity (scene s: COR 1): equal disks of radius r at rest at (x, 0)
+/// for each x of `rest` (descending), and one more starting 0.401 m short of touching the last of
+/// them, moving at 0.5 m/s toward them (dt 0.01: it arrives 0.2 into step 81, long after the
+/// others fell asleep at step kStepsToSleep). Runs 90 steps; returns the most disks asleep at once.
+int runCradleIntoSleepers(TestScene& s, const std::vector<double>& rest, double r) {
+  for (double x : rest) addBody(s, 1.0, Vec2(x, 0.0), Vec2::Zero(), r);
+  addBody(s, 1.0, Vec2(rest.back() - 2 * r - 0.401, 0.0), Vec2(0.5, 0.0), r);
+  auto sim = defaultModeSimulator(s, true);
+  int asleepMost = 0;
+  for (int k = 0; k < 90; ++k) {
+    if (const auto clean = stepClean(*sim, s); !clean) {
+      ADD_FAILURE() << "step " << k << ": " << clean.message();
+      return -1;
+    }
+    asleepMost = std::max(asleepMost, sim->stats().asleep);
+  }
+  return asleepMost;
+}
+
 TEST(Sleep, ASleeperHitByADiskThatWasStillWakesAtTheImpact) {
   // A Newton's cradle without gravity (COR 1, equal masses, on the x axis): disks 0 and 1 rest
   // 1 mm apart and fall asleep at step kStepsToSleep; disk 2 arrives at 0.5 m/s and hits disk 1
@@ -88,16 +107,7 @@ TEST(Sleep, ASleeperHitByADiskThatWasStillWakesAtTheImpact) {
   for (const char* type : kEventTypes) {
     SCOPED_TRACE(type);
     TestScene s = contactScene(type, 1.0);
-    addBody(s, 1.0, Vec2(0.0, 0.0), Vec2::Zero(), kR);
-    addBody(s, 1.0, Vec2(-2 * kR - 1e-3, 0.0), Vec2::Zero(), kR);
-    addBody(s, 1.0, Vec2(-4 * kR - 1e-3 - 0.401, 0.0), Vec2(0.5, 0.0), kR);
-    auto sim = defaultModeSimulator(s, true);
-    int asleepMost = 0;
-    for (int k = 0; k < 90; ++k) {
-      ASSERT_TRUE(stepClean(*sim, s));
-      asleepMost = std::max(asleepMost, sim->stats().asleep);
-    }
-    EXPECT_EQ(asleepMost, 2) << "disks 0 and 1 should have slept before the hit";
+    EXPECT_EQ(runCradleIntoSleepers(s, {0.0, -2 * kR - 1e-3}, kR), 2) << "disks 0 and 1 should have slept before the hit";
     EXPECT_NEAR(at(s.state.v, 0).x(), 0.5, 1e-12);
     EXPECT_NEAR(at(s.state.v, 1).x(), 0.0, 1e-12);
     EXPECT_NEAR(at(s.state.v, 2).x(), 0.0, 1e-12);
@@ -112,17 +122,8 @@ TEST(Sleep, AHitRunsThroughARowOfTouchingSleepersInTheSameStep) {
   // and the rest stop, whatever the step.
   for (const char* type : kEventTypes) {
     SCOPED_TRACE(type);
-    const double r = 0.125;
     TestScene s = contactScene(type, 1.0);
-    for (int k = 0; k < 4; ++k) addBody(s, 1.0, Vec2(-0.25 * k, 0.0), Vec2::Zero(), r);
-    addBody(s, 1.0, Vec2(-0.75 - 2 * r - 0.401, 0.0), Vec2(0.5, 0.0), r);
-    auto sim = defaultModeSimulator(s, true);
-    int asleepMost = 0;
-    for (int k = 0; k < 90; ++k) {
-      ASSERT_TRUE(stepClean(*sim, s));
-      asleepMost = std::max(asleepMost, sim->stats().asleep);
-    }
-    EXPECT_EQ(asleepMost, 4) << "the row should have slept before the hit";
+    EXPECT_EQ(runCradleIntoSleepers(s, {0.0, -0.25, -0.5, -0.75}, 0.125), 4) << "the row should have slept before the hit";
     EXPECT_NEAR(at(s.state.v, 0).x(), 0.5, 1e-12);
     for (int k = 1; k < 5; ++k) EXPECT_NEAR(at(s.state.v, k).norm(), 0.0, 1e-12) << "disk " << k;
   }
