@@ -42,6 +42,7 @@ int ContactProjector::addRow(const ConstraintRow& row, double warmStart, int gro
 // normal: every later update is again a projection onto a half-space through v = 0.
 void ContactProjector::setRow(int index, const ConstraintRow& row, int group) {
   Row& k = row_[index];
+  k.replaced += k.lambda;
   k.r = row;
   k.group = group;
   k.diag = 0;

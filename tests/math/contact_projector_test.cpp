@@ -1,10 +1,10 @@
 // The failsafe's worklist Gauss-Seidel (ContactProjector) against its promises: a batch solve is
 // the single projection (checked against the active-set enumeration), incremental solves never
-// add energy and end feasible, warm starts from the last impulses make a resting pile cheap,
-// frozen bodies stay put, a body in more rows than it keeps inline is solved as exactly, a
-// spent budget is reported without gaining energy and leaves the rows it did not settle queued
-// (to be dropped or set aside per problem), and rows grouped by speed scale each settle to their
-// own group's tolerance.
+// add energy and end feasible, warm starts from the last impulses make a resting pile cheap (a
+// replaced row's impulse counts in its total), frozen bodies stay put, a body in more rows than
+// it keeps inline is solved as exactly, a spent budget is reported without gaining energy and
+// leaves the rows it did not settle queued (to be dropped or set aside per problem), and rows
+// grouped by speed scale each settle to their own group's tolerance.
 #include "fosssim/math/contact_projector.h"
 
 #include <gtest/gtest.h>
@@ -138,6 +138,26 @@ TEST(ContactProjector, WarmStartFromTheLastImpulsesSettlesARestingColumnAtOnce) 
 
 // A disk jammed among many contacts (a hub: more rows than a body stores beside it) must still have
 // every row revisited when any of them moves it: the batch solve equals the single projection.
+// A replaced row (setRow: the contact's normal of a later time) restarts its multiplier at 0 and
+// keeps the impulse it applied; totalImpulse counts both, the contact's whole impulse. Worked by
+// hand: a unit mass falling at 1 m/s onto the floor row v_y >= 0 takes the impulse 1 and stops;
+// replaced by the row 0.6 v_x + 0.8 v_y >= 0, which rest satisfies, it takes nothing more.
+TEST(ContactProjector, ReplacedRowsKeepTheirImpulseInTheTotal) {
+  ContactProjector cp;
+  cp.reset(1);
+  cp.addBody(0, 1.0, Vec2(0.0, -1.0));
+  const int k = cp.addRow(halfPlaneRow(0, Vec2(0.0, 1.0)));
+  ASSERT_TRUE(cp.solve(1.0, kTol, kLargeBudget));
+  EXPECT_EQ(cp.impulse(k), 1.0);
+  EXPECT_EQ(cp.totalImpulse(k), 1.0);
+  EXPECT_EQ(cp.velocity(0), Vec2(0.0, 0.0));
+  cp.setRow(k, halfPlaneRow(0, Vec2(0.6, 0.8)));
+  ASSERT_TRUE(cp.solve(1.0, kTol, kLargeBudget));
+  EXPECT_EQ(cp.impulse(k), 0.0);
+  EXPECT_EQ(cp.totalImpulse(k), 1.0);
+  EXPECT_EQ(cp.velocity(0), Vec2(0.0, 0.0));
+}
+
 TEST(ContactProjector, ABodyInMoreRowsThanItStoresInlineIsSolvedExactly) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> spread(-1.4, 1.4), speed(0.5, 2.0);

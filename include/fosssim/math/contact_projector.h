@@ -39,10 +39,13 @@ class ContactProjector {
   /// makes Gauss-Seidel affordable on a pile at rest (from zero it needs O(depth^2) sweeps).
   /// `group` indexes the speed scales a solve measures residuals against (see solve).
   int addRow(const ConstraintRow& row, double warmStart = 0.0, int group = 0);
-  /// The multiplier (impulse) of row `index`.
+  /// The multiplier (impulse) of row `index` along its current normal.
   double impulse(int index) const { return row_[index].lambda; }
+  /// The impulse row `index` has applied since it was added: its multiplier plus those of the
+  /// normals setRow replaced (the contact's whole impulse: what starts it in the next step).
+  double totalImpulse(int index) const { return row_[index].lambda + row_[index].replaced; }
   /// Replaces row `index` (a contact's normal of a later time), its impulse so far kept applied
-  /// to the velocities and its multiplier restarted at 0; queues it.
+  /// to the velocities (and counted in totalImpulse) and its multiplier restarted at 0; queues it.
   void setRow(int index, const ConstraintRow& row, int group = 0);
 
   /// Gauss-Seidel updates from the queued rows until every row it reaches is within `tolerance`
@@ -123,6 +126,7 @@ class ContactProjector {
     double diag = 0;        ///< A_kk = G_k M^-1 G_k^T
     double norm = 0;        ///< |G_k|
     double lambda = 0;
+    double replaced = 0;    ///< the multipliers of the normals setRow replaced (still applied)
     int group = 0;          ///< index into solve's groupScale
   };
   void apply(int k, double lambda);

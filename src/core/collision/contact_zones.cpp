@@ -27,10 +27,15 @@ void ContactZones::reset(int n) {
     }
   }
   roots_.clear();
-  // The impulses of this step's contacts start the next step's (warm start; addRow).
+  // The impulses of this step's contacts start the next step's (warm start; addRow): each one's
+  // whole impulse. A contact that came back in the step had its row replaced and its multiplier
+  // restarted at 0 with the impulse so far still applied; starting the next step from the last
+  // multiplier alone (a fraction of the contact's load) left a resting column of 10 disks to a
+  // cold solve in every step, which jammed every step.
   lastImpulse_.clear();
   rowOf_.forEach([&](uint64_t key, int row) {
-    if (projector_.impulse(row) > 0.0) lastImpulse_.insert(key, projector_.impulse(row));
+    const double impulse = projector_.totalImpulse(row);
+    if (impulse > 0.0) lastImpulse_.insert(key, impulse);
   });
   rowOf_.clear();
   unsolved_.clear();
