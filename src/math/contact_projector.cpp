@@ -11,6 +11,7 @@ void ContactProjector::reset(int capacity) {
   velocity_.clear();
   inverseMass_.clear();
   row_.clear();
+  replaced_.clear();
   queued_.clear();
   work_.clear();
   head_ = 0;
@@ -29,6 +30,7 @@ void ContactProjector::addBody(int b, double inverseMass, const Vec2& v) {
 
 int ContactProjector::addRow(const ConstraintRow& row, double warmStart, int group) {
   row_.emplace_back();
+  replaced_.push_back(0.0);
   queued_.push_back(0);
   const int index = static_cast<int>(row_.size()) - 1;
   setRow(index, row, group);
@@ -42,7 +44,7 @@ int ContactProjector::addRow(const ConstraintRow& row, double warmStart, int gro
 // normal: every later update is again a projection onto a half-space through v = 0.
 void ContactProjector::setRow(int index, const ConstraintRow& row, int group) {
   Row& k = row_[index];
-  k.replaced += k.lambda;
+  replaced_[index] += k.lambda;
   k.r = row;
   k.group = group;
   k.diag = 0;

@@ -43,7 +43,7 @@ class ContactProjector {
   double impulse(int index) const { return row_[index].lambda; }
   /// The impulse row `index` has applied since it was added: its multiplier plus those of the
   /// normals setRow replaced (the contact's whole impulse: what starts it in the next step).
-  double totalImpulse(int index) const { return row_[index].lambda + row_[index].replaced; }
+  double totalImpulse(int index) const { return row_[index].lambda + replaced_[index]; }
   /// Replaces row `index` (a contact's normal of a later time), its impulse so far kept applied
   /// to the velocities (and counted in totalImpulse) and its multiplier restarted at 0; queues it.
   void setRow(int index, const ConstraintRow& row, int group = 0);
@@ -126,7 +126,6 @@ class ContactProjector {
     double diag = 0;        ///< A_kk = G_k M^-1 G_k^T
     double norm = 0;        ///< |G_k|
     double lambda = 0;
-    double replaced = 0;    ///< the multipliers of the normals setRow replaced (still applied)
     int group = 0;          ///< index into solve's groupScale
   };
   void apply(int k, double lambda);
@@ -139,6 +138,9 @@ class ContactProjector {
   std::vector<Vec2> velocity_;       ///< per slot: the body's velocity
   std::vector<double> inverseMass_;  ///< per slot: 0 for an immovable body
   std::vector<Row> row_;
+  /// Per row: the multipliers of the normals setRow replaced (still applied). Apart from the rows,
+  /// which every Gauss-Seidel update reads: this is read once a step (totalImpulse).
+  std::vector<double> replaced_;
   std::vector<char> queued_;  ///< per row: in work_ (apart from the rows: queueing touches only these bytes)
   std::vector<int> work_;     ///< FIFO of row indices (head_ marks the front)
   size_t head_ = 0;

@@ -178,7 +178,7 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
         // against zones whose solves had not failed, and the fed rain pile then had zones moving
         // rigidly in up to twice as many steps; leaving them queued let this zone's next solves
         // spend their budgets on them).
-        projector_.unqueueIf([&](int p) { return zoneOf(p) == zone; });
+        projector_.unqueueIf(memberOf(zone));
         projector_.takeQueued(waiting_);
         // The rows set since the last solve stand for contacts whose events were taken: one that
         // the solve did not reach (its bodies' velocities unchanged) would not be queried again,
@@ -230,7 +230,7 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
 // Whether rows set aside wait for zone `zone`'s solve.
 bool ContactZones::waitingFor(int zone) const {
   for (int k : waiting_)
-    if (projector_.moves(k, [&](int p) { return zoneOf(p) == zone; })) return true;
+    if (projector_.moves(k, memberOf(zone))) return true;
   return false;
 }
 
@@ -239,7 +239,7 @@ bool ContactZones::waitingFor(int zone) const {
 void ContactZones::requeueWaiting(int zone) {
   size_t kept = 0;
   for (int k : waiting_) {
-    if (projector_.moves(k, [&](int p) { return zoneOf(p) == zone; }))
+    if (projector_.moves(k, memberOf(zone)))
       projector_.queueRow(k);
     else if (projector_.moves(k, [](int) { return true; }))
       waiting_[kept++] = k;

@@ -150,6 +150,10 @@ class ContactZones {
   template <class Position>
   math::ConstraintRow contactRow(const Scene& scene, uint64_t key, Position&& position, Vec2& normal) const;
   bool near(const Scene& scene, const StepMotion& motion, uint64_t key, double T) const;
+  /// The predicate "particle p is in zone `zone`" (a root), for the projector's row filters.
+  auto memberOf(int zone) const {
+    return [this, zone](int p) { return zoneOf(p) == zone; };
+  }
   void requeueWaiting(int zone);
   bool waitingFor(int zone) const;
   /// Removes zone `zone`'s pairs from unsolved_, calling take(key) for each.
@@ -159,7 +163,7 @@ class ContactZones {
     for (uint64_t key : unsolved_) {
       const PairParticles pair = pairParticles(scene, key);
       bool ours = false;
-      for (int k = 0; k < pair.count; ++k) ours = ours || zoneOf(pair.p[k]) == zone;
+      for (int k = 0; k < pair.count; ++k) ours = ours || memberOf(zone)(pair.p[k]);
       if (ours) take(key);
       else unsolved_[kept++] = key;
     }
