@@ -18,6 +18,8 @@ void Sleepers::begin(const Scene& scene, const State& start, State& state, doubl
     still_.assign(n, 0);
     moved_.assign(n, 1);
     anchor_ = start.x;
+    anchorVelocity_ = start.v;
+    kicks_.assign(n, 0.0);
     rest_ = start.x;
     kick_.assign(n, 0.0);
     sleeping_ = 0;
@@ -32,7 +34,13 @@ void Sleepers::begin(const Scene& scene, const State& start, State& state, doubl
     for (const Edge& e : scene.edges)
       if (!scene.isFixed(e.i) || !scene.isFixed(e.j)) mayRest_[e.i] = mayRest_[e.j] = 0;
   }
-  if (sleeping_ == 0) return;
+  // The kicks are needed whether anyone sleeps or not (end() sums them over still runs).
+  if (sleeping_ == 0) {
+    forRowRanges(n, threads_, [&](int, int first, int end) {
+      for (int p = first; p < end; ++p) kick_[p] = (at(state.v, p) - at(start.v, p)).norm();
+    });
+    return;
+  }
   // By ranges of particles: each one's work is its own; the sleepers woken are counted per range.
   std::vector<int> woken(static_cast<size_t>(rowRangesFor(n, threads_)), 0);
   forRowRanges(n, threads_, [&](int range, int first, int end) {
@@ -79,10 +87,17 @@ void Sleepers::end(const Scene& scene, const State& start, State& state) {
         still_[p] = 0;
         continue;
       }
-      if (still_[p]++ == 0) at(anchor_, p) = at(start.x, p);
+      if (still_[p]++ == 0) at(anchor_, p) = at(start.x, p), at(anchorVelocity_, p) = at(start.v, p), kicks_[p] = 0;
+      kicks_[p] += kick_[p];
       if (still_[p] < kStepsToSleep) continue;
       if ((at(state.x, p) - at(anchor_, p)).norm() > reach) {
         still_[p] = 0;  // creeping: start a new run from here
+        continue;
+      }
+      // Unsupported (its forces went into its motion: a ball at the top of its flight): a new run.
+      // Without forces there is nothing to take up, and the distance above decides.
+      if (kicks_[p] > 0.0 && (at(state.v, p) - at(anchorVelocity_, p)).norm() > 0.5 * kicks_[p]) {
+        still_[p] = 0;
         continue;
       }
       // Asleep from the next step on; where it ended, at rest (its last velocity was below the
