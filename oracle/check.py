@@ -18,7 +18,8 @@ import traceback
 
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks_common import CHECKS, CheckFailed, expect, generic  # noqa: E402
+from checks_common import CHECKS, CheckFailed, expect  # noqa: E402
+from checks_default_mode import generic  # noqa: E402
 from fosssim_traj import Scene, Trajectory  # noqa: E402
 import checks_examples  # noqa: E402,F401 - registers its checks
 import checks_t2m2  # noqa: E402,F401 - registers its checks

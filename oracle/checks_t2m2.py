@@ -3,7 +3,7 @@ scene: predicted collision times, exact velocity exchanges, no overlap at step e
 
 These files are made by the default mode (contacts in time order, sequential impulses, paths that
 bend at contact times, inelastic-projection failsafe), not by the course's handlers (which --compat
-reproduces). Every scene here also gets checks_common.default_mode (polynomial log over the
+reproduces). Every scene here also gets checks_default_mode.default_mode (polynomial log over the
 predicted motion, impulses replayed in time order, no deepening, no tunnelling along the replayed
 paths, no kinetic energy added, momenta of free scenes). Where a check used to encode the course's
 behaviour (one impulse pass per contact, summed impulses, straight motion through a contact step,
@@ -13,8 +13,8 @@ import math
 
 from fosssim_traj import (PE, PH, PP, add, cross, dot, mul, norm, segment_distance, sub, unit)
 from checks_common import (CheckFailed, check, close, close2, conserved_kinetic, conserved_momentum,
-                           expect, halfplane_distance, kinetic, momentum, pair_gaps, predicted_motion,
-                           straight_line_gaps)
+                           expect, halfplane_distance, kinetic, momentum, predicted_motion, straight_line_gaps)
+from checks_default_mode import pair_gaps
 
 # ---- t2m2/ContinuousTimeTests ------------------------------------------------------------------
 
