@@ -23,6 +23,7 @@ from checks_default_mode import generic  # noqa: E402
 from fosssim_traj import Scene, Trajectory  # noqa: E402
 import checks_examples  # noqa: E402,F401 - registers its checks
 import checks_t2m2  # noqa: E402,F401 - registers its checks
+import checks_t2m2_zones  # noqa: E402,F401 - registers its checks
 
 
 # ---- driver ------------------------------------------------------------------------------------------
