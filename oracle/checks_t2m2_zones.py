@@ -52,19 +52,24 @@ def projected_hit(sc, tr, k, a, b):
     return T, unit(sub(xb, xa)), pv
 
 
+def horizontal_momentum_kept(sc, tr, why):
+    """The floor (half-plane 0) is horizontal and gravity vertical: nothing acts horizontally, so
+    the horizontal momentum is kept exactly by the projection (its rows are contact normals between
+    free balls, plus the floor's vertical one). Returns the balls' distance to the floor, by record
+    and ball."""
+    px0 = momentum(sc, tr.ends[0])[0]
+    for k, rec in enumerate(tr.ends):
+        close(momentum(sc, rec)[0], px0, 1e-12, 'horizontal momentum at step %d%s' % (k, why))
+    return lambda rec, i: halfplane_distance(sc, rec.pos(i), sc.r[i], 0)
+
+
 @check('t2m2/GeometricTests/stack.xml')
 def _(sc, tr, notes):
     # Was: the balls freeze bottom-up into a crooked stack (rigid zones touching the floor). Now the
     # balls land inelastically and, being frictionless, slide off each other onto the floor.
     failsafe_only(sc, tr, notes)
-    # The floor is horizontal and gravity vertical: nothing acts horizontally, so the horizontal
-    # momentum is kept exactly by the projection (its rows are contact normals between free balls,
-    # plus the floor's vertical one).
-    px0 = momentum(sc, tr.ends[0])[0]
-    for k, rec in enumerate(tr.ends):
-        close(momentum(sc, rec)[0], px0, 1e-12, 'horizontal momentum at step %d' % k)
+    floor = horizontal_momentum_kept(sc, tr, '')
     # The big ball lands alone: in its landing step its fall is stopped and nothing else changes.
-    floor = lambda rec, i: halfplane_distance(sc, rec.pos(i), sc.r[i], 0)
     land = next(k for k in range(1, len(tr.ends)) if not tr.explained[k])
     close(floor(tr.ends[land], 0), 0.0, 1e-12, 'ball 0 on the floor after landing (step %d)' % land)
     close2(tr.ends[land].vel(0), (predicted_motion(sc, tr.ends[land - 1])[1][0][0], 0.0), 1e-12, 'ball 0 stops falling, keeps its horizontal velocity')
@@ -109,10 +114,7 @@ def _(sc, tr, notes):
     # floor, the light ball slides over it and off (as a real frictionless ball would), the mid-air
     # pair loses its closing velocity and falls on, and nothing is frozen in mid-air.
     failsafe_only(sc, tr, notes)
-    px0 = momentum(sc, tr.ends[0])[0]
-    for k, rec in enumerate(tr.ends):
-        close(momentum(sc, rec)[0], px0, 1e-12, 'horizontal momentum at step %d (floor and gravity are vertical)' % k)
-    floor = lambda rec, i: halfplane_distance(sc, rec.pos(i), sc.r[i], 0)
+    floor = horizontal_momentum_kept(sc, tr, ' (floor and gravity are vertical)')
     land = next(k for k, rec in enumerate(tr.ends) if floor(rec, 0) < 1e-9)
     for rec in tr.ends[land:]:
         close(floor(rec, 0), 0.0, 1e-9, 'ball 0 stays on the floor')
