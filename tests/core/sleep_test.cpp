@@ -196,17 +196,60 @@ TEST(Sleep, ABallAtTheTopOfItsFlightDoesNotSleep) {
   }
 }
 
-TEST(Sleep, ParticlesHeldBySpringsOrEdgesNeverSleep) {
-  TestScene spring = floorScene("hybrid", {{0.0, 0.0}, {0.5, 0.0}});
-  spring.scene.forces.push_back(std::make_unique<SpringForce>(0, 1, 10.0, 0.5, 0.0));
-  TestScene edge = floorScene("hybrid", {{0.0, 0.0}, {0.5, 0.0}});
-  edge.scene.edges.push_back(Edge{0, 1, 0.02});
-  for (TestScene* s : {&spring, &edge}) {
-    auto sim = defaultModeSimulator(*s, true);
-    for (int k = 0; k < 3 * kStepsToSleep; ++k) {
-      ASSERT_TRUE(stepClean(*sim, *s));
-      ASSERT_EQ(sim->stats().asleep, 0);
+// Particles tied by a spring or an edge are one island: they sleep only together (the count of
+// sleepers goes from 0 to 2 in one step, never through 1), and not while one of them moves, even
+// when the tie pulls with no force at all (k = 0): disk 0 is perfectly still but its mate slides.
+TEST(Sleep, ParticlesHeldBySpringsOrEdgesSleepOnlyTogether) {
+  for (const char* type : kEventTypes) {
+    SCOPED_TRACE(type);
+    TestScene spring = floorScene(type, {{0.0, 0.0}, {0.5, 0.0}});
+    spring.scene.forces.push_back(std::make_unique<SpringForce>(0, 1, 10.0, 0.5, 0.0));
+    TestScene edge = floorScene(type, {{0.0, 0.0}, {0.5, 0.0}});
+    edge.scene.edges.push_back(Edge{0, 1, 0.02});
+    for (TestScene* s : {&spring, &edge}) {
+      auto sim = defaultModeSimulator(*s, true);
+      int fellAt = -1;
+      for (int k = 1; k <= 3 * kStepsToSleep; ++k) {
+        ASSERT_TRUE(stepClean(*sim, *s));
+        ASSERT_NE(sim->stats().asleep, 1) << "step " << k << ": half an island asleep";
+        if (sim->stats().asleep == 2 && fellAt < 0) fellAt = k;
+      }
+      EXPECT_EQ(fellAt, kStepsToSleep) << "the island should sleep when both have been still for its steps";
     }
+    TestScene sliding = floorScene(type, {{0.0, 0.0}, {0.5, 1.0}});
+    sliding.scene.forces.push_back(std::make_unique<SpringForce>(0, 1, 0.0, 0.5, 0.0));
+    auto sim = defaultModeSimulator(sliding, true);
+    for (int k = 1; k <= 3 * kStepsToSleep; ++k) {
+      ASSERT_TRUE(stepClean(*sim, sliding));
+      ASSERT_EQ(sim->stats().asleep, 0) << "step " << k << ": disk 0 slept while its mate slides";
+    }
+    EXPECT_EQ(at(sliding.state.x, 0), Vec2(0.0, kR));
+  }
+}
+
+// A disk sliding into a sleeping island wakes all of it in the same step: disk 2 (free) meets
+// disk 0, whose spring mate, disk 1, is out of its reach; both wake at once (the count of sleepers
+// drops from 2 to 0), and the pair then moves off together with what disk 2 gave it.
+TEST(Sleep, ADiskHittingAnIslandWakesAllOfIt) {
+  for (const char* type : kEventTypes) {
+    SCOPED_TRACE(type);
+    // Disk 2 leaves after the island has slept: 0.6 m away at 0.5 m/s, it arrives near step 100.
+    TestScene s = floorScene(type, {{0.0, 0.0}, {0.5, 0.0}, {-2 * kR - 0.6, 0.5}});
+    s.scene.forces.push_back(std::make_unique<SpringForce>(0, 1, 10.0, 0.5, 0.0));
+    auto sim = defaultModeSimulator(s, true);
+    int slept = 0, wokeAt = -1;
+    for (int k = 1; k <= 200 && wokeAt < 0; ++k) {
+      ASSERT_TRUE(stepClean(*sim, s));
+      ASSERT_NE(sim->stats().asleep, 1) << "step " << k << ": half an island asleep";
+      if (sim->stats().asleep == 2) slept = k;
+      else if (slept > 0) wokeAt = k;
+    }
+    ASSERT_GT(slept, 0) << "the island never slept";
+    ASSERT_GT(wokeAt, 0) << "the island never woke";
+    EXPECT_EQ(sim->stats().woken, 2);
+    for (int k = 0; k < 20; ++k) ASSERT_TRUE(stepClean(*sim, s));
+    EXPECT_GT(at(s.state.x, 0).x(), 0.0) << "disk 0 should have been pushed";
+    EXPECT_GT(at(s.state.x, 1).x(), 0.5) << "disk 1 should follow through the spring";
   }
 }
 

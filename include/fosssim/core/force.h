@@ -3,6 +3,9 @@
 // so that F = -sum of gradients. Jacobians are likewise of -F: dE2/dx2 (the Hessian) and -dF/dv.
 #pragma once
 
+#include <utility>
+#include <vector>
+
 #include "fosssim/core/types.h"
 
 #include <memory>
@@ -76,8 +79,18 @@ class Force {
   /// alone (gravity, a constant force, drag), or acts between particles only at contact range
   /// (the penalty layer, for which a sleeper is an obstacle as it is for contacts): holding one
   /// particle still then changes no force on another particle at a distance, which is what lets
-  /// resting particles sleep (src/core/collision/sleepers.h). False for springs and pair forces.
+  /// a resting particle sleep alone (src/core/collision/sleepers.h). False for springs and pair
+  /// forces, whose particles sleep only together (couples).
   virtual bool actsAlone() const { return false; }
+
+  /// Appends the pairs of particles whose motion this force ties together at a distance (a
+  /// spring's two ends, a gravitational pair): such particles sleep only together, as one island
+  /// (src/core/collision/sleepers.h). Returns false for a force whose couplings it cannot list
+  /// (then nothing sleeps); a force that actsAlone() lists none.
+  virtual bool couples(std::vector<std::pair<int, int>>& pairs) const {
+    (void)pairs;
+    return actsAlone();
+  }
 
   /// True when the part of the force that energy() does not account for can do positive work,
   /// so that the total mechanical energy may grow honestly (the energy watch then stays off).

@@ -14,6 +14,10 @@ class SpringForce final : public Force {
  public:
   SpringForce(int i, int j, double k, double l0, double b) : i_(i), j_(j), k_(k), l0_(l0), b_(b) {}
   const char* keyword() const override { return "springforce"; }
+  bool couples(std::vector<std::pair<int, int>>& pairs) const override {
+    pairs.emplace_back(i_, j_);
+    return true;
+  }
   double energy(const Scene&, const VecX& x, const VecX& v) const override;
   void addGradient(const Scene&, const VecX& x, const VecX& v, VecX& gradE) const override;
   void addJacobianX(const Scene&, const VecX& x, const VecX& v, Triplets& out) const override;
@@ -67,6 +71,10 @@ class GravitationalForce final : public Force {
  public:
   GravitationalForce(int i, int j, double G) : i_(i), j_(j), G_(G) {}
   const char* keyword() const override { return "gravitationalforce"; }
+  bool couples(std::vector<std::pair<int, int>>& pairs) const override {
+    pairs.emplace_back(i_, j_);
+    return true;
+  }
   double energy(const Scene&, const VecX& x, const VecX& v) const override;
   void addGradient(const Scene&, const VecX& x, const VecX& v, VecX& gradE) const override;
   void addJacobianX(const Scene&, const VecX& x, const VecX& v, Triplets& out) const override;
@@ -102,6 +110,10 @@ class VortexForce final : public Force {
  public:
   VortexForce(int i, int j, double kbs, double kvc) : i_(i), j_(j), kbs_(kbs), kvc_(kvc) {}
   const char* keyword() const override { return "vortexforce"; }
+  bool couples(std::vector<std::pair<int, int>>& pairs) const override {
+    pairs.emplace_back(i_, j_);
+    return true;
+  }
   void addGradient(const Scene&, const VecX& x, const VecX& v, VecX& gradE) const override;
   bool hasJacobians() const override { return false; }
   int i() const { return i_; }

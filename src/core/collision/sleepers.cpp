@@ -24,16 +24,19 @@ void Sleepers::begin(const Scene& scene, const State& start, State& state, doubl
     kick_.assign(n, 0.0);
     sleeping_ = 0;
   }
-  // Who may sleep: the scene's contents do not change during a run, but this costs O(N + E)
-  // and keeps no stale answer if a caller edits a scene between runs.
+  // Who may sleep, and with whom: the scene's contents do not change during a run, but this
+  // costs O(N + E + forces) and keeps no stale answer if a caller edits a scene between runs.
   mayRest_.assign(n, 0);
-  const bool forcesAlone =
-      std::all_of(scene.forces.begin(), scene.forces.end(), [](const auto& f) { return f->actsAlone(); });
-  if (forcesAlone) {
+  coupled_.clear();
+  bool listed = true;
+  for (const auto& f : scene.forces) listed = f->couples(coupled_) && listed;
+  if (listed) {
     for (int p = 0; p < n; ++p) mayRest_[p] = !scene.isFixed(p);
-    for (const Edge& e : scene.edges)
-      if (!scene.isFixed(e.i) || !scene.isFixed(e.j)) mayRest_[e.i] = mayRest_[e.j] = 0;
+    for (const Edge& e : scene.edges) coupled_.emplace_back(e.i, e.j);
+  } else {
+    coupled_.clear();
   }
+  findIslands(scene);
   // The kicks are needed whether anyone sleeps or not (end() sums them over still runs).
   if (sleeping_ == 0) {
     forRowRanges(n, threads_, [&](int, int first, int end) {
@@ -59,13 +62,68 @@ void Sleepers::begin(const Scene& scene, const State& start, State& state, doubl
     }
   });
   for (int w : woken) sleeping_ -= w;
+  // An island wakes whole: a member a caller moved woke above, its island-mates wake with it
+  // (at rest where they slept: they move from the next step on).
+  if (islandStart_.empty() || std::all_of(woken.begin(), woken.end(), [](int w) { return w == 0; })) return;
+  for (size_t k = 0; k + 1 < islandStart_.size(); ++k) {
+    bool awake = false;
+    for (int m = islandStart_[k]; m < islandStart_[k + 1]; ++m) awake = awake || !asleep_[islandMembers_[m]];
+    if (awake) wake(islandMembers_[islandStart_[k]]);
+  }
 }
 
-void Sleepers::wake(int p) {
-  if (!asleep(p)) return;
-  asleep_[p] = 0;
-  still_[p] = 0;
-  --sleeping_;
+int Sleepers::wake(int p) {
+  if (!asleep(p)) return 0;
+  const int k = islandOf_.empty() ? -1 : islandOf_[p];
+  if (k < 0) {
+    asleep_[p] = 0, still_[p] = 0, --sleeping_;
+    return 1;
+  }
+  int woken = 0;
+  for (int m = islandStart_[k]; m < islandStart_[k + 1]; ++m) {
+    const int q = islandMembers_[m];
+    if (asleep_[q]) asleep_[q] = 0, still_[q] = 0, --sleeping_, ++woken;
+  }
+  return woken;
+}
+
+// Union-find over the coupled pairs of movable particles (a fixed end ties nobody); only islands
+// of two or more are kept (a lone particle sleeps by itself, as it always did).
+void Sleepers::findIslands(const Scene& scene) {
+  islandOf_.clear();
+  islandStart_.clear();
+  islandMembers_.clear();
+  if (coupled_.empty()) return;
+  const int n = scene.numParticles();
+  std::vector<int> parent(static_cast<size_t>(n));
+  for (int p = 0; p < n; ++p) parent[p] = p;
+  const auto root = [&](int p) {
+    while (parent[p] != p) p = parent[p] = parent[parent[p]];
+    return p;
+  };
+  bool any = false;
+  for (const auto& [a, b] : coupled_) {
+    if (a == b || scene.isFixed(a) || scene.isFixed(b)) continue;
+    const int ra = root(a), rb = root(b);
+    if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb), any = true;
+  }
+  if (!any) return;
+  // Islands numbered by their smallest particle, members in particle order (CSR).
+  islandOf_.assign(n, -1);
+  ready_.assign(n, 0);
+  std::vector<int> count(static_cast<size_t>(n), 0), index(static_cast<size_t>(n), -1);
+  for (int p = 0; p < n; ++p) ++count[root(p)];
+  islandStart_.push_back(0);
+  for (int p = 0; p < n; ++p)
+    if (root(p) == p && count[p] > 1) index[p] = static_cast<int>(islandStart_.size()) - 1, islandStart_.push_back(islandStart_.back() + count[p]);
+  islandMembers_.resize(static_cast<size_t>(islandStart_.back()));
+  std::vector<int> fill(islandStart_.begin(), islandStart_.end() - 1);
+  for (int p = 0; p < n; ++p) {
+    const int k = index[root(p)];
+    if (k < 0) continue;
+    islandOf_[p] = k;
+    islandMembers_[static_cast<size_t>(fill[k]++)] = p;
+  }
 }
 
 // A sleeper stays asleep here (its still count keeps growing); an awake particle is still when
@@ -78,6 +136,7 @@ void Sleepers::end(const Scene& scene, const State& start, State& state) {
   std::vector<int> fell(static_cast<size_t>(rowRangesFor(n, threads_)), 0);  // asleep now, per range
   forRowRanges(n, threads_, [&](int range, int first, int end) {
     for (int p = first; p < end; ++p) {
+      if (!islandOf_.empty()) ready_[p] = 0;
       if (asleep_[p] || !mayRest_[p]) continue;
       const double reach = kSleepFraction * scene.radius[p];
       const bool still =
@@ -100,16 +159,32 @@ void Sleepers::end(const Scene& scene, const State& start, State& state) {
         still_[p] = 0;
         continue;
       }
-      // Asleep from the next step on; where it ended, at rest (its last velocity was below the
-      // sleep speed: dropping it is what sleeping means).
-      asleep_[p] = 1;
-      moved_[p] = 0;
-      at(state.v, p).setZero();
-      at(rest_, p) = at(state.x, p);
+      // A member of an island waits for the others (below).
+      if (!islandOf_.empty() && islandOf_[p] >= 0) {
+        ready_[p] = 1;
+        continue;
+      }
+      fallAsleep(p, state);
       ++fell[range];
     }
   });
   for (int f : fell) sleeping_ += f;
+  // An island sleeps when every member is ready in the same step.
+  for (size_t k = 0; k + 1 < islandStart_.size(); ++k) {
+    bool all = true;
+    for (int m = islandStart_[k]; m < islandStart_[k + 1] && all; ++m) all = ready_[islandMembers_[m]] != 0;
+    if (!all) continue;
+    for (int m = islandStart_[k]; m < islandStart_[k + 1]; ++m) fallAsleep(islandMembers_[m], state), ++sleeping_;
+  }
+}
+
+// Asleep from the next step on; where it ended, at rest (its last velocity was below the sleep
+// speed: dropping it is what sleeping means).
+void Sleepers::fallAsleep(int p, State& state) {
+  asleep_[p] = 1;
+  moved_[p] = 0;
+  at(state.v, p).setZero();
+  at(rest_, p) = at(state.x, p);
 }
 
 }  // namespace fosssim

@@ -25,11 +25,14 @@
 // its flight, with a step small enough against its radius, stays within the sleep distance for
 // kStepsToSleep steps all the same, but its velocity changes by every kick.
 //
-// Only particles whose motion nobody else feels may sleep: not fixed, not the end of an edge
-// with a movable end, and only in scenes whose every force acts on each particle alone
-// (Force::actsAlone: gravity, drag, constant forces; a spring or gravitational pair force
-// would have to be integrated on both sides). Nothing changes until a particle sleeps: a run in
-// which none does is identical, bit for bit, to one with sleeping off (HandlerOptions::sleep).
+// Particles whose motions are tied at a distance sleep only together, as one island: the two
+// ends of an edge, the two particles of a spring, a gravitational or a vortex pair
+// (Force::couples; fixed particles tie nobody). An island falls asleep in the step in which every
+// member would sleep alone, and wakes whole: a hit on one member, or a mover near one, wakes all
+// of it in that step (the members not hit stay where they slept for the rest of the step and move
+// from the next). A scene with a force that cannot list what it ties lets nothing sleep. Nothing
+// changes until a particle sleeps: a run in which none does is identical, bit for bit, to one
+// with sleeping off (HandlerOptions::sleep).
 #pragma once
 
 #include "fosssim/core/scene.h"
@@ -72,8 +75,9 @@ class Sleepers {
   /// Whether any particle sleeps in this step (nothing else here is needed when none does).
   bool any() const { return sleeping_ > 0; }
   bool asleep(int p) const { return sleeping_ > 0 && asleep_[p]; }
-  /// Wakes p (no-op if awake): it counts as moving again from now on.
-  void wake(int p);
+  /// Wakes p and the rest of its island (no-op if awake): they count as moving again from now
+  /// on. Returns how many woke.
+  int wake(int p);
   /// Whether p did not stay still in the last step (a neighbour that moves wakes sleepers).
   bool movedLastStep(int p) const { return moved_.empty() || moved_[p] != 0; }
   /// The velocity change this step's forces gave particle p (|predicted v - start v|).
@@ -100,6 +104,14 @@ class Sleepers {
   std::vector<double> kicks_;    ///< N: sum of kick_ over the particle's still run
   VecX rest_;                    ///< 2N: a sleeper's position (where it fell asleep)
   std::vector<double> kick_;     ///< N: this step's |predicted v - start v|
+  std::vector<std::pair<int, int>> coupled_;  ///< pairs the forces and edges tie (see Force::couples)
+  std::vector<int> islandOf_;    ///< N: island of two or more particles, or -1 (empty: none)
+  std::vector<int> islandStart_; ///< islands + 1: each island's first index into islandMembers_
+  std::vector<int> islandMembers_;  ///< the islands' particles, island by island
+  std::vector<char> ready_;      ///< N: an island member that would sleep now were it alone
+
+  void findIslands(const Scene& scene);
+  void fallAsleep(int p, State& state);
 };
 
 }  // namespace fosssim
