@@ -114,8 +114,11 @@ void Sleepers::findIslands(const Scene& scene) {
   std::vector<int> count(static_cast<size_t>(n), 0), index(static_cast<size_t>(n), -1);
   for (int p = 0; p < n; ++p) ++count[root(p)];
   islandStart_.push_back(0);
-  for (int p = 0; p < n; ++p)
-    if (root(p) == p && count[p] > 1) index[p] = static_cast<int>(islandStart_.size()) - 1, islandStart_.push_back(islandStart_.back() + count[p]);
+  for (int p = 0; p < n; ++p) {
+    if (root(p) != p || count[p] < 2) continue;
+    index[p] = static_cast<int>(islandStart_.size()) - 1;
+    islandStart_.push_back(islandStart_.back() + count[p]);
+  }
   islandMembers_.resize(static_cast<size_t>(islandStart_.back()));
   std::vector<int> fill(islandStart_.begin(), islandStart_.end() - 1);
   for (int p = 0; p < n; ++p) {
