@@ -136,8 +136,6 @@ TEST(ContactProjector, WarmStartFromTheLastImpulsesSettlesARestingColumnAtOnce) 
   for (int i = 0; i < disks; ++i) EXPECT_LE((warm.velocity(i) - cold.velocity(i)).norm(), 1e-9 * gh) << "disk " << i;
 }
 
-// A disk jammed among many contacts (a hub: more rows than a body stores beside it) must still have
-// every row revisited when any of them moves it: the batch solve equals the single projection.
 // A replaced row (setRow: the contact's normal of a later time) restarts its multiplier at 0 and
 // keeps the impulse it applied; totalImpulse counts both, the contact's whole impulse. Worked by
 // hand: a unit mass falling at 1 m/s onto the floor row v_y >= 0 takes the impulse 1 and stops;
@@ -158,6 +156,8 @@ TEST(ContactProjector, ReplacedRowsKeepTheirImpulseInTheTotal) {
   EXPECT_EQ(cp.velocity(0), Vec2(0.0, 0.0));
 }
 
+// A disk jammed among many contacts (a hub: more rows than a body stores beside it) must still have
+// every row revisited when any of them moves it: the batch solve equals the single projection.
 TEST(ContactProjector, ABodyInMoreRowsThanItStoresInlineIsSolvedExactly) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> spread(-1.4, 1.4), speed(0.5, 2.0);

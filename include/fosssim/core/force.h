@@ -3,12 +3,11 @@
 // so that F = -sum of gradients. Jacobians are likewise of -F: dE2/dx2 (the Hessian) and -dF/dv.
 #pragma once
 
-#include <utility>
-#include <vector>
-
 #include "fosssim/core/types.h"
 
 #include <memory>
+#include <utility>
+#include <vector>
 
 namespace fosssim {
 

@@ -8,16 +8,28 @@
 
 namespace fosssim {
 
-/// <springforce edge k l0 b>: E = k/2 (l - l0)^2 with l = |x_j - x_i|, plus the damping force
-/// -b ((v_j - v_i) . n) n on j (and its opposite on i), n = (x_j - x_i)/l.
-class SpringForce final : public Force {
+/// A force between two particles, i and j: their motions are tied, so they sleep only together
+/// (Force::couples).
+class PairForce : public Force {
  public:
-  SpringForce(int i, int j, double k, double l0, double b) : i_(i), j_(j), k_(k), l0_(l0), b_(b) {}
-  const char* keyword() const override { return "springforce"; }
   bool couples(std::vector<std::pair<int, int>>& pairs) const override {
     pairs.emplace_back(i_, j_);
     return true;
   }
+  int i() const { return i_; }
+  int j() const { return j_; }
+
+ protected:
+  PairForce(int i, int j) : i_(i), j_(j) {}
+  int i_, j_;
+};
+
+/// <springforce edge k l0 b>: E = k/2 (l - l0)^2 with l = |x_j - x_i|, plus the damping force
+/// -b ((v_j - v_i) . n) n on j (and its opposite on i), n = (x_j - x_i)/l.
+class SpringForce final : public PairForce {
+ public:
+  SpringForce(int i, int j, double k, double l0, double b) : PairForce(i, j), k_(k), l0_(l0), b_(b) {}
+  const char* keyword() const override { return "springforce"; }
   double energy(const Scene&, const VecX& x, const VecX& v) const override;
   void addGradient(const Scene&, const VecX& x, const VecX& v, VecX& gradE) const override;
   void addJacobianX(const Scene&, const VecX& x, const VecX& v, Triplets& out) const override;
@@ -26,13 +38,10 @@ class SpringForce final : public Force {
   bool mayAddEnergy() const override { return b_ < 0.0; }  ///< damping with b >= 0 only removes energy
   double stiffness() const override { return k_; }
   // The parameters, for writers and bindings.
-  int i() const { return i_; }
-  int j() const { return j_; }
   double restLength() const { return l0_; }
   double damping() const { return b_; }
 
  private:
-  int i_, j_;
   double k_, l0_, b_;
 };
 
@@ -67,24 +76,17 @@ class ConstantForce final : public Force {
 };
 
 /// <gravitationalforce i j G>: E = -G m_i m_j / |x_j - x_i|.
-class GravitationalForce final : public Force {
+class GravitationalForce final : public PairForce {
  public:
-  GravitationalForce(int i, int j, double G) : i_(i), j_(j), G_(G) {}
+  GravitationalForce(int i, int j, double G) : PairForce(i, j), G_(G) {}
   const char* keyword() const override { return "gravitationalforce"; }
-  bool couples(std::vector<std::pair<int, int>>& pairs) const override {
-    pairs.emplace_back(i_, j_);
-    return true;
-  }
   double energy(const Scene&, const VecX& x, const VecX& v) const override;
   void addGradient(const Scene&, const VecX& x, const VecX& v, VecX& gradE) const override;
   void addJacobianX(const Scene&, const VecX& x, const VecX& v, Triplets& out) const override;
   bool hasPotential() const override { return true; }
-  int i() const { return i_; }
-  int j() const { return j_; }
   double G() const { return G_; }
 
  private:
-  int i_, j_;
   double G_;
 };
 
@@ -106,23 +108,16 @@ class DragDampingForce final : public Force {
 /// <vortexforce i j kbs kvc>: with r = x_j - x_i, rhat = r/|r|, perp(a, b) = (-b, a):
 /// F_j = kvc/|r|^2 (kbs perp(rhat) - (v_j - v_i)), F_i = -F_j. No energy, no Jacobian (as in the
 /// reference), so implicit integrators treat it explicitly.
-class VortexForce final : public Force {
+class VortexForce final : public PairForce {
  public:
-  VortexForce(int i, int j, double kbs, double kvc) : i_(i), j_(j), kbs_(kbs), kvc_(kvc) {}
+  VortexForce(int i, int j, double kbs, double kvc) : PairForce(i, j), kbs_(kbs), kvc_(kvc) {}
   const char* keyword() const override { return "vortexforce"; }
-  bool couples(std::vector<std::pair<int, int>>& pairs) const override {
-    pairs.emplace_back(i_, j_);
-    return true;
-  }
   void addGradient(const Scene&, const VecX& x, const VecX& v, VecX& gradE) const override;
   bool hasJacobians() const override { return false; }
-  int i() const { return i_; }
-  int j() const { return j_; }
   double kbs() const { return kbs_; }
   double kvc() const { return kvc_; }
 
  private:
-  int i_, j_;
   double kbs_, kvc_;
 };
 

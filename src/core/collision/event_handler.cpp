@@ -229,7 +229,7 @@ void EventHandler::wakeIfHit(const Scene& scene, uint64_t key, double closing, S
   }
   if (!asleep || closing <= kWakeKickFactor * kicks + sleepSpeed) return;
   for (int k = 0; k < pair.count; ++k)
-    if (sleepers_.asleep(pair.p[k])) stats.woken += sleepers_.wake(pair.p[k]);
+    stats.woken += sleepers_.wake(pair.p[k]);  // 0 when awake
 }
 
 // A sleeper wakes when a particle p that moved in the last step is among its candidates and
@@ -265,7 +265,7 @@ void EventHandler::wakeNearMoving(const Scene& scene, StepStats& stats) {
       const double depth = pairDepth(scene, key, [&](int q) { return motion_.at(q, 0.0); });
       if (depth < -reach) continue;
       for (int k = 0; k < pair.count; ++k)
-        if (sleepers_.asleep(pair.p[k])) stats.woken += sleepers_.wake(pair.p[k]);
+        stats.woken += sleepers_.wake(pair.p[k]);  // 0 when awake
     }
   }
 }

@@ -34,21 +34,18 @@ void Sleepers::begin(const Scene& scene, const State& start, State& state, doubl
     for (int p = 0; p < n; ++p) mayRest_[p] = !scene.isFixed(p);
     for (const Edge& e : scene.edges) coupled_.emplace_back(e.i, e.j);
   } else {
-    coupled_.clear();
+    coupled_.clear();  // nothing sleeps: no islands to keep
   }
   findIslands(scene);
-  // The kicks are needed whether anyone sleeps or not (end() sums them over still runs).
-  if (sleeping_ == 0) {
-    forRowRanges(n, threads_, [&](int, int first, int end) {
-      for (int p = first; p < end; ++p) kick_[p] = (at(state.v, p) - at(start.v, p)).norm();
-    });
-    return;
-  }
+  // The kicks, whether anyone sleeps or not (end() sums them over still runs).
+  forRowRanges(n, threads_, [&](int, int first, int end) {
+    for (int p = first; p < end; ++p) kick_[p] = (at(state.v, p) - at(start.v, p)).norm();
+  });
+  if (sleeping_ == 0) return;
   // By ranges of particles: each one's work is its own; the sleepers woken are counted per range.
   std::vector<int> woken(static_cast<size_t>(rowRangesFor(n, threads_)), 0);
   forRowRanges(n, threads_, [&](int range, int first, int end) {
     for (int p = first; p < end; ++p) {
-      kick_[p] = (at(state.v, p) - at(start.v, p)).norm();
       if (!asleep_[p]) continue;
       // A sleeper starts the step where it fell asleep, at rest, unless someone else moved it
       // between steps (a script assigning positions or velocities, the grader's state): then it
