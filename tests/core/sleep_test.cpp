@@ -158,6 +158,26 @@ TEST(Sleep, ASleeperGivenAVelocityBetweenStepsWakesAndMoves) {
   EXPECT_NEAR(at(s.state.v, 0).x(), 1.0, 1e-12);
 }
 
+// The same for an island: whichever member a script moves, all of it wakes in that step (disk 0
+// is the island's first member, disk 1 its last: both are tried), and the spring then pulls the
+// other member along.
+TEST(Sleep, AnIslandMemberGivenAVelocityBetweenStepsWakesTheIsland) {
+  for (int moved : {0, 1}) {
+    SCOPED_TRACE(moved);
+    TestScene s = floorScene("hybrid", {{0.0, 0.0}, {0.5, 0.0}});
+    s.scene.forces.push_back(std::make_unique<SpringForce>(0, 1, 10.0, 0.5, 0.0));
+    auto sim = defaultModeSimulator(s, true);
+    for (int k = 0; k < 2 * kStepsToSleep; ++k) ASSERT_TRUE(stepClean(*sim, s));
+    ASSERT_EQ(sim->stats().asleep, 2);
+    at(s.state.v, moved) = Vec2(1.0, 0.0);
+    ASSERT_TRUE(stepClean(*sim, s));
+    EXPECT_EQ(sim->stats().asleep, 0);
+    const Vec2 other = at(s.state.x, 1 - moved);
+    for (int k = 0; k < 10; ++k) ASSERT_TRUE(stepClean(*sim, s));
+    EXPECT_NE(at(s.state.x, 1 - moved), other) << "the spring should pull the other disk along";
+  }
+}
+
 TEST(Sleep, ADiskSlidingSlowerThanTheSleepSpeedStillNeverSleeps) {
   for (const char* type : kEventTypes) {
     SCOPED_TRACE(type);

@@ -62,20 +62,23 @@ void Sleepers::begin(const Scene& scene, const State& start, State& state, doubl
   // An island wakes whole: a member a caller moved woke above, its island-mates wake with it
   // (at rest where they slept: they move from the next step on).
   if (islandStart_.empty() || std::all_of(woken.begin(), woken.end(), [](int w) { return w == 0; })) return;
-  for (size_t k = 0; k + 1 < islandStart_.size(); ++k) {
+  for (int k = 0; k + 1 < static_cast<int>(islandStart_.size()); ++k) {
     bool awake = false;
     for (int m = islandStart_[k]; m < islandStart_[k + 1]; ++m) awake = awake || !asleep_[islandMembers_[m]];
-    if (awake) wake(islandMembers_[islandStart_[k]]);
+    if (awake) wakeIsland(k);
   }
 }
 
 int Sleepers::wake(int p) {
   if (!asleep(p)) return 0;
   const int k = islandOf_.empty() ? -1 : islandOf_[p];
-  if (k < 0) {
-    asleep_[p] = 0, still_[p] = 0, --sleeping_;
-    return 1;
-  }
+  if (k >= 0) return wakeIsland(k);
+  asleep_[p] = 0, still_[p] = 0, --sleeping_;
+  return 1;
+}
+
+// Every member of island k that sleeps wakes (some may be awake already: a member a caller moved).
+int Sleepers::wakeIsland(int k) {
   int woken = 0;
   for (int m = islandStart_[k]; m < islandStart_[k + 1]; ++m) {
     const int q = islandMembers_[m];

@@ -111,6 +111,7 @@ class Sleepers {
   std::vector<char> ready_;      ///< N: an island member that would sleep now were it alone
 
   void findIslands(const Scene& scene);
+  int wakeIsland(int k);  ///< wakes island k's sleepers; returns how many
   void fallAsleep(int p, State& state);
 };
 
