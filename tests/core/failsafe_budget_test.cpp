@@ -8,6 +8,15 @@
 namespace fosssim::testing {
 namespace {
 
+/// `disks` unit disks of radius 0.05 stacked exactly on the floor y = 0 under gravity, hybrid COR 0.
+TestScene restingColumn(int disks) {
+  TestScene s = contactScene("hybrid", 0.0);
+  for (int k = 0; k < disks; ++k) addBody(s, 1.0, Vec2(0.0, 0.05 + 0.1 * k), Vec2::Zero(), 0.05);
+  s.scene.halfplanes.push_back(HalfPlane{Vec2::Zero(), Vec2(0, 1)});
+  s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, -9.81)));
+  return s;
+}
+
 // 8c. A solve that runs out of its budget is not a jam. Five unit disks (radius 0.05) stacked
 // exactly on a floor under gravity, hybrid COR 0, no sleep: each step the zone's answer is rest
 // (v = 0), reached by Gauss-Seidel from a cold start in the first step. Its rows (floor-disk 0,
@@ -23,10 +32,7 @@ namespace {
 TEST(ContactPhysics, BudgetEndedSolveIsNotAJam) {
   for (long perRow : {30L, 10L}) {
     SCOPED_TRACE("updates per row " + std::to_string(perRow));
-    TestScene s = contactScene("hybrid", 0.0);
-    for (int k = 0; k < 5; ++k) addBody(s, 1.0, Vec2(0.0, 0.05 + 0.1 * k), Vec2::Zero(), 0.05);
-    s.scene.halfplanes.push_back(HalfPlane{Vec2::Zero(), Vec2(0, 1)});
-    s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, -9.81)));
+    TestScene s = restingColumn(5);
     auto sim = defaultModeSimulator(s, /*sleep=*/false, perRow);
     int jammed = 0, failsafeSteps = 0;
     for (int k = 0; k < 20; ++k) {
@@ -45,15 +51,13 @@ TEST(ContactPhysics, BudgetEndedSolveIsNotAJam) {
 // floor, hybrid COR 0, the default budget, no sleep: from a cold start Gauss-Seidel needs some
 // 9,300 updates on this chain (its 10-row system, as in 8c, contracts by rho = 0.9755 per sweep,
 // computed with NumPy: 929 sweeps to 1e-10), more than the nine solves allowed before the jam
-// limit may spend (9 x 100 x max(10, 8) = 9,000), so the first step jams (the control). At rest every step has the same answer, the last step's impulses: started from
-// them the solve has nothing left to do and no later step may jam. Fails when a contact that came
+// limit may spend (9 x 100 x max(10, 8) = 9,000), so the first step jams (the control). At rest
+// every step has the same answer, the last step's impulses: started from them the solve has
+// nothing left to do and no later step may jam. Fails when a contact that came
 // back in a step (its row replaced, multiplier restarted at 0) starts the next step from its last
 // multiplier alone: the column then jammed in every one of the 100 steps.
 TEST(ContactPhysics, RestingColumnStartsFromItsWholeImpulsesAndJamsOnlyOnce) {
-  TestScene s = contactScene("hybrid", 0.0);
-  for (int k = 0; k < 10; ++k) addBody(s, 1.0, Vec2(0.0, 0.05 + 0.1 * k), Vec2::Zero(), 0.05);
-  s.scene.halfplanes.push_back(HalfPlane{Vec2::Zero(), Vec2(0, 1)});
-  s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, -9.81)));
+  TestScene s = restingColumn(10);
   auto sim = defaultModeSimulator(s, /*sleep=*/false);
   for (int k = 1; k <= 100; ++k) {
     ASSERT_TRUE(stepClean(*sim, s));

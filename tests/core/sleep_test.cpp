@@ -26,6 +26,17 @@ TestScene floorScene(const std::string& type, const std::vector<std::pair<double
   return s;
 }
 
+/// An island: disks 0 and 1 on the floor at x = 0 and 0.5 (disk 1 sliding at vx1), tied by a
+/// spring of stiffness k at its rest length; then the disks `more` (x, vx), as floorScene's.
+TestScene springPair(const std::string& type, const std::vector<std::pair<double, double>>& more = {},
+                     double k = 10.0, double vx1 = 0.0) {
+  std::vector<std::pair<double, double>> disks = {{0.0, 0.0}, {0.5, vx1}};
+  disks.insert(disks.end(), more.begin(), more.end());
+  TestScene s = floorScene(type, disks);
+  s.scene.forces.push_back(std::make_unique<SpringForce>(0, 1, k, 0.5, 0.0));
+  return s;
+}
+
 TEST(Sleep, RestingDiskSleepsAfterItsStillStepsAndThenDoesNotMoveAtAll) {
   for (const char* type : kEventTypes) {
     SCOPED_TRACE(type);
@@ -164,8 +175,7 @@ TEST(Sleep, ASleeperGivenAVelocityBetweenStepsWakesAndMoves) {
 TEST(Sleep, AnIslandMemberGivenAVelocityBetweenStepsWakesTheIsland) {
   for (int moved : {0, 1}) {
     SCOPED_TRACE(moved);
-    TestScene s = floorScene("hybrid", {{0.0, 0.0}, {0.5, 0.0}});
-    s.scene.forces.push_back(std::make_unique<SpringForce>(0, 1, 10.0, 0.5, 0.0));
+    TestScene s = springPair("hybrid");
     auto sim = defaultModeSimulator(s, true);
     for (int k = 0; k < 2 * kStepsToSleep; ++k) ASSERT_TRUE(stepClean(*sim, s));
     ASSERT_EQ(sim->stats().asleep, 2);
@@ -222,8 +232,7 @@ TEST(Sleep, ABallAtTheTopOfItsFlightDoesNotSleep) {
 TEST(Sleep, ParticlesHeldBySpringsOrEdgesSleepOnlyTogether) {
   for (const char* type : kEventTypes) {
     SCOPED_TRACE(type);
-    TestScene spring = floorScene(type, {{0.0, 0.0}, {0.5, 0.0}});
-    spring.scene.forces.push_back(std::make_unique<SpringForce>(0, 1, 10.0, 0.5, 0.0));
+    TestScene spring = springPair(type);
     TestScene edge = floorScene(type, {{0.0, 0.0}, {0.5, 0.0}});
     edge.scene.edges.push_back(Edge{0, 1, 0.02});
     for (TestScene* s : {&spring, &edge}) {
@@ -236,8 +245,7 @@ TEST(Sleep, ParticlesHeldBySpringsOrEdgesSleepOnlyTogether) {
       }
       EXPECT_EQ(fellAt, kStepsToSleep) << "the island should sleep when both have been still for its steps";
     }
-    TestScene sliding = floorScene(type, {{0.0, 0.0}, {0.5, 1.0}});
-    sliding.scene.forces.push_back(std::make_unique<SpringForce>(0, 1, 0.0, 0.5, 0.0));
+    TestScene sliding = springPair(type, {}, /*k=*/0.0, /*vx1=*/1.0);
     auto sim = defaultModeSimulator(sliding, true);
     for (int k = 1; k <= 3 * kStepsToSleep; ++k) {
       ASSERT_TRUE(stepClean(*sim, sliding));
@@ -254,8 +262,7 @@ TEST(Sleep, ADiskHittingAnIslandWakesAllOfIt) {
   for (const char* type : kEventTypes) {
     SCOPED_TRACE(type);
     // Disk 2 leaves after the island has slept: 0.6 m away at 0.5 m/s, it arrives near step 100.
-    TestScene s = floorScene(type, {{0.0, 0.0}, {0.5, 0.0}, {-2 * kR - 0.6, 0.5}});
-    s.scene.forces.push_back(std::make_unique<SpringForce>(0, 1, 10.0, 0.5, 0.0));
+    TestScene s = springPair(type, {{-2 * kR - 0.6, 0.5}});
     auto sim = defaultModeSimulator(s, true);
     int slept = 0, wokeAt = -1;
     for (int k = 1; k <= 200 && wokeAt < 0; ++k) {
