@@ -163,6 +163,20 @@ void ContactProjector::freeze(int b, const Vec2& v) {
   if (!body.changed) body.changed = true, changed_.push_back(s);
 }
 
+// Its rows' diagonals take its share again; their multipliers so far stay applied to the other
+// bodies (it had none of them while immovable), and they are queued: the next solve checks them
+// with its velocity.
+void ContactProjector::release(int b, double inverseMass, const Vec2& v) {
+  const int s = slot_[b];
+  if (inverseMass_[s] != 0.0) return;
+  inverseMass_[s] = inverseMass;
+  velocity_[s] = v;
+  body_[s].forEachRow([&](int k) {
+    row_[k].diag = diagonal(row_[k].r);
+    queue(k);
+  });
+}
+
 bool ContactProjector::Body::hasRow(int k) const {
   bool found = false;
   forEachRow([&](int row) { found = found || row == k; });

@@ -1,10 +1,10 @@
 // The failsafe's worklist Gauss-Seidel (ContactProjector) against its promises: a batch solve is
 // the single projection (checked against the active-set enumeration), incremental solves never
 // add energy and end feasible, warm starts from the last impulses make a resting pile cheap (a
-// replaced row's impulse counts in its total), frozen bodies stay put, a body in more rows than
-// it keeps inline is solved as exactly, a spent budget is reported without gaining energy and
-// leaves the rows it did not settle queued (to be dropped or set aside per problem), and rows
-// grouped by speed scale each settle to their own group's tolerance.
+// replaced row's impulse counts in its total), a body in more rows than it keeps inline is
+// solved as exactly, a spent budget is reported without gaining energy and leaves the rows it did
+// not settle queued (to be dropped or set aside per problem), and rows grouped by speed scale each
+// settle to their own group's tolerance. Frozen and released bodies: contact_projector_bodies_test.cpp.
 #include "fosssim/math/contact_projector.h"
 
 #include <gtest/gtest.h>
@@ -16,25 +16,17 @@
 #include <set>
 #include <vector>
 
+#include "projector_helpers.h"
 #include "random_zones.h"
 
 namespace fosssim::math {
 namespace {
 
-using namespace testing;  // random_zones.h
+using namespace testing;  // random_zones.h, projector_helpers.h
 
 constexpr double kTol = 1e-12;
 constexpr long kLargeBudget = 2000000;
 
-void addBodies(ContactProjector& cp, const Zone& z) {
-  cp.reset(static_cast<int>(z.v.size()));
-  for (size_t b = 0; b < z.v.size(); ++b) cp.addBody(static_cast<int>(b), z.invMass[b], z.v[b]);
-}
-std::vector<Vec2> velocities(const ContactProjector& cp, size_t bodies) {
-  std::vector<Vec2> v;
-  for (size_t b = 0; b < bodies; ++b) v.push_back(cp.velocity(static_cast<int>(b)));
-  return v;
-}
 
 // Random over-constrained zones can jam (v* = 0 with nearly dependent normals), where Gauss-Seidel
 // contracts slowly and may spend even a large budget (ZoneProjection allows ~2% of them). Those
@@ -180,112 +172,6 @@ TEST(ContactProjector, ABodyInMoreRowsThanItStoresInlineIsSolvedExactly) {
     for (size_t b = 0; b < z.v.size(); ++b)
       EXPECT_LE((cp.velocity(static_cast<int>(b)) - ref[b]).norm(), 1e-7 * speedScale(z.v))
           << "trial " << trial << " body " << b;
-  }
-}
-
-void expectChangedOnce(ContactProjector& cp, const std::vector<Vec2>& before, int trial) {
-  std::vector<int> changed;
-  cp.takeChanged(changed);
-  const std::set<int> listed(changed.begin(), changed.end());
-  EXPECT_EQ(listed.size(), changed.size()) << "trial " << trial << ": a body listed twice";
-  for (size_t b = 0; b < before.size(); ++b) {
-    if (cp.velocity(static_cast<int>(b)) == before[b]) continue;
-    EXPECT_TRUE(listed.count(static_cast<int>(b))) << "trial " << trial << " body " << b << " changed, unlisted";
-  }
-}
-
-// Freezing body b at u before the solve is the projection with b fixed at u (the enumeration
-// sees inverse mass 0 there); later rows and solves never move it. A moving frozen body can make
-// the zone infeasible, where Gauss-Seidel only spends its budget: a smaller one keeps this fast.
-constexpr long kFrozenBudget = 100000;
-TEST(ContactProjector, FrozenBodiesKeepTheirVelocityAndChangesAreListedOnce) {
-  std::mt19937 rng(777);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  ContactProjector cp;
-  int compared = 0;
-  for (int trial = 0; trial < 300; ++trial) {
-    Zone z = randomZone(rng);
-    const int b = std::uniform_int_distribution<int>(1, static_cast<int>(z.v.size()) - 1)(rng);
-    const Vec2 frozen(u(rng), u(rng));
-    addBodies(cp, z);
-    for (const ConstraintRow& r : z.rows) cp.addRow(r);
-    cp.freeze(b, frozen);
-    const double scale = std::max(speedScale(z.v), frozen.norm());
-    const bool ok = cp.solve(scale, kTol, kFrozenBudget);
-    expectChangedOnce(cp, z.v, trial);
-    EXPECT_EQ(cp.velocity(b), frozen);
-    z.invMass[b] = 0.0;
-    z.v[b] = frozen;
-    std::vector<Vec2> ref = z.v;
-    if (ok && projectByEnumeration(z.invMass, z.rows, ref)) {  // infeasible when fixed bodies approach
-      ++compared;
-      for (size_t c = 0; c < z.v.size(); ++c)
-        EXPECT_LE((cp.velocity(static_cast<int>(c)) - ref[c]).norm(), 1e-7 * scale) << "trial " << trial;
-    }
-    // More rows on the frozen body, solved: it does not move, others are listed once if moved.
-    const std::vector<Vec2> before = velocities(cp, z.v.size());
-    const Zone more = randomZone(rng);
-    for (ConstraintRow r : more.rows) {
-      r.body[0] = b;
-      for (int m = 1; m < r.count; ++m) r.body[m] = (b + m) % static_cast<int>(z.v.size());
-      cp.addRow(r);
-    }
-    cp.solve(scale, kTol, kFrozenBudget);
-    EXPECT_EQ(cp.velocity(b), frozen) << "trial " << trial;
-    expectChangedOnce(cp, before, trial);
-  }
-  EXPECT_GE(compared, 120);  // 152 of 300 here; others infeasible or out of budget
-}
-
-// Freezing is a state, not an action: freezing a body again at the same velocity (a rigid zone
-// moved again, whose members are frozen each time) changes nothing, before or after rows that
-// name it were added, and freezing it again at another velocity is freezing it there.
-TEST(ContactProjector, FreezingAgainAtTheSameVelocityChangesNothing) {
-  std::mt19937 rng(778);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  for (int trial = 0; trial < 100; ++trial) {
-    const Zone z = randomZone(rng), more = randomZone(rng);
-    const int b = std::uniform_int_distribution<int>(1, static_cast<int>(z.v.size()) - 1)(rng);
-    const Vec2 frozen(u(rng), u(rng)), moved(u(rng), u(rng));
-    ContactProjector once, twice;
-    for (ContactProjector* cp : {&once, &twice}) {
-      addBodies(*cp, z);
-      for (const ConstraintRow& r : z.rows) cp->addRow(r);
-      cp->freeze(b, frozen);
-      if (cp == &twice) cp->freeze(b, frozen);
-      for (ConstraintRow r : more.rows) {
-        r.body[0] = b;
-        for (int m = 1; m < r.count; ++m) r.body[m] = (b + m) % static_cast<int>(z.v.size());
-        cp->addRow(r);
-      }
-      if (cp == &twice) cp->freeze(b, frozen);
-      cp->solve(speedScale(z.v) + 1.0, kTol, kFrozenBudget);
-      cp->freeze(b, moved);
-      cp->solve(speedScale(z.v) + 1.0, kTol, kFrozenBudget);
-    }
-    EXPECT_EQ(twice.velocity(b), moved) << "trial " << trial;
-    for (size_t c = 0; c < z.v.size(); ++c)
-      EXPECT_EQ(twice.velocity(static_cast<int>(c)), once.velocity(static_cast<int>(c))) << "trial " << trial;
-  }
-}
-
-// A row may name a body twice (an edge whose ends are one particle acts as a pair contact); after
-// freezing the row's other body it must still stop the approach exactly like the pair row does.
-TEST(ContactProjector, FreezeKeepsARowThatNamesABodyTwiceExact) {
-  const Vec2 n = unit(0.8);
-  for (const double alpha : {0.5, 0.2}) {
-    ContactProjector asEdge, asPair;  // the same contact written both ways
-    for (ContactProjector* cp : {&asEdge, &asPair}) {
-      cp->reset(2);
-      cp->addBody(0, 1.0, n);  // moving toward body 1 along n
-      cp->addBody(1, 1.0, Vec2::Zero());
-      cp->addRow(cp == &asEdge ? edgeRow(1, 0, 0, alpha, n) : pairRow(0, 1, n));
-      cp->freeze(1, Vec2::Zero());
-      EXPECT_TRUE(cp->solve(1.0, kTol, 100));
-    }
-    EXPECT_LE(asPair.velocity(0).norm(), 1e-14);
-    EXPECT_LE((asEdge.velocity(0) - asPair.velocity(0)).norm(), 1e-12)
-        << "alpha " << alpha << ": edge row gives (" << asEdge.velocity(0).transpose() << ")";
   }
 }
 

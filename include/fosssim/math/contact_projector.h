@@ -93,6 +93,10 @@ class ContactProjector {
   int queuedRows() const { return static_cast<int>(work_.size() - head_); }
 
   const Vec2& velocity(int b) const { return velocity_[slot_[b]]; }
+  /// Makes an immovable body b movable again, with inverse mass w and velocity v, and queues its
+  /// rows (a sleeper that met the zones as an obstacle and woke later in the step); no-op for a
+  /// movable body.
+  void release(int b, double inverseMass, const Vec2& v);
   /// Makes body b immovable from now on, at velocity v (the rigid fallback moves it instead).
   void freeze(int b, const Vec2& v);
   /// Appends the bodies whose velocity changed since the last call, each once.

@@ -84,7 +84,10 @@ int ContactZones::take(const Scene& scene, const StepMotion& motion, int p, int 
   }
   if (parent_[p] < 0) {  // new to the zones: its neighbours are looked at
     queue_.push_back(p);
-    projector_.addBody(p, 1.0 / scene.massOf(p), motion.rate(p) / h);
+    // A body already (an obstacle) is a sleeper that a hit woke after a zone met it: with the
+    // obstacle's zero velocity it would stay put in every solve while its path moves on.
+    if (projector_.hasBody(p)) projector_.release(p, 1.0 / scene.massOf(p), motion.rate(p) / h);
+    else projector_.addBody(p, 1.0 / scene.massOf(p), motion.rate(p) / h);
   }
   const int r = join(p);
   rateScale_[r] = std::max(rateScale_[r], motion.rate(p).norm());
