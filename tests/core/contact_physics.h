@@ -33,14 +33,16 @@ inline TestScene contactScene(const std::string& type, double cor, double dt = 0
 }
 
 /// sleep: resting particles may sleep (HandlerOptions::sleep); zoneUpdatesPerRow > 0 starves
-/// (or feeds) the failsafe's solves (HandlerOptions::zoneUpdatesPerRow).
+/// (or feeds) the failsafe's solves (HandlerOptions::zoneUpdatesPerRow); hold: budget-ended
+/// solves hold the particles they brought to rest (HandlerOptions::hold).
 inline std::unique_ptr<Simulator> defaultModeSimulator(const TestScene& s, bool sleep = true,
-                                                       long zoneUpdatesPerRow = 0) {
+                                                       long zoneUpdatesPerRow = 0, bool hold = true) {
   std::unique_ptr<Simulator> sim;
   SimulatorOptions options;
   options.handler.compat = false;
   options.handler.sleep = sleep;
   options.handler.zoneUpdatesPerRow = zoneUpdatesPerRow;
+  options.handler.hold = hold;
   const Status status = Simulator::create(s.scene, options, sim);
   EXPECT_TRUE(status.isOk()) << status.message();
   return sim;

@@ -1,8 +1,12 @@
 // The failsafe's budget on resting columns (src/core/collision/contact_zones.h): a solve that
 // spends its budget is not a jam, and each step starts from the last step's whole impulses, so a
-// column that a cold solve cannot settle within the jam limit jams in its first step only.
-// Expected values come from the Gauss-Seidel rate of the column's system (computed with NumPy)
-// and from the column being at rest: the same answer in every step.
+// column that a cold solve cannot settle within the jam limit jams in its first step only (these
+// two with holding off, which would settle the column before any jam). Holding: a budget-ended
+// solve stops the particles it has brought to rest, so the column rests without ever jamming,
+// while a disk that slides faster than a quarter of its kick keeps its speed. Expected values
+// come from the Gauss-Seidel rate of the column's system (computed with NumPy), from the column
+// being at rest (the same answer in every step) and from the hold's stated bounds.
+#include "../../src/core/collision/contact_zones.h"
 #include "contact_physics.h"
 
 namespace fosssim::testing {
@@ -28,12 +32,13 @@ TestScene restingColumn(int disks) {
 // before the jam limit (kMaxZoneProjections + 1 = 9, 2,160 updates) finish it. Counting each
 // contact that comes back after a budget-ended solve as a jam reached the limit after one such
 // solve and stopped the disks every step. With 10 updates per row (9 x 80 = 720 < 1,150) the
-// column does jam: the control that the budget, not something else, decides.
+// column does jam: the control that the budget, not something else, decides. (Holding off: with
+// it, a zone's first solve has a fifth of the budget and the column is held, 8e.)
 TEST(ContactPhysics, BudgetEndedSolveIsNotAJam) {
   for (long perRow : {30L, 10L}) {
     SCOPED_TRACE("updates per row " + std::to_string(perRow));
     TestScene s = restingColumn(5);
-    auto sim = defaultModeSimulator(s, /*sleep=*/false, perRow);
+    auto sim = defaultModeSimulator(s, /*sleep=*/false, perRow, /*hold=*/false);
     int jammed = 0, failsafeSteps = 0;
     for (int k = 0; k < 20; ++k) {
       ASSERT_TRUE(stepClean(*sim, s));
@@ -58,12 +63,51 @@ TEST(ContactPhysics, BudgetEndedSolveIsNotAJam) {
 // multiplier alone: the column then jammed in every one of the 100 steps.
 TEST(ContactPhysics, RestingColumnStartsFromItsWholeImpulsesAndJamsOnlyOnce) {
   TestScene s = restingColumn(10);
-  auto sim = defaultModeSimulator(s, /*sleep=*/false);
+  auto sim = defaultModeSimulator(s, /*sleep=*/false, 0, /*hold=*/false);
   for (int k = 1; k <= 100; ++k) {
     ASSERT_TRUE(stepClean(*sim, s));
     if (k == 1) EXPECT_GT(sim->stats().jammedParticles, 0) << "the cold first step should jam (the control)";
     else ASSERT_EQ(sim->stats().jammedParticles, 0) << "step " << k;
     for (int i = 0; i < 10; ++i) ASSERT_NEAR(s.state.x[2 * i + 1], 0.05 + 0.1 * i, 1e-9) << "disk " << i << ", step " << k;
+  }
+}
+
+// 8e. Holding replaces the jam. The same ten-disk column with holding on (the default): its cold
+// first solve cannot finish within its budget (above), and every disk started the step at rest
+// and has been brought back within a kick of rest by then, so the disks are held: they stop for
+// the rest of the step, the column rests exactly where it stands, and no contact ever has to
+// come back until the jam limit. Without holding, the first step jams (8d's control).
+TEST(ContactPhysics, ABudgetEndedSolveHoldsARestingColumnInsteadOfJamming) {
+  TestScene s = restingColumn(10);
+  auto sim = defaultModeSimulator(s, /*sleep=*/false);
+  int held = 0;
+  for (int k = 1; k <= 100; ++k) {
+    ASSERT_TRUE(stepClean(*sim, s));
+    ASSERT_EQ(sim->stats().jammedParticles, 0) << "step " << k;
+    held += sim->stats().heldParticles;
+    for (int i = 0; i < 10; ++i) ASSERT_NEAR(s.state.x[2 * i + 1], 0.05 + 0.1 * i, 1e-9) << "disk " << i << ", step " << k;
+  }
+  EXPECT_GT(held, 0);
+}
+
+// 8f. What holding may not touch. A disk slides along the floor away from the foot of the
+// column, touching it, so it joins the column's zone, whose cold solve ends on its budget in
+// step 1. The kick is g h = 0.0981 m/s. Sliding at 0.3 kicks (above kHeldStartFraction) it keeps
+// its speed exactly: frictionless sliding is tangential to every row. At 0.2 kicks it is held
+// (the stated price: it loses at most a kick of speed, here all of its 0.2): the control that
+// the disk was in the held zone.
+TEST(ContactPhysics, HoldingLeavesADiskSlidingFasterThanAQuarterKick) {
+  const double kick = 9.81 * 0.01;
+  for (const double kicks : {0.3, 0.2}) {
+    SCOPED_TRACE("sliding at " + std::to_string(kicks) + " kicks");
+    TestScene s = restingColumn(10);
+    addBody(s, 1.0, Vec2(0.1, 0.05), Vec2(kicks * kick, 0.0), 0.05);
+    auto sim = defaultModeSimulator(s, /*sleep=*/false);
+    ASSERT_TRUE(stepClean(*sim, s));
+    ASSERT_GT(sim->stats().heldParticles, 0) << "the column's solve should have held it";
+    const Vec2 v = at(s.state.v, 10);
+    if (kicks > kHeldStartFraction) EXPECT_NEAR((v - Vec2(kicks * kick, 0.0)).norm(), 0.0, 1e-12) << v.transpose();
+    else EXPECT_LE(v.norm(), 1e-12) << v.transpose();  // stopped; rounding of the velocity's update
   }
 }
 

@@ -46,6 +46,10 @@ struct HandlerOptions {
   /// tuned kZoneUpdatesPerRow of src/core/collision/contact_zones.h). For tests and measurements:
   /// a starved failsafe must still leave no contact closing unseen, only cost more events.
   long zoneUpdatesPerRow = 0;
+  /// Default mode: a failsafe solve that ends on its budget holds the particles it has brought
+  /// to rest (stops them for the rest of the step; src/core/collision/contact_zones.h). Off (for
+  /// tests and measurements), such a solve's contacts only come back as events.
+  bool hold = true;
 };
 
 /// Everything a handler may use during one step besides the scene and the two states.

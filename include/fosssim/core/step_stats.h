@@ -28,6 +28,7 @@ struct StepStats {
   int woken = 0;             ///< default mode: sleepers woken in the step (by a contact or a moving neighbour)
   int rigidZones = 0;        ///< zones that moved rigidly (or stopped): all of --compat's, the default mode's last resort
   int jammedParticles = 0;   ///< default mode: particles a jam against an obstacle stopped for the rest of the step
+  int heldParticles = 0;     ///< default mode: particles held at rest by a budget-ended solve (stopped for the rest of the step)
 
   void clear() { *this = StepStats{}; }
 };

@@ -113,7 +113,7 @@ int ContactZones::absorb(const Scene& scene, const StepMotion& motion, const Pai
     // again. Its particles stop for the rest of the step (obstacles from now on), not the zone.
     for (int k = 0; k < pair.count; ++k)
       if (!isImmobile(scene, pair.p[k])) {
-        stopped_[pair.p[k]] = 1;
+        stopped_[pair.p[k]] = kJam;
         projector_.freeze(pair.p[k], Vec2::Zero());
       }
   }
@@ -163,7 +163,8 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
       const int fresh = solves_[zone]++ == 0 ? projector_.rows()
                                              : std::max(projector_.rows() - solvedRows_, projector_.queuedRows());
       const bool jammed = metAgain_[zone] > kMaxZoneProjections;
-      const long perRow = jammed ? std::max(updatesPerRow_ / kJammedBudgetDivisor, 1L) : updatesPerRow_;
+      const long divisor = jammed ? kJammedBudgetDivisor : solves_[zone] == 1 && hold_ ? kFirstSolveBudgetDivisor : 1;
+      const long perRow = std::max(updatesPerRow_ / divisor, 1L);
       const long budget = perRow * std::max(fresh, 8);
       solvedRows_ = projector_.rows();
       // Each row settles to its own zone's tolerance (its group: the zone's root when the row
@@ -174,6 +175,7 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
       // chains 2,500, --verify). A root merged into another since keeps the smaller scale it had
       // (scales only grow within a step), so its rows are held, if anything, tighter.
       if (!projector_.solve(rateScale_.data(), 1.0 / h, kZoneProjectionTolerance, budget)) {
+        if (hold_ && immovable_[zone]) holdResting(scene, zone);
         ++metAgain_[zone];
         // A failure is its zone's alone. This zone's rows still queued are dropped; those of
         // other zones waiting for their solves at this instant are set aside for those solves
@@ -227,6 +229,19 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
     // Growing may have merged a zone whose rows wait set aside (a pair can join without a row of
     // its own, at coincident centres): they are this zone's now, and only its solve settles them.
     if (added == 0 && (rigid_[zone] || !waitingFor(zone))) return;
+  }
+}
+
+// The members of a zone against an obstacle that its budget-ended solve has brought to rest stop
+// for the rest of the step (kHeldKickFraction, kHeldStartFraction).
+void ContactZones::holdResting(const Scene& scene, int zone) {
+  for (int p : members_[zone]) {
+    const double kick = sleepers_->kick(p);
+    if (isImmobile(scene, p) || sleepers_->startSpeed(p) > kHeldStartFraction * kick ||
+        projector_.velocity(p).norm() > kHeldKickFraction * kick)
+      continue;
+    stopped_[p] = kHeld;
+    projector_.freeze(p, Vec2::Zero());
   }
 }
 
@@ -293,7 +308,10 @@ void ContactZones::sizes(StepStats& stats) const {
     ++stats.zones;
     stats.rigidZones += rigid_[r];
     stats.zoneParticles += static_cast<int>(members_[r].size());
-    for (int p : members_[r]) stats.jammedParticles += stopped_[p];
+    for (int p : members_[r]) {
+      stats.jammedParticles += stopped_[p] == kJam;
+      stats.heldParticles += stopped_[p] == kHeld;
+    }
     stats.largestZone = std::max(stats.largestZone, static_cast<int>(members_[r].size()));
   }
   stats.failsafeUsed = stats.failsafeUsed || stats.zones > 0;

@@ -20,6 +20,18 @@
 // and the angular velocity of its momentum (the M-orthogonal projection onto rigid motions, so no
 // energy is gained and momentum is kept). failsafe="rigid" makes every zone rigid at once, and a
 // rigid zone touching an obstacle stops. Contacts inside a rigid zone are exempt.
+//
+// Before that, particles held at rest: when the solve of a zone against an obstacle ends on its
+// budget, the members that started the step at rest and that the solve has already brought back
+// to rest stop for the rest of the step, as obstacles, and the rest of the zone goes on. "At rest"
+// is measured against the kick, the velocity this step's forces gave the particle (Sleepers::
+// kick): a particle resting on a pile gains a kick every step and its contacts take it back. On
+// a jammed pile that is the answer Gauss-Seidel was creeping towards, reached without the
+// thousands of sweeps a jammed pile needs (README, Performance > Dense piles). What it costs the
+// physics: a held particle loses at most a kick of speed (g h under gravity, which vanishes with
+// the step like the integrator's own error), and only if it was slower than a quarter of a kick
+// to begin with, so nothing that flows or slides is held; without forces (kick 0) only a particle
+// exactly at rest is.
 #pragma once
 
 #include "pair_candidates.h"
@@ -78,6 +90,24 @@ constexpr long kZoneUpdatesPerRow = 100;
 /// Performance > Dense piles.)
 constexpr long kJammedBudgetDivisor = 10;
 
+/// With holding on, a zone's first solve in a step solves with this fraction of the budget per
+/// row. On a resting
+/// pile that solve rarely converges whatever its budget (its contacts change a little every
+/// step); what a short one leaves is settled by holding the particles it has brought to rest and
+/// by the solves of the contacts that come back. With 1/10, random zones gained kinetic energy
+/// (ContactPhysicsRandom.KineticEnergyNeverGrows: a warm start the shorter solve had not taken
+/// back); 1/5 keeps every test. Measured with the hold: README, Performance > Dense piles.
+constexpr long kFirstSolveBudgetDivisor = 5;
+
+/// A held particle (see the top of this file) has a speed of at most this fraction of its kick
+/// after the budget-ended solve ...
+constexpr double kHeldKickFraction = 1.0;
+
+/// ... and had at most this fraction of its kick at the start of the step: a disk sliding on the
+/// floor faster than that keeps its speed (in the oracle's v_pile a ball slides at a third of a
+/// kick: without this bound the hold stopped it).
+constexpr double kHeldStartFraction = 0.25;
+
 /// A solve looks for new neighbours only around particles whose rate it changed by more than
 /// this fraction of the zone's largest rate. Finding neighbours early only saves later events:
 /// a pair missed here is still detected, as an event, if it comes into contact.
@@ -126,6 +156,8 @@ class ContactZones {
   void setRigidOnly(bool rigid) { rigidOnly_ = rigid; }
   /// The solves' budget per added row (kZoneUpdatesPerRow unless a test or measurement says).
   void setUpdatesPerRow(long updates) { updatesPerRow_ = updates; }
+  /// Whether budget-ended solves hold the particles they brought to rest (on unless a test says).
+  void setHold(bool hold) { hold_ = hold; }
   /// The handler's sleepers: obstacles, as fixed particles are.
   void setSleepers(const Sleepers* sleepers) { sleepers_ = sleepers; }
 
@@ -170,9 +202,13 @@ class ContactZones {
     unsolved_.resize(kept);
   }
   void moveRigidly(const Scene& scene, const StepMotion& motion, int zone, double T);
+  /// Stops the members of zone `zone` (a root) held at rest (see the top of this file).
+  void holdResting(const Scene& scene, int zone);
 
+  static constexpr char kJam = 1, kHeld = 2;  ///< why a particle stopped (stopped_)
   bool rigidOnly_ = false;
   long updatesPerRow_ = kZoneUpdatesPerRow;
+  bool hold_ = true;
   const Sleepers* sleepers_ = nullptr;
   std::vector<int> parent_;                ///< N: union-find parent, -1 when in no zone
   std::vector<std::vector<int>> members_;  ///< per root: its particles
@@ -182,7 +218,7 @@ class ContactZones {
   std::vector<char> immovable_;            ///< per root: a fixed particle or a half-plane among its rows
   std::vector<double> rateScale_;          ///< per root: see rateScale()
   std::vector<int> frozen_;                ///< per root: its first members_ frozen at rest (immovable and rigid)
-  std::vector<char> stopped_;              ///< N: stopped for the rest of the step (a jam's particles)
+  std::vector<char> stopped_;              ///< N: stopped for the rest of the step: kJam, kHeld or 0
   std::vector<int> roots_;                 ///< every particle that has been a root this step
   PairKeyMap<int> rowOf_;                  ///< the projector's row of each pair with one this step
   PairKeyMap<double> lastImpulse_;         ///< each contact's positive impulse at the end of the last step

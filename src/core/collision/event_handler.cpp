@@ -32,6 +32,7 @@ EventHandler::EventHandler(const CollisionSettings& settings, int eventsPerParti
   zones_.setRigidOnly(settings.failsafe == Failsafe::Rigid);
   zones_.setSleepers(&sleepers_);
   if (options.zoneUpdatesPerRow > 0) zones_.setUpdatesPerRow(options.zoneUpdatesPerRow);
+  zones_.setHold(options.hold);
   sleepers_.setEnabled(options.sleep);
   sleepers_.setThreads(threads_);
 }

@@ -9,6 +9,15 @@ namespace fosssim {
 void Sleepers::begin(const Scene& scene, const State& start, State& state, double h) {
   h_ = h;
   const int n = scene.numParticles();
+  // The kicks, whether sleeping is on or not: the zones' held particles need them too, and end()
+  // sums them over still runs.
+  if (static_cast<int>(kick_.size()) != n) kick_.assign(n, 0.0), startSpeed_.assign(n, 0.0);
+  forRowRanges(n, threads_, [&](int, int first, int end) {
+    for (int p = first; p < end; ++p) {
+      kick_[p] = (at(state.v, p) - at(start.v, p)).norm();
+      startSpeed_[p] = at(start.v, p).norm();
+    }
+  });
   if (!enabled_) {
     sleeping_ = 0;
     return;
@@ -21,7 +30,6 @@ void Sleepers::begin(const Scene& scene, const State& start, State& state, doubl
     anchorVelocity_ = start.v;
     kicks_.assign(n, 0.0);
     rest_ = start.x;
-    kick_.assign(n, 0.0);
     sleeping_ = 0;
   }
   // Who may sleep, and with whom: the scene's contents do not change during a run, but this
@@ -37,10 +45,6 @@ void Sleepers::begin(const Scene& scene, const State& start, State& state, doubl
     coupled_.clear();  // nothing sleeps: no islands to keep
   }
   findIslands(scene);
-  // The kicks, whether anyone sleeps or not (end() sums them over still runs).
-  forRowRanges(n, threads_, [&](int, int first, int end) {
-    for (int p = first; p < end; ++p) kick_[p] = (at(state.v, p) - at(start.v, p)).norm();
-  });
   if (sleeping_ == 0) return;
   // By ranges of particles: each one's work is its own; the sleepers woken are counted per range.
   std::vector<int> woken(static_cast<size_t>(rowRangesFor(n, threads_)), 0);

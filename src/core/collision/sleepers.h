@@ -61,7 +61,7 @@ constexpr double kWakeKickFactor = 2.0;
 
 class Sleepers {
  public:
-  /// Sleeping on or off (off: nothing ever sleeps and nothing here costs anything).
+  /// Sleeping on or off (off: nothing ever sleeps, and nothing here costs more than the kicks).
   void setEnabled(bool on) { enabled_ = on; }
   /// Threads for the per-particle passes at a step's start and end (the same result for any).
   void setThreads(int threads) { threads_ = threads; }
@@ -80,8 +80,11 @@ class Sleepers {
   int wake(int p);
   /// Whether p did not stay still in the last step (a neighbour that moves wakes sleepers).
   bool movedLastStep(int p) const { return moved_.empty() || moved_[p] != 0; }
-  /// The velocity change this step's forces gave particle p (|predicted v - start v|).
+  /// The velocity change this step's forces gave particle p (|predicted v - start v|); known
+  /// from begin() on, whether sleeping is on or not.
   double kick(int p) const { return kick_[p]; }
+  /// Particle p's speed at the step's start (known from begin() on).
+  double startSpeed(int p) const { return startSpeed_[p]; }
   /// The sleep speed of particle p: kSleepFraction of its radius per step, over h.
   double sleepSpeed(const Scene& scene, int p) const { return kSleepFraction * scene.radius[p] / h_; }
 
@@ -104,6 +107,7 @@ class Sleepers {
   std::vector<double> kicks_;    ///< N: sum of kick_ over the particle's still run
   VecX rest_;                    ///< 2N: a sleeper's position (where it fell asleep)
   std::vector<double> kick_;     ///< N: this step's |predicted v - start v|
+  std::vector<double> startSpeed_;  ///< N: |start v|
   std::vector<std::pair<int, int>> coupled_;  ///< pairs the forces and edges tie (see Force::couples)
   std::vector<int> islandOf_;    ///< N: island of two or more particles, or -1 (empty: none)
   std::vector<int> islandStart_; ///< islands + 1: each island's first index into islandMembers_
