@@ -50,6 +50,7 @@ struct Options {
   bool allPairs = false;
   bool compat = false;  ///< the course's formulation (--compat) instead of the default mode
   bool noSleep = false; ///< --no-sleep: the default mode's resting particles do not sleep
+  bool noHold = false;  ///< --no-hold: the default mode's budget-ended solves hold nobody (HandlerOptions::hold)
   int threads = 1;
   std::string csv;
   bool queries = true;
@@ -129,6 +130,7 @@ Figures runScene(const Options& o, const std::string& kind, int n) {
   options.handler.compat = o.compat;
   options.handler.threads = o.threads;
   options.handler.sleep = !o.noSleep;
+  options.handler.hold = !o.noHold;
   std::unique_ptr<Simulator> sim;
   if (Status st = Simulator::create(s.scene, options, sim); !st) {
     std::snprintf(f.error, sizeof f.error, "%s", st.message().c_str());
@@ -289,6 +291,7 @@ void define(CLI::App& app, Options& o) {
   app.add_flag("--all-pairs", o.allPairs, "test every pair (no broad phase)");
   app.add_flag("--compat", o.compat, "the course's formulation instead of the default mode");
   app.add_flag("--no-sleep", o.noSleep, "the default mode's resting particles do not sleep");
+  app.add_flag("--no-hold", o.noHold, "the default mode's budget-ended zone solves hold no particle at rest");
   app.add_option("--csv", o.csv, "also write the figures to this CSV file")->option_text("FILE");
   app.add_flag_callback("--no-queries", [&o] { o.queries = false; }, "skip the narrow-phase query rates");
   app.add_flag_callback("--no-steps", [&o] { o.stepTable = false; }, "skip the ms-per-step table");
@@ -318,9 +321,10 @@ int main(int argc, char** argv) {
   }
   printMachine();
   if (o.stepTable) {
-    std::printf("ms per step by phase (%s handling, %d thread%s%s%s%s, seed %u; fastest of the repeated runs)\n",
+    std::printf("ms per step by phase (%s handling, %d thread%s%s%s%s%s, seed %u; fastest of the repeated runs)\n",
                 o.collision.c_str(), o.threads, o.threads == 1 ? "" : "s", o.allPairs ? ", all pairs" : "",
-                o.compat ? ", --compat" : "", o.noSleep && !o.compat ? ", no sleeping" : "", o.seed);
+                o.compat ? ", --compat" : "", o.noSleep && !o.compat ? ", no sleeping" : "",
+                o.noHold && !o.compat ? ", no holding" : "", o.seed);
     std::printf("%-16s %7s %6s %9s %7s %7s %7s %7s %8s %8s | %9s %9s %6s %5s %6s %6s %6s %5s %5s %5s %7s %6s\n", "scene", "N",
                 "steps", "integrate", "broad", "narrow", "respond", "failsafe", "other", "total", "cand/step",
                 "coll/step", "passes", "fs%", "rounds", "zone", "inzn%", "rgd%", "jam%", "held%", "B/part", "grow/p");
