@@ -188,6 +188,50 @@ TEST(Sleep, AnIslandMemberGivenAVelocityBetweenStepsWakesTheIsland) {
   }
 }
 
+// The same at a small step (dt 2 10^-4): two touching sleepers (radius 1/8, centres 1/4 apart)
+// and a disk arriving at 1 m/s. The first sleeper is within the mover's reach and wakes at the
+// step's start; the far one only by the impact, at 1 m/s. The sleep speed was the sleep distance
+// per step over h, 3 10^-3 r / h = 1.9 m/s here: the far disk stayed asleep and its neighbour
+// bounced back off it as off a wall. Measured over the still run (3 10^-3 r in kStepsToSleep
+// steps: 0.031 m/s) the hit wakes it: it leaves at 1 m/s, the others stop (COR 1).
+TEST(Sleep, AHitWakesASleeperAtASmallStepToo) {
+  for (const char* type : kEventTypes) {
+    SCOPED_TRACE(type);
+    TestScene s = contactScene(type, 1.0, 2e-4);
+    addBody(s, 1.0, Vec2(0.0, 0.0), Vec2::Zero(), 0.125);
+    addBody(s, 1.0, Vec2(-0.25, 0.0), Vec2::Zero(), 0.125);
+    addBody(s, 1.0, Vec2(-0.5 - 0.0501, 0.0), Vec2(1.0, 0.0), 0.125);  // arrives 0.5 into step 251
+    auto sim = defaultModeSimulator(s, true);
+    int asleepMost = 0;
+    for (int k = 0; k < 300; ++k) {
+      ASSERT_TRUE(stepClean(*sim, s));
+      asleepMost = std::max(asleepMost, sim->stats().asleep);
+    }
+    EXPECT_EQ(asleepMost, 2) << "both should have slept before the hit";
+    EXPECT_NEAR(at(s.state.v, 0).x(), 1.0, 1e-12);
+    EXPECT_NEAR(at(s.state.v, 1).norm(), 0.0, 1e-12);
+    EXPECT_NEAR(at(s.state.v, 2).norm(), 0.0, 1e-12);
+  }
+}
+
+// Without forces nothing may take up a velocity, so only a particle exactly at rest sleeps: one
+// drifting at 0.01 m/s with dt 10^-4 moves 10^-6 m a step and 6 10^-5 m in kStepsToSleep steps,
+// both within the sleep distance (3 10^-3 r = 3 10^-4 m), and slept at step 60 with its
+// velocity dropped before a sleeper's speed had to be within kWakeKickFactor kicks (here 0).
+TEST(Sleep, ADiskDriftingWithoutForcesNeverSleepsAtASmallStep) {
+  for (const char* type : kEventTypes) {
+    SCOPED_TRACE(type);
+    TestScene s = contactScene(type, 1.0, 1e-4);
+    addBody(s, 1.0, Vec2::Zero(), Vec2(0.01, 0.0), kR);
+    auto sim = defaultModeSimulator(s, true);
+    for (int k = 1; k <= 3 * kStepsToSleep; ++k) {
+      ASSERT_TRUE(stepClean(*sim, s));
+      ASSERT_EQ(sim->stats().asleep, 0) << "step " << k;
+    }
+    EXPECT_EQ(at(s.state.v, 0), Vec2(0.01, 0.0));
+  }
+}
+
 TEST(Sleep, ADiskSlidingSlowerThanTheSleepSpeedStillNeverSleeps) {
   for (const char* type : kEventTypes) {
     SCOPED_TRACE(type);

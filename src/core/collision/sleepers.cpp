@@ -146,8 +146,8 @@ void Sleepers::end(const Scene& scene, const State& start, State& state) {
       if (!islandOf_.empty()) ready_[p] = 0;
       if (asleep_[p] || !mayRest_[p]) continue;
       const double reach = kSleepFraction * scene.radius[p];
-      const bool still =
-          (at(state.x, p) - at(start.x, p)).norm() <= reach && h_ * at(state.v, p).norm() <= reach;
+      const bool still = (at(state.x, p) - at(start.x, p)).norm() <= reach && h_ * at(state.v, p).norm() <= reach &&
+                         at(state.v, p).norm() <= kWakeKickFactor * kick_[p];
       moved_[p] = !still;
       if (!still) {
         still_[p] = 0;

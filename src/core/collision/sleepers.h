@@ -10,7 +10,7 @@
 //   * a contact that hits it harder than resting contact does: an event whose closing speed
 //     exceeds twice what this step's forces gave the pair's awake particles (a particle resting
 //     on a sleeper closes at about h g every step: that must not wake it, or no pile could
-//     sleep) plus the sleep speed. It wakes in the same step, before the response, which then
+//     sleep) plus the sleep speed (sleepSpeed: the sleep distance over the still run). It wakes in the same step, before the response, which then
 //     moves it as any other particle;
 //   * a neighbour that moves: at the start of a step, every sleeper among the broad phase's
 //     candidates of an awake particle that was not still in the last step wakes. This is what
@@ -18,7 +18,9 @@
 //     at most: the step in which the support left).
 // "Still" is measured in the scene's own scales, never in absolute units: over a step, a
 // particle moved less than kSleepFraction of its radius and its velocity would move it less than
-// that; and over the kStepsToSleep steps before it sleeps it moved less than kSleepFraction of its
+// that, and its speed is at most what would wake it (kWakeKickFactor kicks: without forces, only
+// a particle exactly at rest is still, so one drifting slowly never sleeps whatever the step);
+// and over the kStepsToSleep steps before it sleeps it moved less than kSleepFraction of its
 // radius in all (a particle sliding slowly at constant speed does not sleep), and its forces did
 // not go into its motion: its velocity changed by at most half the sum of its forces' kicks over
 // those steps. A supported particle's kicks are taken up by its contacts; a ball at the top of
@@ -85,8 +87,14 @@ class Sleepers {
   double kick(int p) const { return kick_[p]; }
   /// Particle p's speed at the step's start (known from begin() on).
   double startSpeed(int p) const { return startSpeed_[p]; }
-  /// The sleep speed of particle p: kSleepFraction of its radius per step, over h.
-  double sleepSpeed(const Scene& scene, int p) const { return kSleepFraction * scene.radius[p] / h_; }
+  /// The sleep speed of particle p: the speed at which it could stay within the sleep distance
+  /// over a whole still run (kSleepFraction of its radius in kStepsToSleep steps). Not the
+  /// distance per step over h: at a small step that is fast (3 10^-3 r / h: 1.5 m/s for r = 0.1
+  /// at dt 2 10^-4), and a ball of Newton's cradle hitting a sleeper at 1 m/s bounced off it as
+  /// off a wall.
+  double sleepSpeed(const Scene& scene, int p) const {
+    return kSleepFraction * scene.radius[p] / (kStepsToSleep * h_);
+  }
 
   /// Step end: counts who stayed still, and puts to sleep those still for kStepsToSleep steps.
   void end(const Scene& scene, const State& start, State& state);
