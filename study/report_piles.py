@@ -61,7 +61,16 @@ def hybrid_pile_facts(hyb, default, simple, ct, f):
                  if min(fractions) > 50 else f"{names[top[0]]} take the largest share at every maxiters "
                  f"({min(fractions):.0f}-{max(fractions):.0f} %)")
     else:
-        where = "; ".join(f"maxiters {int(r['maxiters'])}: {names[t]}" for r, t in zip(runs, top)) + " take the largest share"
+        # Consecutive maxiters with the same largest part as one range: "the failsafe's zone
+        # solves at maxiters 0-20, the narrow phase at 50-100".
+        groups = []
+        for r, t in zip(runs, top):
+            if groups and groups[-1][0] == t:
+                groups[-1][2] = int(r["maxiters"])
+            else:
+                groups.append([t, int(r["maxiters"]), int(r["maxiters"])])
+        spans = [f"{names[t]} at maxiters {a}" + (f"-{b}" if b != a else "") for t, a, b in groups]
+        where = "the largest share of the step goes to " + ", ".join(spans)
     words = (f"On this pile every particle soon uses up its quota of impulse events in a step (maxiters, the "
              f"hybrid's limit per particle and step before its contacts go to the failsafe): with "
              f"maxiters = {int(default['maxiters'])}{' (the default)' if default['maxiters'] == 10 else ''} the failsafe runs in {share(default):.0f} % of the steps, and a failsafe step puts "
