@@ -10,8 +10,8 @@
 //   * a contact that hits it harder than resting contact does: an event whose closing speed
 //     exceeds twice what this step's forces gave the pair's awake particles (a particle resting
 //     on a sleeper closes at about h g every step: that must not wake it, or no pile could
-//     sleep) plus the sleep speed (sleepSpeed: the sleep distance over the still run). It wakes in the same step, before the response, which then
-//     moves it as any other particle;
+//     sleep) plus the sleep speed (sleepSpeed: the sleep distance over a still run). It wakes
+//     in the same step, before the response, which then moves it as any other particle;
 //   * a neighbour that moves: at the start of a step, every sleeper among the broad phase's
 //     candidates of an awake particle that was not still in the last step wakes. This is what
 //     keeps a sleeper from floating when the particle under it is knocked away (one step late
