@@ -74,7 +74,7 @@ TEST(ContactPhysics, RestingColumnStartsFromItsWholeImpulsesAndJamsOnlyOnce) {
 
 // 8e. Holding replaces the jam. The same ten-disk column with holding on (the default): its cold
 // first solve cannot finish within its budget (above), and every disk started the step at rest
-// and has been brought back within a kick of rest by then, so the disks are held: they stop for
+// and has been brought back within 0.9 of a kick of rest by then, so the disks are held: they stop for
 // the rest of the step, the column rests exactly where it stands, and no contact ever has to
 // come back until the jam limit. Without holding, the first step jams (8d's control).
 TEST(ContactPhysics, ABudgetEndedSolveHoldsARestingColumnInsteadOfJamming) {
