@@ -175,7 +175,7 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
       // chains 2,500, --verify). A root merged into another since keeps the smaller scale it had
       // (scales only grow within a step), so its rows are held, if anything, tighter.
       if (!projector_.solve(rateScale_.data(), 1.0 / h, kZoneProjectionTolerance, budget)) {
-        if (hold_ && immovable_[zone]) holdResting(scene, zone);
+        if (hold_ && sleepers_ && immovable_[zone]) holdResting(scene, zone);  // the kicks are the sleepers'
         ++metAgain_[zone];
         // A failure is its zone's alone. This zone's rows still queued are dropped; those of
         // other zones waiting for their solves at this instant are set aside for those solves

@@ -92,13 +92,21 @@ int Sleepers::wakeIsland(int k) {
 }
 
 // Union-find over the coupled pairs of movable particles (a fixed end ties nobody); only islands
-// of two or more are kept (a lone particle sleeps by itself, as it always did).
+// of two or more are kept (a lone particle sleeps by itself, as it always did). The islands
+// depend on the ties and the fixed flags alone, so they are found again only when one of those
+// changed (a caller edited the scene): comparing costs a pass, not the union-find's allocations.
 void Sleepers::findIslands(const Scene& scene) {
+  const int n = scene.numParticles();
+  bool same = coupled_ == islandTies_ && static_cast<int>(islandFixed_.size()) == n;
+  for (int p = 0; same && p < n; ++p) same = islandFixed_[p] == static_cast<char>(scene.isFixed(p));
+  if (same) return;
+  islandTies_ = coupled_;
+  islandFixed_.resize(static_cast<size_t>(n));
+  for (int p = 0; p < n; ++p) islandFixed_[p] = static_cast<char>(scene.isFixed(p));
   islandOf_.clear();
   islandStart_.clear();
   islandMembers_.clear();
   if (coupled_.empty()) return;
-  const int n = scene.numParticles();
   std::vector<int> parent(static_cast<size_t>(n));
   for (int p = 0; p < n; ++p) parent[p] = p;
   const auto root = [&](int p) {

@@ -121,8 +121,10 @@ class Sleepers {
   std::vector<int> islandStart_; ///< islands + 1: each island's first index into islandMembers_
   std::vector<int> islandMembers_;  ///< the islands' particles, island by island
   std::vector<char> ready_;      ///< N: an island member that would sleep now were it alone
+  std::vector<std::pair<int, int>> islandTies_;  ///< coupled_ when the islands were last found
+  std::vector<char> islandFixed_;  ///< N: the fixed flags when the islands were last found
 
-  void findIslands(const Scene& scene);
+  void findIslands(const Scene& scene);  ///< from coupled_, unless it and the fixed flags are unchanged
   int wakeIsland(int k);  ///< wakes island k's sleepers; returns how many
   void fallAsleep(int p, State& state);
 };
