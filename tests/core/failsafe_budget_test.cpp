@@ -111,5 +111,45 @@ TEST(ContactPhysics, HoldingLeavesADiskSlidingFasterThanAQuarterKick) {
   }
 }
 
+// 8f. A zone that moves rigidly does not stop when it meets an obstacle. Thirty unit disks
+// (radius 0.05) in a touching row 0.012 above a frictionless floor, no forces; hybrid, one
+// impulse per particle. The row is squeezed (disk k moves 2 + 0.05 (14.5 - k) m/s along it) and
+// turned (the left half moves up at 1 m/s, the right half down): no disk can reach the floor in
+// the step (0.01 at most). The zone cannot settle its 29 contacts (Gauss-Seidel on that chain
+// needs some 60,000 updates, 8c; the solves allowed before the last resort spend a few thousand),
+// so it moves rigidly from t = 0: its centre-of-mass velocity (2, 0) and the angular velocity of
+// its momentum, omega = L / I = -22.5 / 22.475 rad/s, which moves the right end down at
+// 1.45 m/s: now it reaches the floor. Stopping the whole zone there (the reference's rule, which
+// failsafe="rigid" keeps: the control) throws away the slide, which a frictionless floor cannot
+// take: the row's momentum along the floor, 60, must survive the step exactly, and the floor must
+// take the right end's fall. Without the floor the zone ends the step rigid: the
+// control that the row went rigid before it met the floor.
+TEST(ContactPhysics, ARigidZoneThatMeetsTheFloorKeepsItsSlide) {
+  for (const Failsafe failsafe : {Failsafe::Projection, Failsafe::Rigid}) {
+    for (const bool floor : {true, false}) {
+      SCOPED_TRACE(std::string(failsafe == Failsafe::Rigid ? "rigid" : "projection") + (floor ? ", floor" : ", no floor"));
+      TestScene s = contactScene("hybrid", 0.0, 0.01, failsafe, /*maxIterations=*/1);
+      for (int k = 0; k < 30; ++k)
+        addBody(s, 1.0, Vec2(0.1 * k, 0.062), Vec2(2.0 + 0.05 * (14.5 - k), k < 15 ? 1.0 : -1.0), 0.05);
+      if (floor) s.scene.halfplanes.push_back(HalfPlane{Vec2::Zero(), Vec2(0, 1)});
+      auto sim = defaultModeSimulator(s, /*sleep=*/false);
+      ASSERT_TRUE(stepClean(*sim, s));
+      double slide = 0;
+      for (int k = 0; k < 30; ++k) slide += at(s.state.v, k).x();
+      const double endFall = at(s.state.v, 29).y();
+      if (!floor) {
+        EXPECT_GT(sim->stats().rigidZones, 0);
+        EXPECT_NEAR(slide, 60.0, 1e-12);
+        EXPECT_NEAR(endFall, -22.5 / 22.475 * 1.45, 1e-12);  // omega r
+      } else if (failsafe == Failsafe::Rigid) {
+        EXPECT_NEAR(slide, 0.0, 1e-12);  // stopped whole
+      } else {
+        EXPECT_NEAR(slide, 60.0, 1e-12);
+        EXPECT_GE(endFall, -1e-12);
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace fosssim::testing

@@ -91,7 +91,12 @@ int ContactZones::take(const Scene& scene, const StepMotion& motion, int p, int 
   }
   const int r = join(p);
   rateScale_[r] = std::max(rateScale_[r], motion.rate(p).norm());
-  return zone < 0 ? r : unite(zone, r);
+  if (zone < 0) return r;
+  // The count of the side that did not move rigidly, if one did (its contacts' record, not the raft's).
+  const int a = root(zone), movingCount = rigid_[a] ? metAgain_[r] : metAgain_[a];
+  const int merged = unite(a, r);
+  if (rigid_[merged] && immovable_[merged] && !rigidOnly_) resumeProjection(scene, merged, movingCount);
+  return merged;
 }
 
 int ContactZones::absorb(const Scene& scene, const StepMotion& motion, const PairCandidates& candidates, uint64_t key,
@@ -243,6 +248,17 @@ void ContactZones::holdResting(const Scene& scene, int zone) {
     stopped_[p] = kHeld;
     projector_.freeze(p, Vec2::Zero());
   }
+}
+
+// A zone moving rigidly that meets an obstacle goes back to the projection (see the top of the
+// header): its members leave the projector's frozen set with the rigid velocities they have, and
+// their rows are queued for the zone's next solve. Stopped members (a jam or a hold of the zone
+// it merged with) stay stopped; the others are movable already (release() leaves them as they are).
+void ContactZones::resumeProjection(const Scene& scene, int zone, int metAgain) {
+  rigid_[zone] = 0;
+  metAgain_[zone] = metAgain;
+  for (int p : members_[zone])
+    if (!stopped_[p]) projector_.release(p, 1.0 / scene.massOf(p), projector_.velocity(p));
 }
 
 // Whether rows set aside wait for zone `zone`'s solve.

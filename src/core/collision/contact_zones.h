@@ -14,12 +14,19 @@
 //
 // Last resort, when a contact keeps closing although its zone was solved for it again and again
 // (more than kMaxZoneProjections times in a step: Gauss-Seidel stalls on a pile jammed against a
-// wall): if the zone touches an obstacle (a fixed particle, a half-plane), the particles of that
-// contact stop for the rest of the step and become obstacles themselves, while the rest of the
-// zone goes on; a zone touching nothing moves rigidly instead, with its centre-of-mass velocity
-// and the angular velocity of its momentum (the M-orthogonal projection onto rigid motions, so no
-// energy is gained and momentum is kept). failsafe="rigid" makes every zone rigid at once, and a
-// rigid zone touching an obstacle stops. Contacts inside a rigid zone are exempt.
+// wall, or creeps on a raft of disks): if the zone touches an obstacle (a fixed or sleeping
+// particle, a half-plane), the particles of that contact stop for the rest of the step and become
+// obstacles themselves, while the rest of the zone goes on; a zone touching nothing moves rigidly
+// instead, with its centre-of-mass velocity and the angular velocity of its momentum (the
+// M-orthogonal projection onto rigid motions, so no energy is gained and momentum is kept). A
+// rigid zone that meets an obstacle later in the step (a contact with a half-plane or an immobile
+// particle, or a merge with a zone touching one) goes back to the projection with the velocities
+// it has, and its count of contacts met again starts over (a merged zone keeps the other side's):
+// no zone stops whole. Stopping it whole, as the reference does, threw away motion no obstacle
+// takes (a raft sliding along a frictionless floor), and froze the fed rain pile for the rest of
+// the step whenever a raft landed on it. failsafe="rigid" makes every zone rigid at once, and a
+// rigid zone touching an obstacle stops (the reference's rule). Contacts inside a rigid zone are
+// exempt.
 //
 // Before that, particles held at rest: when the solve of a zone against an obstacle ends on its
 // budget, the members that started the step at rest and that the solve has already brought back
@@ -203,6 +210,9 @@ class ContactZones {
     unsolved_.resize(kept);
   }
   void moveRigidly(const Scene& scene, const StepMotion& motion, int zone, double T);
+  /// Zone `zone` (a root) moved rigidly and has met an obstacle: its members go back to the
+  /// projection with their rigid velocities.
+  void resumeProjection(const Scene& scene, int zone, int metAgain);
   /// Stops the members of zone `zone` (a root) held at rest (see the top of this file).
   void holdResting(const Scene& scene, int zone);
 

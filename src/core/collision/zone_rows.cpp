@@ -65,6 +65,7 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
   immovable_[z] = immovable_[z] || keyKind(key) == PairKind::ParticleHalfPlane;
   for (int k = 0; k < pair.count; ++k)
     immovable_[z] = immovable_[z] || (isImmobile(scene, pair.p[k]) && zoneOf(pair.p[k]) != z);
+  if (rigid_[z] && immovable_[z] && !rigidOnly_) resumeProjection(scene, z, 0);  // never stopped whole
   Vec2 n = Vec2::Zero();
   math::ConstraintRow row = contactRow(scene, key, [&](int p) { return motion.at(p, T); }, n);
   // A contact that does not close at T but deepens later in the step (an edge rotating under a
