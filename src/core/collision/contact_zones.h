@@ -223,6 +223,9 @@ class ContactZones {
   const Sleepers* sleepers_ = nullptr;
   std::vector<int> parent_;                ///< N: union-find parent, -1 when in no zone
   std::vector<std::vector<int>> members_;  ///< per root: its particles
+  /// Per root: its members that may still be held (started the step slower than
+  /// kHeldStartFraction kicks and not stopped yet), in the order of members_.
+  std::vector<std::vector<int>> holdable_;
   std::vector<int> metAgain_;              ///< per root: contacts back after a solve, failed solves (jam count)
   std::vector<int> solves_;                ///< per root: solves in this step
   std::vector<char> rigid_;                ///< per root: moving rigidly for the rest of the step
