@@ -291,6 +291,7 @@ void EventHandler::respond(const Scene& scene, const Event& e, State& state, Ste
   // deepest: the step fraction where a curving contact would overlap deepest (-1: not curving).
   const auto deepestTime = [&] {
     const auto position = [&](int p, double t) { return motion_.at(p, t); };
+    if (cannotDeepen(keyKind(e.key), closing, e.t, 1.0, pairLength(scene, e.key, position, e.t))) return -1.0;
     double length = 0, when = 1.0;
     return pairDeepening(scene, e.key, position, e.t, 1.0, length, &when) > kDepthTolerance * length ? when : -1.0;
   };

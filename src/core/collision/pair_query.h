@@ -111,6 +111,16 @@ double deepestTime(const Scene& scene, uint64_t key, Position&& position, double
   return best;
 }
 
+/// Pair `key`'s length scale at time t (its particles' coordinates and radii), which
+/// kDepthTolerance is a fraction of.
+template <class Position>
+double pairLength(const Scene& scene, uint64_t key, Position&& position, double t) {
+  const PairParticles pair = pairParticles(scene, key);
+  double length = 0;
+  for (int k = 0; k < pair.count; ++k) length += position(pair.p[k], t).norm() + scene.radius[pair.p[k]];
+  return length;
+}
+
 /// How much pair `key` deepens its overlap between t and tb beyond the overlap at t (or beyond
 /// touching); `length` receives the pair's length scale (coordinates and radii) at t, and `when`
 /// (optional) the time of the deepest overlap.
@@ -120,10 +130,20 @@ double pairDeepening(const Scene& scene, uint64_t key, Position&& position, doub
   double deepest = 0;
   const double td = deepestTime(scene, key, position, t, tb, deepest);
   if (when) *when = td;
-  const PairParticles pair = pairParticles(scene, key);
-  length = 0;
-  for (int k = 0; k < pair.count; ++k) length += position(pair.p[k], t).norm() + scene.radius[pair.p[k]];
+  length = pairLength(scene, key, position, t);
   return deepest - std::max(pairDepth(scene, key, [&](int p) { return position(p, t); }), 0.0);
+}
+
+/// Whether a particle-particle or particle-half-plane pair whose particles move in straight lines
+/// over [t, tb], and that closes at rate `closing` at t (closingSpeed's: displacement per unit of
+/// t), provably deepens its overlap there by at most kDepthTolerance of its `length`
+/// (pairLength): its distance is convex in time (linear against a half-plane), so its depth is
+/// concave and lies below its tangent at t, and it deepens by at most closing (tb - t). Then
+/// pairDeepening, whose samples cannot exceed the true deepening, would say the same: a resting
+/// pile's contacts skip its 80 samples (4% of rain's time at 10^4). A particle-edge pair (the
+/// edge may rotate) is never settled here.
+inline bool cannotDeepen(PairKind kind, double closing, double t, double tb, double length) {
+  return kind != PairKind::ParticleEdge && closing * (tb - t) <= kDepthTolerance * length;
 }
 
 }  // namespace fosssim
