@@ -3,9 +3,11 @@
 // column that a cold solve cannot settle within the jam limit jams in its first step only (these
 // two with holding off, which would settle the column before any jam). Holding: a budget-ended
 // solve stops the particles it has brought to rest, so the column rests without ever jamming,
-// while a disk that slides faster than a quarter of its kick keeps its speed. Expected values
-// come from the Gauss-Seidel rate of the column's system (computed with NumPy), from the column
-// being at rest (the same answer in every step) and from the hold's stated bounds.
+// while a disk that slides faster than a quarter of its kick keeps its speed. The last resort: a
+// zone that moved rigidly goes back to the projection when it meets an obstacle, never stopping
+// whole. Expected values come from the Gauss-Seidel rate of the column's system (computed with
+// NumPy), from the column being at rest (the same answer in every step), from the hold's stated
+// bounds and from rigid motion and momentum (a frictionless floor takes no momentum along it).
 #include "../../src/core/collision/contact_zones.h"
 #include "contact_physics.h"
 
