@@ -153,5 +153,31 @@ TEST(ContactPhysics, ARigidZoneThatMeetsTheFloorKeepsItsSlide) {
   }
 }
 
+// 8g. The same when the rigid zone merges with a zone that touches an obstacle. Under gravity, a
+// column of five disks rests on the floor under the row's right end; with no impulses at all
+// (maxiters 0) its contacts, closing by a kick at t = 0, make it a zone of its own, touching the
+// floor. The row starts 0.012 above it and goes rigid as in 8f; its right end then reaches the
+// column, and the two zones merge. Stopping the
+// merged zone whole (failsafe="rigid", the control) stops the row and the column; going back to
+// the projection keeps the momentum along the floor, 60, which only the frictionless floor and
+// vertical gravity act on from outside. Holding off: a held column disk would be an obstacle,
+// and the row would meet it as it meets the floor in 8f.
+TEST(ContactPhysics, ARigidZoneThatLandsOnARestingZoneKeepsItsSlide) {
+  for (const Failsafe failsafe : {Failsafe::Projection, Failsafe::Rigid}) {
+    SCOPED_TRACE(failsafe == Failsafe::Rigid ? "rigid" : "projection");
+    TestScene s = contactScene("hybrid", 0.0, 0.01, failsafe, /*maxIterations=*/0);
+    for (int k = 0; k < 5; ++k) addBody(s, 1.0, Vec2(2.9, 0.05 + 0.1 * k), Vec2::Zero(), 0.05);
+    for (int k = 0; k < 30; ++k)
+      addBody(s, 1.0, Vec2(0.1 * k, 0.562), Vec2(2.0 + 0.05 * (14.5 - k), k < 15 ? 1.0 : -1.0), 0.05);
+    s.scene.halfplanes.push_back(HalfPlane{Vec2::Zero(), Vec2(0, 1)});
+    s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, -9.81)));
+    auto sim = defaultModeSimulator(s, /*sleep=*/false, 0, /*hold=*/false);
+    ASSERT_TRUE(stepClean(*sim, s));
+    double slide = 0;
+    for (int k = 0; k < 35; ++k) slide += at(s.state.v, k).x();
+    EXPECT_NEAR(slide, failsafe == Failsafe::Rigid ? 0.0 : 60.0, 1e-12);
+  }
+}
+
 }  // namespace
 }  // namespace fosssim::testing
