@@ -188,7 +188,7 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
       // chains 2,500, --verify). A root merged into another since keeps the smaller scale it had
       // (scales only grow within a step), so its rows are held, if anything, tighter.
       if (!projector_.solve(rateScale_.data(), 1.0 / h, kZoneProjectionTolerance, budget)) {
-        if (hold_ && sleepers_ && immovable_[zone]) holdResting(scene, zone);  // the kicks are the sleepers'
+        if (immovable_[zone]) holdResting(scene, zone);
         ++metAgain_[zone];
         // A failure is its zone's alone. This zone's rows still queued are dropped; those of
         // other zones waiting for their solves at this instant are set aside for those solves
@@ -246,10 +246,11 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
 }
 
 // The members of a zone against an obstacle that its budget-ended solve has brought to rest stop
-// for the rest of the step (kHeldKickFraction, kHeldStartFraction).
-// Only the members that started the step slow enough are looked at (holdable_, in the order of
-// members_), and those that stop leave the list for good: a fed pile's zone fails its solve a
-// hundred times a step, and scanning all its members each time took 5% of rain's time at 10^4.
+// for the rest of the step (kHeldKickFraction, kHeldStartFraction). Only the members that started
+// the step slow enough are looked at (holdable_, in the order of members_; empty with holding off
+// or without sleepers), and those that stop leave the list for good: a fed pile's zone ends a
+// hundred solves a step on its budget, and scanning all its members each time took 5% of rain's
+// time at 10^4.
 void ContactZones::holdResting(const Scene& scene, int zone) {
   std::vector<int>& candidates = holdable_[zone];
   size_t kept = 0;

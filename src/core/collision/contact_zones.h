@@ -100,9 +100,10 @@ constexpr long kJammedBudgetDivisor = 10;
 /// With holding on, a zone's first solve in a step solves with this fraction of the budget per
 /// row. On a resting pile that solve rarely converges whatever its budget (its contacts change a
 /// little every step); what a short one leaves is settled by holding the particles it has brought
-/// to rest and by the solves of the contacts that come back. With 1/10, random zones gained kinetic energy
-/// (ContactPhysicsRandom.KineticEnergyNeverGrows: a warm start the shorter solve had not taken
-/// back); 1/5 keeps every test. Measured with the hold: README, Performance > Dense piles.
+/// to rest and by the solves of the contacts that come back. With 1/10, random zones gained
+/// kinetic energy (ContactPhysicsRandom.KineticEnergyNeverGrows: a warm start the shorter solve
+/// had not taken back); 1/5 keeps every test. Measured with the hold: README, Performance > Dense
+/// piles.
 constexpr long kFirstSolveBudgetDivisor = 5;
 
 /// A held particle (see the top of this file) has a speed of at most this fraction of its kick
