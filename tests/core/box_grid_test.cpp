@@ -3,6 +3,7 @@
 // limit, some far-away outliers that make the grid trim its range), for every thread count (the
 // threaded build files the boxes band by band and must give the same answers as the sequential
 // one), and after boxes are re-filed (insert) any number of times: only each box's latest counts.
+// Queries restricted to ids from a given one on (forEachOverlapFrom) give brute force's ids from there.
 #include "core/collision/box_grid.h"
 
 #include <gtest/gtest.h>
@@ -51,6 +52,21 @@ std::vector<int> visited(const BoxGrid& grid, const Box& q) {
   return out;
 }
 
+/// The ids >= first visited by forEachOverlapFrom for query q, sorted.
+std::vector<int> visitedFrom(const BoxGrid& grid, const Box& q, int first) {
+  std::vector<int> out;
+  grid.forEachOverlapFrom(q, first, [&](int id) { out.push_back(id); });
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+/// bruteForce's ids >= first.
+std::vector<int> bruteForceFrom(const std::vector<Box>& boxes, const Box& q, int first) {
+  std::vector<int> out = bruteForce(boxes, q);
+  out.erase(out.begin(), std::lower_bound(out.begin(), out.end(), first));
+  return out;
+}
+
 TEST(BoxGrid, QueriesEqualBruteForceForAnyThreadCount) {
   std::mt19937 rng(7);
   const int n = 20000;  // several thousand boxes per thread: the threaded filing really runs
@@ -89,6 +105,9 @@ TEST(BoxGrid, ReFiledBoxesReplaceTheirEarlierOnes) {
     for (int q = 0; q < 200; ++q) {
       const Box query = randomQuery(rng, q);
       ASSERT_EQ(visited(grid, query), bruteForce(boxes, query)) << "round " << round;
+      // Only the ids from `first` on (a row's query): sorted, large and re-filed entries alike.
+      const int first = static_cast<int>(unit(rng) * n);
+      ASSERT_EQ(visitedFrom(grid, query, first), bruteForceFrom(boxes, query, first)) << "round " << round;
     }
     if (round == 3) grid.build(boxes.data(), n);  // a rebuild forgets the insertions
   }

@@ -140,20 +140,23 @@ int ContactZones::grow(const Scene& scene, const StepMotion& motion, const PairC
   while (!queue_.empty()) {
     const int q = queue_.back();
     queue_.pop_back();
-    keys_.clear();
-    candidates.pairsOf(q, keys_);
-    // In pair order (the broad phase lists them in grid order): the rows' order decides the
-    // solve's rounding, which must not depend on how candidates were found.
-    if (!candidates.sortedPairs()) {
-      std::sort(keys_.begin(), keys_.end());
-      keys_.erase(std::unique(keys_.begin(), keys_.end()), keys_.end());
-    }
-    for (uint64_t k : keys_) {
-      if (rowOf_.contains(k) || !near(scene, motion, k, T)) continue;
+    auto consider = [&](uint64_t k) {
+      if (rowOf_.contains(k) || !near(scene, motion, k, T)) return;
       const PairParticles other = pairParticles(scene, k);
       for (int m = 0; m < other.count; ++m) zone = take(scene, motion, other.p[m], zone, h);
       added += setRow(scene, motion, zone, k, T);
+    };
+    // In pair order (the broad phase lists them in grid order): the rows' order decides the
+    // solve's rounding, which must not depend on how candidates were found.
+    if (candidates.sortedPairs()) {
+      candidates.forEachPairOf(q, keys_, consider);
+      continue;
     }
+    keys_.clear();
+    candidates.pairsOf(q, keys_);
+    std::sort(keys_.begin(), keys_.end());
+    keys_.erase(std::unique(keys_.begin(), keys_.end()), keys_.end());
+    for (uint64_t k : keys_) consider(k);
   }
   return root(zone);
 }

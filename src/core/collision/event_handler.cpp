@@ -147,11 +147,9 @@ Status EventHandler::detectChanged(const Scene& scene, double T, StepContext& ct
     for (int p : changed_) {
       if (inChanged_[p] != 1) continue;  // listed already
       inChanged_[p] = 2;
-      const size_t from = keys_.size();
-      candidates_.pairsOf(p, keys_);
-      keys_.erase(std::remove_if(keys_.begin() + static_cast<long>(from), keys_.end(),
-                                 [&](uint64_t key) { return !listsFrom(scene, key, p); }),
-                  keys_.end());
+      candidates_.forEachPairOf(p, scratch_, [&](uint64_t key) {
+        if (listsFrom(scene, key, p)) keys_.push_back(key);
+      });
     }
     for (int p : changed_) inChanged_[p] = 0;
   }
@@ -249,9 +247,8 @@ void EventHandler::wakeNearMoving(const Scene& scene, StepStats& stats) {
   for (int p = 0; p < n; ++p)
     if (fromSleepers ? sleepers_.asleep(p) : moving(p)) wakeFrom_.push_back(p);
   for (int p : wakeFrom_) {
-    keys_.clear();
-    candidates_.pairsOf(p, keys_);  // candidates, not neighbours: small scenes list every pair
-    for (uint64_t key : keys_) {
+    // Candidates, not neighbours: small scenes list every pair.
+    candidates_.forEachPairOf(p, keys_, [&](uint64_t key) {
       const PairParticles pair = pairParticles(scene, key);
       // The largest reach of the pair's movers (-1: none) and whether it holds a sleeper.
       double reach = -1;
@@ -262,13 +259,13 @@ void EventHandler::wakeNearMoving(const Scene& scene, StepStats& stats) {
         if (!moving(q)) continue;
         reach = std::max(reach, motion_.rate(q).norm() + kTouchingSlack * scene.radius[q]);
       }
-      if (!sleeper || reach < 0) continue;
+      if (!sleeper || reach < 0) return;
       // A neighbour: touching now, or within what a mover moves in this step.
       const double depth = pairDepth(scene, key, [&](int q) { return motion_.at(q, 0.0); });
-      if (depth < -reach) continue;
+      if (depth < -reach) return;
       for (int k = 0; k < pair.count; ++k)
         stats.woken += sleepers_.wake(pair.p[k]);  // 0 when awake
-    }
+    });
   }
 }
 

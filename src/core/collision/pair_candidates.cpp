@@ -102,7 +102,12 @@ void PairCandidates::build(const Scene& scene, const VecX& qs, const VecX& qe, d
 }
 
 void PairCandidates::index() {
-  ++generation_;
+  // Every list made before is stale now. Generation 0 means "none": at the wrap (after 2^32
+  // indexings) the lists are forgotten outright, so no old list can pass for a new one.
+  if (++generation_ == 0) {
+    for (KeptList& list : kept_) list.generation = 0;
+    generation_ = 1;
+  }
   particleGrid_.build(particleBoxes_.data(), scene_->numParticles(), threads_);
   if (!scene_->edges.empty())
     edgeGrid_.build(edgeBoxes_.data(), static_cast<int>(scene_->edges.size()), threads_);
@@ -163,9 +168,7 @@ void PairCandidates::particlesOf(int i, int after, std::vector<int>& out) const 
     return;
   }
   const size_t begin = out.size();
-  forEachParticleNear(particleBoxes_[i], [&](int j) {
-    if (j >= first) out.push_back(j);
-  });
+  particleGrid_.forEachOverlapFrom(particleBoxes_[i], first, [&](int j) { out.push_back(j); });
   std::sort(out.begin() + static_cast<long>(begin), out.end());
 }
 
@@ -177,9 +180,10 @@ void PairCandidates::edgesOf(int i, int after, std::vector<int>& out) const {
       if (edges[e].i != i && edges[e].j != i) out.push_back(e);
     return;
   }
+  if (edges.empty()) return;  // no edge grid
   const size_t begin = out.size();
-  forEachEdgeNear(particleBoxes_[i], [&](int e) {
-    if (e > after && edges[e].i != i && edges[e].j != i) out.push_back(e);
+  edgeGrid_.forEachOverlapFrom(particleBoxes_[i], after + 1, [&](int e) {
+    if (edges[e].i != i && edges[e].j != i) out.push_back(e);
   });
   std::sort(out.begin() + static_cast<long>(begin), out.end());
 }
@@ -187,10 +191,9 @@ void PairCandidates::edgesOf(int i, int after, std::vector<int>& out) const {
 void PairCandidates::pairsOf(int p, std::vector<uint64_t>& keys) const {
   const std::vector<Edge>& edges = scene_->edges;
   const int n = scene_->numParticles(), planes = static_cast<int>(scene_->halfplanes.size());
-  auto particlePairInto = [&](std::vector<uint64_t>& into, int q) {
-    if (q != p) into.push_back(q < p ? pairKey(q, PairKind::ParticleParticle, p) : pairKey(p, PairKind::ParticleParticle, q));
+  auto particlePair = [&](int q) {
+    if (q != p) keys.push_back(particlePairKey(p, q));
   };
-  auto particlePair = [&](int q) { particlePairInto(keys, q); };
   auto edgePair = [&](int q, int e) {
     if (edges[e].i != q && edges[e].j != q) keys.push_back(pairKey(q, PairKind::ParticleEdge, e));
   };
@@ -202,18 +205,7 @@ void PairCandidates::pairsOf(int p, std::vector<uint64_t>& keys) const {
         for (int q = 0; q < n; ++q) edgePair(q, e);
     }
   } else if (sortedPairs()) {
-    if (keptIn_.size() != static_cast<size_t>(n)) {  // the first call: only users of pairsOf pay for the lists
-      keptIn_.assign(n, 0);
-      keptPairs_.assign(n, {});
-    }
-    std::vector<uint64_t>& kept = keptPairs_[p];
-    if (keptIn_[p] != generation_) {
-      kept.clear();
-      forEachParticleNear(particleBoxes_[p], [&](int q) { particlePairInto(kept, q); });
-      std::sort(kept.begin(), kept.end());  // once here, instead of by every caller that needs pair order
-      keptIn_[p] = generation_;
-    }
-    keys.insert(keys.end(), kept.begin(), kept.end());
+    forEachKept(p, particlePair);
   } else {
     forEachParticleNear(particleBoxes_[p], particlePair);
     forEachEdgeNear(particleBoxes_[p], [&](int e) { edgePair(p, e); });
@@ -228,14 +220,36 @@ void PairCandidates::pairsOf(int p, std::vector<uint64_t>& keys) const {
     if (nearPlane(p, h)) keys.push_back(pairKey(p, PairKind::ParticleHalfPlane, h));
 }
 
+const PairCandidates::KeptList& PairCandidates::keptListOf(int p) const {
+  const int n = scene_->numParticles();
+  if (kept_.size() != static_cast<size_t>(n)) {  // the first call: only users of pairsOf pay for the lists
+    kept_.assign(n, KeptList{});
+    keptMore_.assign(n, {});
+  }
+  KeptList& list = kept_[p];
+  if (list.generation == generation_) return list;
+  keptScratch_.clear();
+  forEachParticleNear(particleBoxes_[p], [&](int q) {
+    if (q != p) keptScratch_.push_back(q);
+  });
+  std::sort(keptScratch_.begin(), keptScratch_.end());  // once here, instead of by every caller that needs pair order
+  list.count = static_cast<int>(keptScratch_.size());
+  const int stored = std::min(list.count, kKeptInline);
+  std::copy(keptScratch_.begin(), keptScratch_.begin() + stored, list.other);
+  if (list.count > kKeptInline) keptMore_[p].assign(keptScratch_.begin() + stored, keptScratch_.end());
+  list.generation = generation_;
+  return list;
+}
+
 void PairCandidates::forgetPairsNear(const Box& b) {
-  if (keptIn_.size() != static_cast<size_t>(scene_->numParticles())) return;  // none kept
-  particleGrid_.forEachOverlap(b, [&](int q) { keptIn_[q] = 0; });
+  if (kept_.size() != static_cast<size_t>(scene_->numParticles())) return;  // none kept
+  particleGrid_.forEachOverlap(b, [&](int q) { kept_[q].generation = 0; });
 }
 
 size_t PairCandidates::memoryBytes() const {
-  size_t kept = keptIn_.capacity() * sizeof(uint64_t) + keptPairs_.capacity() * sizeof(std::vector<uint64_t>);
-  for (const std::vector<uint64_t>& list : keptPairs_) kept += list.capacity() * sizeof(uint64_t);
+  size_t kept = kept_.capacity() * sizeof(KeptList) + keptMore_.capacity() * sizeof(std::vector<int>) +
+                keptScratch_.capacity() * sizeof(int);
+  for (const std::vector<int>& more : keptMore_) kept += more.capacity() * sizeof(int);
   return kept + particleBoxes_.capacity() * sizeof(Box) + edgeBoxes_.capacity() * sizeof(Box) +
          particleGrid_.memoryBytes() + edgeGrid_.memoryBytes() + (incidentStart_.capacity() + incident_.capacity()) * sizeof(int);
 }

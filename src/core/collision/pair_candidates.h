@@ -33,6 +33,10 @@ namespace fosssim {
 inline uint64_t pairKey(int i, PairKind kind, int other) {
   return (static_cast<uint64_t>(i) << 33) | (static_cast<uint64_t>(kind) << 31) | static_cast<uint64_t>(other);
 }
+/// The key of the particle pair {p, q} (p != q), named from the lower index.
+inline uint64_t particlePairKey(int p, int q) {
+  return p < q ? pairKey(p, PairKind::ParticleParticle, q) : pairKey(q, PairKind::ParticleParticle, p);
+}
 inline int keyParticle(uint64_t key) { return static_cast<int>(key >> 33); }
 inline PairKind keyKind(uint64_t key) { return static_cast<PairKind>((key >> 31) & 3u); }
 inline int keyOther(uint64_t key) { return static_cast<int>(key & 0x7FFFFFFFu); }
@@ -113,6 +117,23 @@ class PairCandidates {
   /// solve that moves them: on rain at N = 10^5, 90,000 calls a step against 550 re-filed
   /// boxes); the keys then come ascending, each once (sortedPairs()). Not for concurrent use.
   void pairsOf(int p, std::vector<uint64_t>& keys) const;
+  /// Calls visit(key) for each of pairsOf(p)'s keys, in its order. With sortedPairs() the kept
+  /// list is read where it lies: grow and detectChanged ask for thousands of lists a step, and
+  /// copying each out took 4% of rain's time at N = 10^4. Otherwise the keys go through `scratch`.
+  /// visit must not call pairsOf, update or settle (they may rebuild the list being read).
+  template <class Visit>
+  void forEachPairOf(int p, std::vector<uint64_t>& scratch, Visit&& visit) const {
+    if (!sortedPairs()) {
+      scratch.clear();
+      pairsOf(p, scratch);
+      for (uint64_t key : scratch) visit(key);
+      return;
+    }
+    forEachKept(p, [&](int q) { visit(particlePairKey(p, q)); });
+    const int planes = static_cast<int>(scene_->halfplanes.size());
+    for (int h = 0; h < planes; ++h)
+      if (nearPlane(p, h)) visit(pairKey(p, PairKind::ParticleHalfPlane, h));
+  }
   /// Whether pairsOf keeps its lists and so appends its keys ascending and each once: scenes
   /// without edges. (The kept particle pairs are sorted; pairs (q, p) with q < p sort before
   /// (p, q) with q > p, and those before p's half-plane pairs, which follow ascending.)
@@ -122,10 +143,27 @@ class PairCandidates {
   size_t memoryBytes() const;
 
  private:
+  static constexpr int kKeptInline = 14;  ///< neighbours stored in the line; a disk in a pile has about 6-10
+  struct alignas(64) KeptList {
+    uint32_t generation = 0;  ///< 0: none
+    int32_t count = 0;        ///< all of p's: the first kKeptInline in `other`, the rest in keptMore_[p]
+    int32_t other[kKeptInline] = {};
+  };
   void index();  ///< (re)builds the main grids from the current boxes (and forgets pairsOf's lists)
   /// Forgets pairsOf's lists of the particles whose boxes meet b (sortedPairs(); the lists are
   /// made at pairsOf's first call).
   void forgetPairsNear(const Box& b);
+  /// Calls f(q) for the particles q of p's kept list (sortedPairs()), ascending (so in the order
+  /// of their pairs' keys), after making the list afresh if a re-filed box has made it stale.
+  template <class F>
+  void forEachKept(int p, F&& f) const {
+    const KeptList& list = keptListOf(p);
+    const int stored = list.count < kKeptInline ? list.count : kKeptInline;
+    for (int k = 0; k < stored; ++k) f(list.other[k]);
+    if (list.count > kKeptInline)
+      for (int q : keptMore_[p]) f(q);
+  }
+  const KeptList& keptListOf(int p) const;
   bool withinScale(int p) const;
   Box filed(const Box& b) const;  ///< b grown by the slack
   template <class Visit>
@@ -142,12 +180,16 @@ class PairCandidates {
   std::vector<Box> particleBoxes_, edgeBoxes_;
   BoxGrid particleGrid_, edgeGrid_;
   std::vector<int> incidentStart_, incident_;  ///< edges of each particle (compressed rows)
-  // pairsOf's lists (sortedPairs()): a list is good while its particle's entry of keptIn_ equals
-  // generation_, which every index() advances; a re-filed box clears the entries of the
-  // particles it met before and meets now (their lists may have lost or gained it).
-  mutable std::vector<std::vector<uint64_t>> keptPairs_;  ///< N: p's particle-particle candidate keys
-  mutable std::vector<uint64_t> keptIn_;                  ///< N: the generation p's list was made in, 0: none
-  uint64_t generation_ = 0;
+  // pairsOf's lists (sortedPairs()): the particles q != p whose boxes meet p's, ascending. A list
+  // is good while its generation equals generation_, which every index() advances; a re-filed box
+  // clears the generations of the particles it met before and meets now (their lists may have
+  // lost or gained it). A list fills one cache line, its generation included: the event loop
+  // reads thousands a step in no particular order, and with a heap vector per particle (and the
+  // generations apart) each read cost three cache misses.
+  mutable std::vector<KeptList> kept_;               ///< N, made at pairsOf's first call
+  mutable std::vector<std::vector<int>> keptMore_;   ///< N: a list's particles past kKeptInline (rare)
+  mutable std::vector<int> keptScratch_;             ///< scratch: a list being made
+  uint32_t generation_ = 0;
 };
 
 }  // namespace fosssim
