@@ -178,19 +178,21 @@ TEST(BroadPhase, IncrementalDetectionEqualsFullDetection) {
   }
 }
 
-// pairsOf keeps each particle's particle pairs between calls (scenes without edges) until a box
-// that meets the particle's is re-filed, and lists its keys in pair order (a short list in one
-// cache line, a long one spilling over). After every round of moves (back to the start, nudges
-// within the filed slack, long throws that re-file), every particle's kept list must equal what
-// the grid gives now (particlesOf, which keeps nothing). Lists are asked for before the moves
-// too, so stale ones would be returned if a re-filed box did not forget them.
-TEST(BroadPhase, KeptPairListsFollowEveryRefiledBox) {
-  std::mt19937 rng(17);
+// pairsOf keeps each particle's pairs between calls until a box they depend on is re-filed: a
+// particle box that meets it, and with edges the boxes of the edges it meets or ends. Without
+// edges the list is a particle's neighbours in one cache line (a long one spilling over); with
+// edges, every particle and edge pair that involves it. After every round of moves (back to the
+// start, nudges within the filed slack, long throws that re-file), every particle's kept list
+// must equal what the grid gives now (particlesOf and edgesOf, which keep nothing), each pair
+// once and in pair order. Lists are asked for before the moves too, so stale ones would be
+// returned if a re-filed box did not forget them.
+void checkKeptPairLists(bool withEdges, uint32_t seed) {
+  std::mt19937 rng(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  long refiledPairsSeen = 0, longListsSeen = 0;
+  long refiledPairsSeen = 0, longListsSeen = 0, edgePairsSeen = 0;
   for (int s = 0; s < 40; ++s) {
     Motion m = randomMotion(rng, 60 + 5 * s, s % 2 ? 0.0 : 1e3);
-    m.scene.edges.clear();
+    if (!withEdges) m.scene.edges.clear();
     const int n = m.scene.numParticles();
     PairCandidates c;
     c.build(m.scene, m.qs, m.qe, 0.0, /*updates=*/true);
@@ -198,14 +200,21 @@ TEST(BroadPhase, KeptPairListsFollowEveryRefiledBox) {
     std::vector<uint64_t> keys;
     std::vector<int> row;
     std::vector<std::set<uint64_t>> before(n);
+    auto listed = [&](int p) {  // pairsOf's particle and edge pairs, checked for order and repeats
+      keys.clear();
+      c.pairsOf(p, keys);
+      std::vector<uint64_t> visitedKeys, scratch;  // forEachPairOf reads the same list in place
+      c.forEachPairOf(p, scratch, [&](uint64_t key) { visitedKeys.push_back(key); });
+      EXPECT_EQ(visitedKeys, keys) << "particle " << p;
+      std::vector<uint64_t> pairs;
+      for (uint64_t k : keys)
+        if (keyKind(k) != PairKind::ParticleHalfPlane) pairs.push_back(k);
+      EXPECT_TRUE(std::is_sorted(pairs.begin(), pairs.end())) << "particle " << p;
+      EXPECT_EQ(std::adjacent_find(pairs.begin(), pairs.end()), pairs.end()) << "particle " << p << ": listed twice";
+      return std::set<uint64_t>(pairs.begin(), pairs.end());
+    };
     for (int round = 0; round < 8; ++round) {
-      for (int p = 0; p < n; ++p) {
-        keys.clear();
-        c.pairsOf(p, keys);
-        before[p].clear();
-        for (uint64_t k : keys)
-          if (keyKind(k) == PairKind::ParticleParticle) before[p].insert(k);
-      }
+      for (int p = 0; p < n; ++p) before[p] = listed(p);
       const int moves = 1 + (round + s) % 7 * n / 20;
       for (int k = 0; k < moves; ++k) {
         const int p = static_cast<int>(unit(rng) * n);
@@ -216,45 +225,37 @@ TEST(BroadPhase, KeptPairListsFollowEveryRefiledBox) {
         c.update(p);
       }
       c.settle();
-      // What the grid holds now, every pair once.
+      // What the grid holds now, every pair once, under each particle it involves.
       std::vector<std::set<uint64_t>> truth(n);
       for (int i = 0; i < n; ++i) {
-        row.clear();
-        c.particlesOf(i, -1, row);
-        for (int j : row) {
-          truth[i].insert(pairKey(i, PairKind::ParticleParticle, j));
-          truth[j].insert(pairKey(i, PairKind::ParticleParticle, j));
-        }
+        c.forEachInRow(i, row, [&](PairKind kind, int other) {
+          if (kind == PairKind::ParticleHalfPlane) return;
+          const uint64_t key = pairKey(i, kind, other);
+          const PairParticles pair = pairParticles(m.scene, key);
+          for (int k = 0; k < pair.count; ++k) truth[pair.p[k]].insert(key);
+        });
       }
       SCOPED_TRACE("scene " + std::to_string(s) + " round " + std::to_string(round));
+      ASSERT_EQ(c.sortedPairs(), m.scene.edges.empty());
       for (int p = 0; p < n; ++p) {
-        keys.clear();
-        c.pairsOf(p, keys);
-        // forEachPairOf reads the same list in place.
-        std::vector<uint64_t> visitedKeys, scratch;
-        c.forEachPairOf(p, scratch, [&](uint64_t key) { visitedKeys.push_back(key); });
-        EXPECT_EQ(visitedKeys, keys) << "particle " << p;
-        // Without edges the keys come ascending and once each (zone growth relies on it).
-        ASSERT_TRUE(c.sortedPairs());
-        EXPECT_TRUE(std::is_sorted(keys.begin(), keys.end())) << "particle " << p;
-        EXPECT_EQ(std::adjacent_find(keys.begin(), keys.end()), keys.end()) << "particle " << p;
-        std::set<uint64_t> listed;
-        for (uint64_t k : keys) {
-          if (keyKind(k) == PairKind::ParticleParticle) {
-            EXPECT_TRUE(listed.insert(k).second) << "listed twice";
-          }
-        }
-        EXPECT_EQ(listed, truth[p]) << "particle " << p;
-        refiledPairsSeen += listed != before[p];
+        const std::set<uint64_t> now = listed(p);
+        EXPECT_EQ(now, truth[p]) << "particle " << p;
+        refiledPairsSeen += now != before[p];
         longListsSeen += truth[p].size() > 16;
+        for (uint64_t k : now) edgePairsSeen += keyKind(k) == PairKind::ParticleEdge;
       }
     }
   }
   EXPECT_GT(refiledPairsSeen, 100);  // the moves did change lists: a list kept blindly would fail
   // Huge disks and long throws: lists longer than a kept list's cache line holds (14) were checked.
   EXPECT_GT(longListsSeen, 100);
+  if (withEdges) {
+    EXPECT_GT(edgePairsSeen, 1000);
+  }
 }
 
+TEST(BroadPhase, KeptPairListsFollowEveryRefiledBox) { checkKeptPairLists(false, 17); }
+TEST(BroadPhase, KeptPairListsWithEdgesFollowEveryRefiledBox) { checkKeptPairLists(true, 19); }
 
 // The continuous-time handler's sequential sweep: each hit moves its pair's particles at once
 // (here: sends them back toward their start, or throws them far), and later pairs must see it.

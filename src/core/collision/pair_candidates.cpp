@@ -127,19 +127,22 @@ void PairCandidates::update(int p) {
   // A filed box that still holds the new one stays (a particle put back at its start, a rigid
   // refit's rounding, a small impulse); else the fresh box is re-filed in the grid.
   const Box fresh = particleBox(*scene_, *qs_, *qe_, p, scale_, extra_);
+  const bool keeping = keepsLists();
   if (!contains(particleBoxes_[p], fresh)) {
-    if (sortedPairs()) forgetPairsNear(particleBoxes_[p]);  // the lists that hold p
+    if (keeping) forgetPairsNear(particleBoxes_[p]);  // the lists that hold p
     particleBoxes_[p] = filed(fresh);
     particleGrid_.insert(p, particleBoxes_[p]);
-    if (sortedPairs()) forgetPairsNear(particleBoxes_[p]);  // the lists that must hold it now
+    if (keeping) forgetPairsNear(particleBoxes_[p]);  // the lists that must hold it now
   }
   if (!scene_->edges.empty()) {
     for (int k = incidentStart_[p]; k < incidentStart_[p + 1]; ++k) {
       const int e = incident_[k];
       const Box freshEdge = edgeBox(*scene_, *qs_, *qe_, e, scale_, extra_);
       if (contains(edgeBoxes_[e], freshEdge)) continue;
+      if (keeping) forgetEdgePairsNear(e, edgeBoxes_[e]);
       edgeBoxes_[e] = filed(freshEdge);
       edgeGrid_.insert(e, edgeBoxes_[e]);
+      if (keeping) forgetEdgePairsNear(e, edgeBoxes_[e]);
     }
   }
 }
@@ -204,28 +207,28 @@ void PairCandidates::pairsOf(int p, std::vector<uint64_t>& keys) const {
       if (edges[e].i == p || edges[e].j == p)
         for (int q = 0; q < n; ++q) edgePair(q, e);
     }
-  } else if (sortedPairs()) {
+  } else if (edges.empty()) {
     forEachKept(p, particlePair);
   } else {
-    forEachParticleNear(particleBoxes_[p], particlePair);
-    forEachEdgeNear(particleBoxes_[p], [&](int e) { edgePair(p, e); });
-    if (!edges.empty()) {
-      for (int k = incidentStart_[p]; k < incidentStart_[p + 1]; ++k) {
-        const int e = incident_[k];
-        forEachParticleNear(edgeBoxes_[e], [&](int q) { edgePair(q, e); });
-      }
-    }
+    const std::vector<uint64_t>& kept = keptKeysOf(p);
+    keys.insert(keys.end(), kept.begin(), kept.end());
   }
   for (int h = 0; h < planes; ++h)
     if (nearPlane(p, h)) keys.push_back(pairKey(p, PairKind::ParticleHalfPlane, h));
 }
 
-const PairCandidates::KeptList& PairCandidates::keptListOf(int p) const {
+bool PairCandidates::keepsLists() const { return kept_.size() == static_cast<size_t>(scene_->numParticles()); }
+
+// At pairsOf's first call: only users of pairsOf pay for the lists.
+void PairCandidates::makeKeptStorage() const {
   const int n = scene_->numParticles();
-  if (kept_.size() != static_cast<size_t>(n)) {  // the first call: only users of pairsOf pay for the lists
-    kept_.assign(n, KeptList{});
-    keptMore_.assign(n, {});
-  }
+  kept_.assign(n, KeptList{});
+  if (scene_->edges.empty()) keptMore_.assign(n, {}), keptKeys_.clear();
+  else keptKeys_.assign(n, {}), keptMore_.clear();
+}
+
+const PairCandidates::KeptList& PairCandidates::keptListOf(int p) const {
+  if (!keepsLists()) makeKeptStorage();
   KeptList& list = kept_[p];
   if (list.generation == generation_) return list;
   keptScratch_.clear();
@@ -241,15 +244,46 @@ const PairCandidates::KeptList& PairCandidates::keptListOf(int p) const {
   return list;
 }
 
+const std::vector<uint64_t>& PairCandidates::keptKeysOf(int p) const {
+  if (!keepsLists()) makeKeptStorage();
+  std::vector<uint64_t>& keys = keptKeys_[p];
+  if (kept_[p].generation == generation_) return keys;
+  const std::vector<Edge>& edges = scene_->edges;
+  keys.clear();
+  forEachParticleNear(particleBoxes_[p], [&](int q) {
+    if (q != p) keys.push_back(particlePairKey(p, q));
+  });
+  auto edgePair = [&](int q, int e) {
+    if (edges[e].i != q && edges[e].j != q) keys.push_back(pairKey(q, PairKind::ParticleEdge, e));
+  };
+  forEachEdgeNear(particleBoxes_[p], [&](int e) { edgePair(p, e); });
+  for (int k = incidentStart_[p]; k < incidentStart_[p + 1]; ++k) {
+    const int e = incident_[k];
+    forEachParticleNear(edgeBoxes_[e], [&](int q) { edgePair(q, e); });
+  }
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  kept_[p].generation = generation_;
+  return keys;
+}
+
 void PairCandidates::forgetPairsNear(const Box& b) {
-  if (kept_.size() != static_cast<size_t>(scene_->numParticles())) return;  // none kept
   particleGrid_.forEachOverlap(b, [&](int q) { kept_[q].generation = 0; });
+  if (!scene_->edges.empty())
+    edgeGrid_.forEachOverlap(b, [&](int e) { kept_[scene_->edges[e].i].generation = kept_[scene_->edges[e].j].generation = 0; });
+}
+
+void PairCandidates::forgetEdgePairsNear(int e, const Box& b) {
+  particleGrid_.forEachOverlap(b, [&](int q) { kept_[q].generation = 0; });
+  kept_[scene_->edges[e].i].generation = kept_[scene_->edges[e].j].generation = 0;
 }
 
 size_t PairCandidates::memoryBytes() const {
   size_t kept = kept_.capacity() * sizeof(KeptList) + keptMore_.capacity() * sizeof(std::vector<int>) +
                 keptScratch_.capacity() * sizeof(int);
   for (const std::vector<int>& more : keptMore_) kept += more.capacity() * sizeof(int);
+  kept += keptKeys_.capacity() * sizeof(std::vector<uint64_t>);
+  for (const std::vector<uint64_t>& keys : keptKeys_) kept += keys.capacity() * sizeof(uint64_t);
   return kept + particleBoxes_.capacity() * sizeof(Box) + edgeBoxes_.capacity() * sizeof(Box) +
          particleGrid_.memoryBytes() + edgeGrid_.memoryBytes() + (incidentStart_.capacity() + incident_.capacity()) * sizeof(int);
 }

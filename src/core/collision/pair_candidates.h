@@ -111,25 +111,31 @@ class PairCandidates {
   /// good share of all (queries are right either way; this only keeps them fast).
   void settle();
   /// Appends the keys of every candidate pair that involves particle p (as the particle, the
-  /// other particle or an edge endpoint), unsorted; a pair may appear more than once.
-  /// In scenes without edges, p's particle pairs are kept from one call to the next until a box
-  /// that meets p's is re-filed (the event loop asks for the same particles' pairs after every
-  /// solve that moves them: on rain at N = 10^5, 90,000 calls a step against 550 re-filed
-  /// boxes); the keys then come ascending, each once (sortedPairs()). Not for concurrent use.
+  /// other particle or an edge endpoint), each once, then its half-plane pairs ascending.
+  /// p's particle and edge pairs are kept from one call to the next until a box they depend on
+  /// is re-filed (the event loop asks for the same particles' pairs after every solve that moves
+  /// them: on rain at N = 10^5, 90,000 calls a step against 550 re-filed boxes). They come
+  /// ascending: in scenes without edges the whole list is then ascending (sortedPairs()); with
+  /// edges a half-plane key may sort before an earlier particle-edge key of a higher particle.
+  /// With every pair a candidate (allPairs()) nothing is kept. Not for concurrent use.
   void pairsOf(int p, std::vector<uint64_t>& keys) const;
-  /// Calls visit(key) for each of pairsOf(p)'s keys, in its order. With sortedPairs() the kept
-  /// list is read where it lies: grow and detectChanged ask for thousands of lists a step, and
-  /// copying each out took 4% of rain's time at N = 10^4. Otherwise the keys go through `scratch`.
-  /// visit must not call pairsOf, update or settle (they may rebuild the list being read).
+  /// Calls visit(key) for each of pairsOf(p)'s keys, in its order, reading the kept list where
+  /// it lies: grow and detectChanged ask for thousands of lists a step, and copying each out took
+  /// 4% of rain's time at N = 10^4 (`scratch` serves the all-pairs case). visit must not call
+  /// pairsOf, update or settle (they may rebuild the list being read).
   template <class Visit>
   void forEachPairOf(int p, std::vector<uint64_t>& scratch, Visit&& visit) const {
-    if (!sortedPairs()) {
+    if (allPairs_) {
       scratch.clear();
       pairsOf(p, scratch);
       for (uint64_t key : scratch) visit(key);
       return;
     }
-    forEachKept(p, [&](int q) { visit(particlePairKey(p, q)); });
+    if (scene_->edges.empty()) {
+      forEachKept(p, [&](int q) { visit(particlePairKey(p, q)); });
+    } else {
+      for (uint64_t key : keptKeysOf(p)) visit(key);
+    }
     const int planes = static_cast<int>(scene_->halfplanes.size());
     for (int h = 0; h < planes; ++h)
       if (nearPlane(p, h)) visit(pairKey(p, PairKind::ParticleHalfPlane, h));
@@ -150,10 +156,16 @@ class PairCandidates {
     int32_t other[kKeptInline] = {};
   };
   void index();  ///< (re)builds the main grids from the current boxes (and forgets pairsOf's lists)
-  /// Forgets pairsOf's lists of the particles whose boxes meet b (sortedPairs(); the lists are
-  /// made at pairsOf's first call).
+  /// Forgets the kept lists that a particle box b (before or after a re-filing) may enter: those
+  /// of the particles whose boxes meet b, and with edges those of the endpoints of the edges
+  /// whose boxes meet b (they list b's particle against the edge).
   void forgetPairsNear(const Box& b);
-  /// Calls f(q) for the particles q of p's kept list (sortedPairs()), ascending (so in the order
+  /// The same for edge e's box b: the particles whose boxes meet b, and e's endpoints (whose
+  /// boxes meet b anyway, as b holds their paths; named so as not to rest on how boxes grow).
+  void forgetEdgePairsNear(int e, const Box& b);
+  bool keepsLists() const;  ///< whether kept lists exist yet (made at pairsOf's first call)
+  void makeKeptStorage() const;
+  /// Calls f(q) for the particles q of p's kept list (scenes without edges), ascending (so in the order
   /// of their pairs' keys), after making the list afresh if a re-filed box has made it stale.
   template <class F>
   void forEachKept(int p, F&& f) const {
@@ -164,6 +176,8 @@ class PairCandidates {
       for (int q : keptMore_[p]) f(q);
   }
   const KeptList& keptListOf(int p) const;
+  /// With edges: p's particle and edge pair keys, ascending, each once (made afresh if stale).
+  const std::vector<uint64_t>& keptKeysOf(int p) const;
   bool withinScale(int p) const;
   Box filed(const Box& b) const;  ///< b grown by the slack
   template <class Visit>
@@ -180,7 +194,7 @@ class PairCandidates {
   std::vector<Box> particleBoxes_, edgeBoxes_;
   BoxGrid particleGrid_, edgeGrid_;
   std::vector<int> incidentStart_, incident_;  ///< edges of each particle (compressed rows)
-  // pairsOf's lists (sortedPairs()): the particles q != p whose boxes meet p's, ascending. A list
+  // pairsOf's lists. Without edges: the particles q != p whose boxes meet p's, ascending. A list
   // is good while its generation equals generation_, which every index() advances; a re-filed box
   // clears the generations of the particles it met before and meets now (their lists may have
   // lost or gained it). A list fills one cache line, its generation included: the event loop
@@ -188,6 +202,10 @@ class PairCandidates {
   // generations apart) each read cost three cache misses.
   mutable std::vector<KeptList> kept_;               ///< N, made at pairsOf's first call
   mutable std::vector<std::vector<int>> keptMore_;   ///< N: a list's particles past kKeptInline (rare)
+  // With edges, each particle's whole list of keys (its generation in kept_): the pairs with
+  // its particle neighbours, with the edges its box meets, and those of the particles its edges'
+  // boxes meet against those edges.
+  mutable std::vector<std::vector<uint64_t>> keptKeys_;  ///< N, made at pairsOf's first call
   mutable std::vector<int> keptScratch_;             ///< scratch: a list being made
   uint32_t generation_ = 0;
 };
