@@ -257,6 +257,31 @@ void checkKeptPairLists(bool withEdges, uint32_t seed) {
 TEST(BroadPhase, KeptPairListsFollowEveryRefiledBox) { checkKeptPairLists(false, 17); }
 TEST(BroadPhase, KeptPairListsWithEdgesFollowEveryRefiledBox) { checkKeptPairLists(true, 19); }
 
+// One candidates object built again for another scene of as many particles, first without
+// edges, then with them, and back: its kept lists must be made for the new scene's kind (a list of
+// neighbours, or of particle and edge pairs), never read from the old one's storage.
+TEST(BroadPhase, ARebuildForAnotherSceneKeepsNoListOfTheOldOne) {
+  std::mt19937 rng(29);
+  Motion withEdges = randomMotion(rng, 80, 0.0);
+  while (withEdges.scene.edges.empty()) withEdges = randomMotion(rng, 80, 0.0);
+  Motion without = randomMotion(rng, 80, 0.0);
+  without.scene.edges.clear();
+  PairCandidates reused;
+  std::vector<uint64_t> keys, fresh;
+  for (const Motion* m : {&without, &withEdges, &without}) {
+    reused.build(m->scene, m->qs, m->qe, 0.0, /*updates=*/true);
+    PairCandidates once;
+    once.build(m->scene, m->qs, m->qe, 0.0, /*updates=*/true);
+    for (int p = 0; p < m->scene.numParticles(); ++p) {
+      keys.clear();
+      fresh.clear();
+      reused.pairsOf(p, keys);
+      once.pairsOf(p, fresh);
+      ASSERT_EQ(keys, fresh) << "particle " << p << (m == &withEdges ? " (with edges)" : "");
+    }
+  }
+}
+
 // The continuous-time handler's sequential sweep: each hit moves its pair's particles at once
 // (here: sends them back toward their start, or throws them far), and later pairs must see it.
 // With small candidate blocks, the walk crosses many block boundaries.

@@ -217,7 +217,11 @@ void PairCandidates::pairsOf(int p, std::vector<uint64_t>& keys) const {
     if (nearPlane(p, h)) keys.push_back(pairKey(p, PairKind::ParticleHalfPlane, h));
 }
 
-bool PairCandidates::keepsLists() const { return kept_.size() == static_cast<size_t>(scene_->numParticles()); }
+// Sized for this scene and of its kind (a candidates object may be built again for another scene).
+bool PairCandidates::keepsLists() const {
+  const size_t n = static_cast<size_t>(scene_->numParticles());
+  return kept_.size() == n && (scene_->edges.empty() ? keptMore_.size() : keptKeys_.size()) == n;
+}
 
 // At pairsOf's first call: only users of pairsOf pay for the lists.
 void PairCandidates::makeKeptStorage() const {
