@@ -287,10 +287,7 @@ void EventHandler::respond(const Scene& scene, const Event& e, State& state, Ste
   // deepen beyond rounding is resolved already.
   // deepest: the step fraction where a curving contact would overlap deepest (-1: not curving).
   const auto deepestTime = [&] {
-    const auto position = [&](int p, double t) { return motion_.at(p, t); };
-    if (cannotDeepen(keyKind(e.key), closing, e.t, 1.0, pairLength(scene, e.key, position, e.t))) return -1.0;
-    double length = 0, when = 1.0;
-    return pairDeepening(scene, e.key, position, e.t, 1.0, length, &when) > kDepthTolerance * length ? when : -1.0;
+    return deepeningTime(scene, e.key, [&](int p, double t) { return motion_.at(p, t); }, closing, e.t);
   };
   double deepest = -1.0;
   if (closing <= kRestingClosingFraction * scale && (deepest = deepestTime()) < 0.0) return;

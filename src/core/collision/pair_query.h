@@ -146,4 +146,15 @@ inline bool cannotDeepen(PairKind kind, double closing, double t, double tb, dou
   return kind != PairKind::ParticleEdge && closing * (tb - t) <= kDepthTolerance * length;
 }
 
+/// The step fraction in [t, 1] at which pair `key` overlaps deepest, if its overlap deepens there
+/// by more than kDepthTolerance of its length; -1 if it does not. `closing`: its closing rate at t
+/// (closingSpeed's), with which cannotDeepen settles a straight pair without pairDeepening's
+/// samples. (The event loop's and the zones' test of a contact that barely closes.)
+template <class Position>
+double deepeningTime(const Scene& scene, uint64_t key, Position&& position, double closing, double t) {
+  if (cannotDeepen(keyKind(key), closing, t, 1.0, pairLength(scene, key, position, t))) return -1.0;
+  double length = 0, when = 1.0;
+  return pairDeepening(scene, key, position, t, 1.0, length, &when) > kDepthTolerance * length ? when : -1.0;
+}
+
 }  // namespace fosssim

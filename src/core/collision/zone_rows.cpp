@@ -81,11 +81,8 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
     row = contactRow(scene, key, [&](int p) { return motion.at(p, deepest); }, n);
   } else if (const double closing = closingSpeed(scene, key, n, alpha, rate, scale);
              closing <= kRestingClosingFraction * scale) {
-    const auto position = [&](int p, double t) { return motion.at(p, t); };
-    double length = 0, td = 1.0;
-    if (!cannotDeepen(keyKind(key), closing, T, 1.0, pairLength(scene, key, position, T)) &&
-        pairDeepening(scene, key, position, T, 1.0, length, &td) > kDepthTolerance * length)
-      row = contactRow(scene, key, [&](int p) { return motion.at(p, td); }, n);
+    const double td = deepeningTime(scene, key, [&](int p, double t) { return motion.at(p, t); }, closing, T);
+    if (td >= 0.0) row = contactRow(scene, key, [&](int p) { return motion.at(p, td); }, n);
   }
   if (n == Vec2::Zero()) return false;  // coincident centres: no direction to keep apart along
   if (const int* known = rowOf_.find(key)) {
