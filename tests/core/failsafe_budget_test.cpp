@@ -179,5 +179,50 @@ TEST(ContactPhysics, ARigidZoneThatLandsOnARestingZoneKeepsItsSlide) {
   }
 }
 
+// 8h. The contacts a budget-ended solve leaves closing are solved at its instant, each once in a
+// step (ContactZones::solvesNow). Three unit disks (radius 0.05) on the x axis, gaps 1e-4 and
+// 3e-4, the left one moving right at 1 m/s and the right one left at 1 m/s, h = 0.01: the left
+// pair touches at t = 1e-4 / (1 m/s x 0.01 s) = 0.01 of the step, and its zone takes the right
+// pair too (near: it closes 0.0099 in the rest of the step). Gauss-Seidel on the two rows of equal
+// masses, v1 - v0 >= 0 and v2 - v1 >= 0, shrinks the error by 1/4 per sweep of two updates (the
+// first updates give v0 = v1 = 0.5, then v1 = v2 = -0.25, then v0 = v1 = 0.125): from speeds of 1
+// the relative tolerance 1e-10 needs some 17 sweeps, so with one update per row the solve's
+// budget, 1 x max(2, 8) = 8 updates, ends it. Both its contacts were queried again for that
+// failure: each is brought forward at most once, and no other pair is.
+TEST(ContactPhysics, ContactsABudgetEndedSolveLeavesAreSolvedAtItsInstantOnce) {
+  TestScene s = contactScene("hybrid", 0.0, 0.01, Failsafe::Projection, /*maxIterations=*/0);
+  addBody(s, 1.0, Vec2(0.0, 0.0), Vec2(1.0, 0.0), 0.05);
+  addBody(s, 1.0, Vec2(0.1001, 0.0), Vec2::Zero(), 0.05);
+  addBody(s, 1.0, Vec2(0.2004, 0.0), Vec2(-1.0, 0.0), 0.05);
+  const double h = s.scene.dt, T = 0.01;
+  const VecX end = s.state.x + h * s.state.v;
+  StepMotion motion;
+  motion.begin(s.state.x, end);
+  PairCandidates candidates;
+  candidates.build(s.scene, motion.from(), motion.end(), 0.0, /*updates=*/true);
+  ContactZones zones;
+  zones.reset(3);
+  zones.setUpdatesPerRow(1);
+  zones.setHold(false);
+  const uint64_t left = particlePairKey(0, 1), right = particlePairKey(1, 2), outer = particlePairKey(0, 2);
+
+  const int zone = zones.absorb(s.scene, motion, candidates, left, T, h);
+  ASSERT_GE(zone, 0);
+  EXPECT_EQ(zones.zoneOf(2), zones.zoneOf(0)) << "the right pair is near: its disk joins the zone";
+  EXPECT_FALSE(zones.solvesNow(left)) << "no solve has failed yet";
+  VecX v = s.state.v;
+  std::vector<int> changed;
+  StepStats stats;
+  zones.resolve(s.scene, motion, candidates, zone, T, h, v, changed, stats);
+  EXPECT_EQ(stats.failsafeRounds, 1);
+  EXPECT_GT(motion.rate(0).x(), motion.rate(1).x()) << "the solve should have ended on its budget, the left pair still closing";
+
+  EXPECT_TRUE(zones.solvesNow(left));
+  EXPECT_TRUE(zones.solvesNow(right));
+  EXPECT_FALSE(zones.solvesNow(left)) << "once in a step";
+  EXPECT_FALSE(zones.solvesNow(right)) << "once in a step";
+  EXPECT_FALSE(zones.solvesNow(outer)) << "a pair without a row";
+}
+
 }  // namespace
 }  // namespace fosssim::testing

@@ -44,6 +44,7 @@ void ContactZones::reset(int n) {
   unsolved_.clear();
   waiting_.clear();
   requeried_.clear();
+  broughtForward_.clear();
   solvedRows_ = 0;
   projector_.reset(n);
 }
@@ -247,6 +248,13 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
     // its own, at coincident centres): they are this zone's now, and only its solve settles them.
     if (added == 0 && (rigid_[zone] || !waitingFor(zone))) return;
   }
+}
+
+bool ContactZones::solvesNow(uint64_t key) {
+  const int* row = rowOf_.find(key);
+  if (row == nullptr || !requeried_[*row] || broughtForward_[*row]) return false;
+  broughtForward_[*row] = 1;
+  return true;
 }
 
 // The members of a zone against an obstacle that its budget-ended solve has brought to rest stop

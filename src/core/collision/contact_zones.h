@@ -170,6 +170,16 @@ class ContactZones {
   /// The handler's sleepers: obstacles, as fixed particles are.
   void setSleepers(const Sleepers* sleepers) { sleepers_ = sleepers; }
 
+  /// Whether the contact of pair `key`, found closing at a later time of the step, is to be
+  /// solved at the current instant instead; true at most once per contact and step. So it is
+  /// for a contact that a budget-ended solve left closing (requeried, see requeried_): its row is
+  /// in the zone already, the zone constrains it at its instant as it does every near pair, and
+  /// the contacts one failed solve leaves then come back as one instant and one solve, not one
+  /// solve each at its own time (on the fed rain pile, about six contacts per failure, 150
+  /// failures a step at N = 10^4). Once: a second failure's contacts wait for their own times, so
+  /// the loop of fail, requery and solve again at one instant ends.
+  bool solvesNow(uint64_t key);
+
  private:
   int root(int p) const {
     while (parent_[p] != p) p = parent_[p];
@@ -243,8 +253,10 @@ class ContactZones {
   std::vector<int> waiting_;
   /// Per projector row: its contact was queried again because a solve spent its budget before
   /// settling it. Coming back as an event then shows the budget, not a jam (the failed solve was
-  /// counted once, in metAgain_), so it is not counted again. Cleared when the row is set again.
+  /// counted once, in metAgain_), so it is not counted again; it comes back at the failure's
+  /// instant if it closes within the step (solvesNow). Cleared when the row is set again.
   std::vector<char> requeried_;
+  std::vector<char> broughtForward_;  ///< per projector row: solvesNow said yes in this step
   std::vector<int> queue_;
   std::vector<uint64_t> keys_;
   std::vector<int> moved_;

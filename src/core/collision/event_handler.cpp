@@ -157,6 +157,10 @@ Status EventHandler::detectChanged(const Scene& scene, double T, StepContext& ct
   found_.clear();
   for (uint64_t key : keys_)
     if (Status s = query(scene, key, T, *ctx.stats, found_); !s) return s;
+  // A contact that a zone's budget-ended solve left closing joins the zone at this instant,
+  // not at its own time (ContactZones::solvesNow).
+  for (Event& e : found_)
+    if (e.t > T && zones_.solvesNow(e.key)) e.t = T;
   pushEvents(found_);
   return Status::ok();
 }

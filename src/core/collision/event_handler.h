@@ -12,7 +12,8 @@
 //            a ball in a wedge: the Zeno cascades of event-driven methods) hands its contacts to
 //            the impact zones of contact_zones.h, which stop them approaching without a loop;
 //            the contacts that reach the zones at one instant join them first, and the zones
-//            are solved once for the instant;
+//            are solved once for the instant; the contacts a budget-ended solve leaves closing
+//            come back at its instant, together (ContactZones::solvesNow);
 //   sleep    particles at rest sleep: obstacles that cost nothing until woken (sleepers.h);
 //   finish   every particle ends its last straight piece at t = 1.
 // Free flight between events is exact and impulses act along the line through the contact, so
