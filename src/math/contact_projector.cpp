@@ -16,6 +16,7 @@ void ContactProjector::reset(int capacity) {
   work_.clear();
   head_ = 0;
   changed_.clear();
+  updates_ = 0;
 }
 
 void ContactProjector::addBody(int b, double inverseMass, const Vec2& v) {
@@ -114,6 +115,7 @@ bool ContactProjector::solve(const double* groupScale, double factor, double tol
     if (++updates > maxUpdates) {  // row k stays queued, at the front, with the rest
       queued_[k] = 1;
       --head_;
+      updates_ += maxUpdates;
       return false;
     }
     const double lambda = row.lambda - w / row.diag;
@@ -121,6 +123,7 @@ bool ContactProjector::solve(const double* groupScale, double factor, double tol
   }
   work_.clear();
   head_ = 0;
+  updates_ += updates;
   return true;
 }
 

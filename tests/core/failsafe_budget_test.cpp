@@ -224,5 +224,61 @@ TEST(ContactPhysics, ContactsABudgetEndedSolveLeavesAreSolvedAtItsInstantOnce) {
   EXPECT_FALSE(zones.solvesNow(outer)) << "a pair without a row";
 }
 
+// 8i. With holding on, a zone against an obstacle halves its budget per row at each of its first
+// two counts toward the jam limit (kRepeatBudgetHalvings). Five unit disks (radius 0.05) stacked
+// exactly on the floor, all moving down at one kick (g h = 0.0981 m/s), no sleepers (so nothing is
+// ever held: only the budgets are looked at), 40 updates per row. The column's rows need about
+// 1,150 updates to settle from cold (8c), so every solve below ends on its budget, spending it
+// whole: the first solve of the step has a fifth of the budget per row (kFirstSolveBudgetDivisor)
+// over its 5 rows, at least 8: 8 x 8 = 64. After each failure the contacts still closing come
+// back at once (as the event loop brings them back; queried again for the failure, they do not
+// count), at most 5 fresh rows, so at least 8: 40 / 2 x 8 = 160 after one failure, 40 / 4 x 8 =
+// 80 after two and after three. With holding off (the control) every solve has the whole budget,
+// 40 x 8 = 320 (three solves: the fourth would settle the column).
+TEST(ContactPhysics, AZoneAgainstAnObstacleHalvesItsBudgetAfterEachOfItsFirstTwoFailures) {
+  for (const bool hold : {true, false}) {
+    SCOPED_TRACE(hold ? "holding on" : "holding off (control)");
+    TestScene s = restingColumn(5);
+    for (int k = 0; k < 5; ++k) at(s.state.v, k) = Vec2(0.0, -9.81 * 0.01);
+    const double h = s.scene.dt;
+    const VecX end = s.state.x + h * s.state.v;
+    StepMotion motion;
+    motion.begin(s.state.x, end);
+    PairCandidates candidates;
+    candidates.build(s.scene, motion.from(), motion.end(), 0.0, /*updates=*/true);
+    ContactZones zones;
+    zones.reset(5);
+    zones.setUpdatesPerRow(40);
+    zones.setHold(hold);
+    // The floor contact first, then every contact of the column still closing (the floor's, then
+    // disk k's with disk k + 1: the upper one moving down relative to the lower one).
+    auto closing = [&] {
+      std::vector<uint64_t> keys;
+      if (motion.rate(0).y() < 0.0) keys.push_back(pairKey(0, PairKind::ParticleHalfPlane, 0));
+      for (int k = 0; k + 1 < 5; ++k)
+        if (motion.rate(k + 1).y() < motion.rate(k).y()) keys.push_back(particlePairKey(k, k + 1));
+      return keys;
+    };
+    VecX v = s.state.v;
+    std::vector<int> changed;
+    std::vector<long> spent;
+    const int solves = hold ? 4 : 3;
+    for (int solve = 0; solve < solves; ++solve) {
+      const double T = 0.1 * solve;
+      const std::vector<uint64_t> back = solve == 0 ? std::vector<uint64_t>{pairKey(0, PairKind::ParticleHalfPlane, 0)} : closing();
+      ASSERT_FALSE(back.empty()) << "solve " << solve << ": the column should still be closing";
+      int zone = -1;
+      for (uint64_t key : back) zone = zones.absorb(s.scene, motion, candidates, key, T, h);
+      ASSERT_GE(zone, 0);
+      StepStats stats;
+      zones.resolve(s.scene, motion, candidates, zone, T, h, v, changed, stats);
+      ASSERT_EQ(stats.failsafeRounds, 1) << "solve " << solve;
+      spent.push_back(stats.zoneUpdates);
+    }
+    const std::vector<long> expected = hold ? std::vector<long>{64, 160, 80, 80} : std::vector<long>{320, 320, 320};
+    EXPECT_EQ(spent, expected);
+  }
+}
+
 }  // namespace
 }  // namespace fosssim::testing

@@ -29,6 +29,7 @@ struct StepStats {
   int rigidZones = 0;        ///< zones that moved rigidly (or stopped): all of --compat's, the default mode's last resort
   int jammedParticles = 0;   ///< default mode: particles a jam against an obstacle stopped for the rest of the step
   int heldParticles = 0;     ///< default mode: particles held at rest by a budget-ended solve (stopped for the rest of the step)
+  long zoneUpdates = 0;      ///< default mode: Gauss-Seidel updates of the failsafe's projection (the zones' solves)
 
   void clear() { *this = StepStats{}; }
 };

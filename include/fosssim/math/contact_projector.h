@@ -102,6 +102,8 @@ class ContactProjector {
   /// Appends the bodies whose velocity changed since the last call, each once.
   void takeChanged(std::vector<int>& out);
   int rows() const { return static_cast<int>(row_.size()); }
+  /// Gauss-Seidel updates the solves have made since the last reset.
+  long updates() const { return updates_; }
 
  private:
   /// Rows a body keeps beside it: a disk in a pile touches up to six others and a wall.
@@ -149,6 +151,7 @@ class ContactProjector {
   std::vector<int> work_;     ///< FIFO of row indices (head_ marks the front)
   size_t head_ = 0;
   std::vector<int> changed_;  ///< body slots changed since the last takeChanged
+  long updates_ = 0;          ///< see updates()
 };
 
 }  // namespace fosssim::math

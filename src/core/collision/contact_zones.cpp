@@ -181,7 +181,10 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
       const int fresh = solves_[zone]++ == 0 ? projector_.rows()
                                              : std::max(projector_.rows() - solvedRows_, projector_.queuedRows());
       const bool jammed = metAgain_[zone] > kMaxZoneProjections;
-      const long divisor = jammed ? kJammedBudgetDivisor : solves_[zone] == 1 && hold_ ? kFirstSolveBudgetDivisor : 1;
+      const long divisor = jammed                        ? kJammedBudgetDivisor
+                           : solves_[zone] == 1 && hold_ ? kFirstSolveBudgetDivisor
+                           : immovable_[zone] && hold_   ? 1L << std::min(metAgain_[zone], kRepeatBudgetHalvings)
+                                                         : 1;
       const long perRow = std::max(updatesPerRow_ / divisor, 1L);
       const long budget = perRow * std::max(fresh, 8);
       solvedRows_ = projector_.rows();
@@ -192,7 +195,10 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
       // was never queried again (an edge rotating into a chain's disk deepened 5e-9 unseen:
       // chains 2,500, --verify). A root merged into another since keeps the smaller scale it had
       // (scales only grow within a step), so its rows are held, if anything, tighter.
-      if (!projector_.solve(rateScale_.data(), 1.0 / h, kZoneProjectionTolerance, budget)) {
+      const long before = projector_.updates();
+      const bool solved = projector_.solve(rateScale_.data(), 1.0 / h, kZoneProjectionTolerance, budget);
+      stats.zoneUpdates += projector_.updates() - before;
+      if (!solved) {
         if (immovable_[zone]) holdResting(scene, zone);
         ++metAgain_[zone];
         // A failure is its zone's alone. This zone's rows still queued are dropped; those of
