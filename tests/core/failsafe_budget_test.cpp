@@ -179,6 +179,23 @@ TEST(ContactPhysics, ARigidZoneThatLandsOnARestingZoneKeepsItsSlide) {
   }
 }
 
+/// The failsafe's zones for one step of `s` in which every particle moves with its velocity, set
+/// up as the event loop sets them up (paths, broad phase, zones; no sleepers).
+struct StepZones {
+  StepMotion motion;
+  PairCandidates candidates;  // reads motion's vectors: a StepZones stays where it was made
+  ContactZones zones;
+  StepZones(const TestScene& s, long updatesPerRow, bool hold) {
+    motion.begin(s.state.x, s.state.x + s.scene.dt * s.state.v);
+    candidates.build(s.scene, motion.from(), motion.end(), 0.0, /*updates=*/true);
+    zones.reset(s.scene.numParticles());
+    zones.setUpdatesPerRow(updatesPerRow);
+    zones.setHold(hold);
+  }
+  StepZones(const StepZones&) = delete;
+  StepZones& operator=(const StepZones&) = delete;
+};
+
 // 8h. The contacts a budget-ended solve leaves closing are solved at its instant, each once in a
 // step (ContactZones::solvesNow). Three unit disks (radius 0.05) on the x axis, gaps 1e-4 and
 // 3e-4, the left one moving right at 1 m/s and the right one left at 1 m/s, h = 0.01: the left
@@ -195,15 +212,10 @@ TEST(ContactPhysics, ContactsABudgetEndedSolveLeavesAreSolvedAtItsInstantOnce) {
   addBody(s, 1.0, Vec2(0.1001, 0.0), Vec2::Zero(), 0.05);
   addBody(s, 1.0, Vec2(0.2004, 0.0), Vec2(-1.0, 0.0), 0.05);
   const double h = s.scene.dt, T = 0.01;
-  const VecX end = s.state.x + h * s.state.v;
-  StepMotion motion;
-  motion.begin(s.state.x, end);
-  PairCandidates candidates;
-  candidates.build(s.scene, motion.from(), motion.end(), 0.0, /*updates=*/true);
-  ContactZones zones;
-  zones.reset(3);
-  zones.setUpdatesPerRow(1);
-  zones.setHold(false);
+  StepZones step(s, /*updatesPerRow=*/1, /*hold=*/false);
+  StepMotion& motion = step.motion;
+  PairCandidates& candidates = step.candidates;
+  ContactZones& zones = step.zones;
   const uint64_t left = particlePairKey(0, 1), right = particlePairKey(1, 2), outer = particlePairKey(0, 2);
 
   const int zone = zones.absorb(s.scene, motion, candidates, left, T, h);
@@ -241,15 +253,10 @@ TEST(ContactPhysics, AZoneAgainstAnObstacleHalvesItsBudgetAfterEachOfItsFirstTwo
     TestScene s = restingColumn(5);
     for (int k = 0; k < 5; ++k) at(s.state.v, k) = Vec2(0.0, -9.81 * 0.01);
     const double h = s.scene.dt;
-    const VecX end = s.state.x + h * s.state.v;
-    StepMotion motion;
-    motion.begin(s.state.x, end);
-    PairCandidates candidates;
-    candidates.build(s.scene, motion.from(), motion.end(), 0.0, /*updates=*/true);
-    ContactZones zones;
-    zones.reset(5);
-    zones.setUpdatesPerRow(40);
-    zones.setHold(hold);
+    StepZones step(s, /*updatesPerRow=*/40, hold);
+    StepMotion& motion = step.motion;
+    PairCandidates& candidates = step.candidates;
+    ContactZones& zones = step.zones;
     // The floor contact first, then every contact of the column still closing (the floor's, then
     // disk k's with disk k + 1: the upper one moving down relative to the lower one).
     auto closing = [&] {
