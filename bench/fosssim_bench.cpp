@@ -75,6 +75,7 @@ struct Figures {
   long rigidSteps = 0;       ///< steps in which some zone moved rigidly (or stopped)
   double jammedParticles = 0;  ///< particles a jam stopped for the rest of their step, summed over the run
   double heldParticles = 0;    ///< particles a budget-ended solve held at rest for the rest of their step, summed
+  double zoneUpdates = 0;      ///< the failsafe's Gauss-Seidel updates, summed over the run
   double bytesPerParticle = 0;  ///< peak resident memory grown while building and running
   double growthBytes = 0;       ///< resident memory grown from a tenth into the first run to its end
   Block blocks[kMaxBlocks];  ///< the fastest run's blocks of kBlockSteps steps (the first kMaxBlocks)
@@ -169,6 +170,7 @@ Figures runScene(const Options& o, const std::string& kind, int n) {
       into.rigidSteps += st.rigidZones > 0;
       into.jammedParticles += st.jammedParticles;
       into.heldParticles += st.heldParticles;
+      into.zoneUpdates += static_cast<double>(st.zoneUpdates);
       blockZone += st.zoneParticles;
       blockFailsafe += st.failsafe;
       if ((k + 1) % kBlockSteps == 0 || k + 1 == steps) {
@@ -325,9 +327,9 @@ int main(int argc, char** argv) {
                 o.collision.c_str(), o.threads, o.threads == 1 ? "" : "s", o.allPairs ? ", all pairs" : "",
                 o.compat ? ", --compat" : "", o.noSleep && !o.compat ? ", no sleeping" : "",
                 o.noHold && !o.compat ? ", no holding" : "", o.seed);
-    std::printf("%-16s %7s %6s %9s %7s %7s %7s %7s %8s %8s | %9s %9s %6s %5s %6s %6s %6s %5s %5s %5s %7s %6s\n", "scene", "N",
+    std::printf("%-16s %7s %6s %9s %7s %7s %7s %7s %8s %8s | %9s %9s %6s %5s %6s %6s %6s %5s %5s %5s %7s %6s %8s\n", "scene", "N",
                 "steps", "integrate", "broad", "narrow", "respond", "failsafe", "other", "total", "cand/step",
-                "coll/step", "passes", "fs%", "rounds", "zone", "inzn%", "rgd%", "jam%", "held%", "B/part", "grow/p");
+                "coll/step", "passes", "fs%", "rounds", "zone", "inzn%", "rgd%", "jam%", "held%", "B/part", "grow/p", "gs/step");
     for (const std::string& kind : o.scenes) {
       for (int n : o.sizes) {
         const Figures f = inChild(o, kind, n);
@@ -339,14 +341,14 @@ int main(int argc, char** argv) {
         const double other = f.total - f.integrate - f.broad - f.narrow - f.response - f.failsafe;
         const double steps = static_cast<double>(f.steps);
         std::printf("%-16s %7d %6ld %9.3f %7.3f %7.3f %7.3f %8.3f %8.3f %8.3f | %9.0f %9.1f %6.2f %5.1f %6.1f %6d %6.1f "
-                    "%5.1f %5.2f %5.1f %7.0f %6.1f\n",
+                    "%5.1f %5.2f %5.1f %7.0f %6.1f %8.0f\n",
                     kind.c_str(), f.particles, f.steps, f.integrate * per, f.broad * per, f.narrow * per,
                     f.response * per, f.failsafe * per, other * per, f.total * per, f.candidates / steps,
                     f.collisions / steps, f.passes / steps, 100.0 * static_cast<double>(f.failsafeSteps) / steps,
                     f.failsafeSteps ? f.rounds / static_cast<double>(f.failsafeSteps) : 0.0, f.largestZone,
                     100.0 * f.zoneParticles / (steps * f.particles), 100.0 * static_cast<double>(f.rigidSteps) / steps,
                     100.0 * f.jammedParticles / (steps * f.particles), 100.0 * f.heldParticles / (steps * f.particles),
-                    f.bytesPerParticle, f.growthBytes / f.particles);
+                    f.bytesPerParticle, f.growthBytes / f.particles, f.zoneUpdates / steps);
         if (f.stopped) std::printf("  (stopped at --time-limit %g s after %ld steps)\n", o.timeLimit, f.steps);
         std::fflush(stdout);
         if (f.steps >= 1000 || f.stopped || o.blocks || !o.blocksCsv.empty()) {
