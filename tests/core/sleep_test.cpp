@@ -175,6 +175,29 @@ TEST(Sleep, ASleeperGivenAVelocityBetweenStepsWakesAndMoves) {
   EXPECT_NEAR(at(s.state.v, 0).x(), 1.0, 1e-12);
 }
 
+// A disk set moving between steps hits the sleeper in its way. Five disks rest apart, without
+// forces or walls (so nothing else is hit first), at x = 0, 0.5, ..., 2, and fall asleep (exactly
+// at rest), while a sixth flies away from them at 60 m/s (the scene's energy, against which the
+// energy watch measures the kick given below); then disk 2 is given -60 m/s. It did not move in
+// the last step, so it wakes no neighbour at the step's start: only the step's first detection
+// can find its pair with disk 1, which it reaches 0.3 / 0.6 = 0.5 into the step. With most
+// particles asleep (four of six) that detection reads rows from the particles that move
+// (EventHandler::detectAll), and disk 1 has the lower index: the pair must come from disk 2's
+// side. COR 0, equal masses: both go on at -30 m/s, and nothing overlaps (stepClean).
+TEST(Sleep, ADiskSetMovingBetweenStepsHitsALowerNumberedSleeperInItsWay) {
+  TestScene s = contactScene("hybrid", 0.0);
+  for (int k = 0; k < 5; ++k) addBody(s, 1.0, Vec2(0.5 * k, 0.0), Vec2::Zero(), kR);
+  addBody(s, 1.0, Vec2(0.0, 5.0), Vec2(0.0, 60.0), kR);
+  auto sim = defaultModeSimulator(s, true);
+  for (int k = 0; k < 2 * kStepsToSleep; ++k) ASSERT_TRUE(stepClean(*sim, s));
+  ASSERT_EQ(sim->stats().asleep, 5);
+  at(s.state.v, 2) = Vec2(-60.0, 0.0);
+  ASSERT_TRUE(stepClean(*sim, s));
+  EXPECT_NEAR(at(s.state.v, 1).x(), -30.0, 1e-9);
+  EXPECT_NEAR(at(s.state.v, 2).x(), -30.0, 1e-9);
+  for (int k : {0, 3, 4}) EXPECT_EQ(at(s.state.x, k), Vec2(0.5 * k, 0.0)) << "disk " << k << " is out of reach";
+}
+
 // The same for an island: whichever member a script moves, all of it wakes in that step (disk 0
 // is the island's first member, disk 1 its last: both are tried), and the spring then pulls the
 // other member along.

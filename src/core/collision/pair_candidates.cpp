@@ -175,6 +175,16 @@ void PairCandidates::particlesOf(int i, int after, std::vector<int>& out) const 
   std::sort(out.begin() + static_cast<long>(begin), out.end());
 }
 
+void PairCandidates::particlesBefore(int i, std::vector<int>& out) const {
+  if (allPairs_) {
+    for (int j = 0; j < i; ++j) out.push_back(j);
+    return;
+  }
+  particleGrid_.forEachOverlap(particleBoxes_[i], [&](int j) {
+    if (j < i) out.push_back(j);
+  });
+}
+
 void PairCandidates::edgesOf(int i, int after, std::vector<int>& out) const {
   const std::vector<Edge>& edges = scene_->edges;
   const int count = static_cast<int>(edges.size());

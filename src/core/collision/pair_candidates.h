@@ -80,6 +80,8 @@ class PairCandidates {
 
   /// Appends the particles j > max(i, after) whose boxes meet particle i's, ascending.
   void particlesOf(int i, int after, std::vector<int>& out) const;
+  /// Appends the particles j < i whose boxes meet particle i's (in no particular order).
+  void particlesBefore(int i, std::vector<int>& out) const;
   /// Appends the edges e > after not incident to i whose boxes meet particle i's, ascending.
   void edgesOf(int i, int after, std::vector<int>& out) const;
   /// Whether particle i may reach half-plane h.
