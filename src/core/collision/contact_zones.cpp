@@ -151,13 +151,12 @@ int ContactZones::grow(const Scene& scene, const StepMotion& motion, const PairC
     // In pair order (the broad phase lists them in grid order): the rows' order decides the
     // solve's rounding, which must not depend on how candidates were found.
     if (candidates.sortedPairs()) {
-      candidates.forEachPairOf(q, keys_, consider);
+      candidates.forEachPairOf(q, consider);
       continue;
     }
     keys_.clear();
-    candidates.pairsOf(q, keys_);
+    candidates.pairsOf(q, keys_);  // each once
     std::sort(keys_.begin(), keys_.end());
-    keys_.erase(std::unique(keys_.begin(), keys_.end()), keys_.end());
     for (uint64_t k : keys_) consider(k);
   }
   return root(zone);

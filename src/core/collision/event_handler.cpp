@@ -161,7 +161,7 @@ Status EventHandler::detectChanged(const Scene& scene, double T, StepContext& ct
     for (int p : changed_) {
       if (inChanged_[p] != 1) continue;  // listed already
       inChanged_[p] = 2;
-      candidates_.forEachPairOf(p, scratch_, [&](uint64_t key) {
+      candidates_.forEachPairOf(p, [&](uint64_t key) {
         if (listsFrom(scene, key, p)) keys_.push_back(key);
       });
     }
@@ -266,7 +266,7 @@ void EventHandler::wakeNearMoving(const Scene& scene, StepStats& stats) {
     if (fromSleepers ? sleepers_.asleep(p) : moving(p)) wakeFrom_.push_back(p);
   for (int p : wakeFrom_) {
     // Candidates, not neighbours: small scenes list every pair.
-    candidates_.forEachPairOf(p, keys_, [&](uint64_t key) {
+    candidates_.forEachPairOf(p, [&](uint64_t key) {
       const PairParticles pair = pairParticles(scene, key);
       // The largest reach of the pair's movers (-1: none) and whether it holds a sleeper.
       double reach = -1;

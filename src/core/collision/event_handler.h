@@ -112,7 +112,6 @@ class EventHandler final : public CollisionHandler {
   std::vector<int> changed_;      ///< particles whose path the last response bent
   std::vector<int> wakeFrom_;     ///< scratch: the sleepers or the movers wakeNearMoving searches from
   std::vector<uint64_t> keys_;    ///< scratch: pairs to query
-  std::vector<uint64_t> scratch_; ///< scratch: one particle's pairs (PairCandidates::forEachPairOf)
   std::vector<char> inChanged_;   ///< N: whether the particle is in changed_ (detectChanged's scratch, all 0 between)
 };
 

@@ -202,29 +202,7 @@ void PairCandidates::edgesOf(int i, int after, std::vector<int>& out) const {
 }
 
 void PairCandidates::pairsOf(int p, std::vector<uint64_t>& keys) const {
-  const std::vector<Edge>& edges = scene_->edges;
-  const int n = scene_->numParticles(), planes = static_cast<int>(scene_->halfplanes.size());
-  auto particlePair = [&](int q) {
-    if (q != p) keys.push_back(particlePairKey(p, q));
-  };
-  auto edgePair = [&](int q, int e) {
-    if (edges[e].i != q && edges[e].j != q) keys.push_back(pairKey(q, PairKind::ParticleEdge, e));
-  };
-  if (allPairs_) {
-    for (int q = 0; q < n; ++q) particlePair(q);
-    for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
-      edgePair(p, e);
-      if (edges[e].i == p || edges[e].j == p)
-        for (int q = 0; q < n; ++q) edgePair(q, e);
-    }
-  } else if (edges.empty()) {
-    forEachKept(p, particlePair);
-  } else {
-    const std::vector<uint64_t>& kept = keptKeysOf(p);
-    keys.insert(keys.end(), kept.begin(), kept.end());
-  }
-  for (int h = 0; h < planes; ++h)
-    if (nearPlane(p, h)) keys.push_back(pairKey(p, PairKind::ParticleHalfPlane, h));
+  forEachPairOf(p, [&](uint64_t key) { keys.push_back(key); });
 }
 
 // Sized for this scene and of its kind (a candidates object may be built again for another scene).

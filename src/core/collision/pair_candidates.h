@@ -123,17 +123,13 @@ class PairCandidates {
   void pairsOf(int p, std::vector<uint64_t>& keys) const;
   /// Calls visit(key) for each of pairsOf(p)'s keys, in its order, reading the kept list where
   /// it lies: grow and detectChanged ask for thousands of lists a step, and copying each out took
-  /// 4% of rain's time at N = 10^4 (`scratch` serves the all-pairs case). visit must not call
-  /// pairsOf, update or settle (they may rebuild the list being read).
+  /// 4% of rain's time at N = 10^4. visit must not call pairsOf, forEachPairOf, update or settle
+  /// (they may rebuild the list being read).
   template <class Visit>
-  void forEachPairOf(int p, std::vector<uint64_t>& scratch, Visit&& visit) const {
+  void forEachPairOf(int p, Visit&& visit) const {
     if (allPairs_) {
-      scratch.clear();
-      pairsOf(p, scratch);
-      for (uint64_t key : scratch) visit(key);
-      return;
-    }
-    if (scene_->edges.empty()) {
+      forEachPairOfAll(p, visit);
+    } else if (scene_->edges.empty()) {
       forEachKept(p, [&](int q) { visit(particlePairKey(p, q)); });
     } else {
       for (uint64_t key : keptKeysOf(p)) visit(key);
@@ -158,6 +154,23 @@ class PairCandidates {
     int32_t other[kKeptInline] = {};
   };
   void index();  ///< (re)builds the main grids from the current boxes (and forgets pairsOf's lists)
+  /// With every pair a candidate: visit(key) for p's particle pairs, then its edge pairs (as the
+  /// particle, then as an endpoint), each once; nothing is kept.
+  template <class Visit>
+  void forEachPairOfAll(int p, Visit&& visit) const {
+    const std::vector<Edge>& edges = scene_->edges;
+    const int n = scene_->numParticles();
+    for (int q = 0; q < n; ++q)
+      if (q != p) visit(particlePairKey(p, q));
+    auto edgePair = [&](int q, int e) {
+      if (edges[e].i != q && edges[e].j != q) visit(pairKey(q, PairKind::ParticleEdge, e));
+    };
+    for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
+      edgePair(p, e);
+      if (edges[e].i == p || edges[e].j == p)
+        for (int q = 0; q < n; ++q) edgePair(q, e);
+    }
+  }
   /// Forgets the kept lists that a particle box b (before or after a re-filing) may enter: those
   /// of the particles whose boxes meet b, and with edges those of the endpoints of the edges
   /// whose boxes meet b (they list b's particle against the edge).
