@@ -186,7 +186,16 @@ TEST(BroadPhase, IncrementalDetectionEqualsFullDetection) {
 // must equal what the grid gives now (particlesOf and edgesOf, which keep nothing), each pair
 // once and in pair order. Lists are asked for before the moves too, so stale ones would be
 // returned if a re-filed box did not forget them.
-void checkKeptPairLists(bool withEdges, uint32_t seed) {
+// keepAll: the lists made all at once from every row's keys (as the event handler's first
+// detection reads them), ascending: the same checks then apply to them from the first round.
+void keepAllFromRows(PairCandidates& c, int n) {
+  std::vector<int> row;
+  c.keepAll([&](auto&& visit) {
+    for (int i = 0; i < n; ++i) c.forEachInRow(i, row, [&](PairKind kind, int other) { visit(pairKey(i, kind, other)); });
+  });
+}
+
+void checkKeptPairLists(bool withEdges, uint32_t seed, bool keepAll = false) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   long refiledPairsSeen = 0, longListsSeen = 0, edgePairsSeen = 0;
@@ -198,6 +207,11 @@ void checkKeptPairLists(bool withEdges, uint32_t seed) {
     c.build(m.scene, m.qs, m.qe, 0.0, /*updates=*/true);
     ASSERT_FALSE(c.allPairs());
     std::vector<uint64_t> keys;
+    if (keepAll) {  // over lists made one by one (long ones spilled), as from the second step on
+      for (int p = 0; p < n; ++p) c.pairsOf(p, keys);
+      c.build(m.scene, m.qs, m.qe, 0.0, /*updates=*/true);
+      keepAllFromRows(c, n);
+    }
     std::vector<int> row;
     std::vector<std::set<uint64_t>> before(n);
     auto listed = [&](int p) {  // pairsOf's particle and edge pairs, checked for order and repeats
@@ -253,6 +267,38 @@ void checkKeptPairLists(bool withEdges, uint32_t seed) {
 
 TEST(BroadPhase, KeptPairListsFollowEveryRefiledBox) { checkKeptPairLists(false, 17); }
 TEST(BroadPhase, KeptPairListsWithEdgesFollowEveryRefiledBox) { checkKeptPairLists(true, 19); }
+TEST(BroadPhase, ListsKeptAllAtOnceAreThoseMadeOneByOneAndFollowEveryRefiledBox) {
+  checkKeptPairLists(false, 23, /*keepAll=*/true);
+}
+
+// keepsAllNext: lists are made all at once in a step after one whose event loop read the lists of
+// at least an eighth of the particles, whether it made them one by one or read them made all at
+// once (counted either way, so the choice does not flip every other step), and not after a step
+// that read fewer.
+TEST(BroadPhase, ListsAreKeptAllAtOnceAfterAStepThatReadManyOfThem) {
+  std::mt19937 rng(31);
+  Motion m = randomMotion(rng, 160, 0.0);
+  m.scene.edges.clear();
+  const int n = m.scene.numParticles();
+  PairCandidates c;
+  std::vector<uint64_t> keys;
+  auto step = [&](int read, bool keepAll) {  // a build, then the event loop reads `read` lists
+    c.build(m.scene, m.qs, m.qe, 0.0, /*updates=*/true);
+    const bool next = c.keepsAllNext();
+    if (keepAll) keepAllFromRows(c, n);
+    for (int p = 0; p < read; ++p) c.pairsOf(p, keys);
+    return next;
+  };
+  ASSERT_EQ(n % 8, 0);
+  EXPECT_FALSE(step(n / 8, false));    // nothing was read before the first step
+  EXPECT_TRUE(step(n / 8, true));      // an eighth was read, made one by one
+  EXPECT_TRUE(step(n / 8 - 1, false)); // an eighth was read, made all at once
+  EXPECT_FALSE(step(0, false));        // one list fewer
+  // Reading a list twice counts it once: twice n / 16 reads of n / 16 lists are not an eighth.
+  EXPECT_FALSE(step(n / 16, false));
+  for (int p = 0; p < n / 16; ++p) c.pairsOf(p, keys);
+  EXPECT_FALSE(step(0, false));
+}
 
 // One candidates object built again for another scene of as many particles, first without
 // edges, then with them, and back: its kept lists must be made for the new scene's kind (a list of

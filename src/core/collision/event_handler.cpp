@@ -96,9 +96,16 @@ Status EventHandler::handle(const Scene& scene, const State& start, State& state
 // mover's row lists its sleeping neighbours below it as well. Every pair that is queried is
 // still queried once, and events leave the heap by time and pair, so the result is the same; a
 // resting pile then no longer reads the grid for every particle in every step.
+//
+// When the last step's event loop read many particles' pair lists (PairCandidates::
+// keepsAllNext: a pile's zones grow from thousands of particles a step), the rows' keys, read
+// anyway, make all of this step's lists at once (keepAll) instead of a grid search and a sort
+// per list later: rain 10^4 7.9-8.0 -> 7.7 ms/step, 10^5 53.5 -> 49.3, identical results.
 Status EventHandler::detectAll(const Scene& scene, StepContext& ctx) {
   const int n = scene.numParticles();
   const bool fromMovers = !candidates_.allPairs() && scene.edges.empty() && 2L * sleepers_.sleeping() > n;
+  // Every row read: its keys, ascending across the ranges, also make the broad phase's kept lists.
+  const bool keepAll = !fromMovers && candidates_.keepsAllNext();
   const int ranges = rowRangesFor(n, threads_);
   if (workers_.size() < static_cast<size_t>(ranges)) workers_.resize(ranges);
   const auto start = std::chrono::steady_clock::now();
@@ -107,11 +114,13 @@ Status EventHandler::detectAll(const Scene& scene, StepContext& ctx) {
     w.events.clear();
     w.stats.clear();
     w.status = Status::ok();
+    w.keys.clear();
     for (int i = first; i < end && w.status;) {
-      w.keys.clear();
+      if (!keepAll) w.keys.clear();
+      const size_t from = w.keys.size();
       {
         const StepTimer timer(ctx.timing, w.stats.broadPhase);
-        for (; i < end && w.keys.size() < CollisionSearch::kKeysPerBlock; ++i) {
+        for (; i < end && w.keys.size() - from < CollisionSearch::kKeysPerBlock; ++i) {
           if (fromMovers && sleepers_.asleep(i)) continue;
           candidates_.forEachInRow(i, w.row, [&](PairKind kind, int other) { w.keys.push_back(pairKey(i, kind, other)); });
           if (!fromMovers || scene.isFixed(i)) continue;
@@ -122,8 +131,8 @@ Status EventHandler::detectAll(const Scene& scene, StepContext& ctx) {
         }
       }
       const StepTimer timer(ctx.timing, w.stats.narrowPhase);
-      for (uint64_t key : w.keys)
-        if (w.status = query(scene, key, 0.0, w.stats, w.events); !w.status) break;
+      for (size_t k = from; k < w.keys.size(); ++k)
+        if (w.status = query(scene, w.keys[k], 0.0, w.stats, w.events); !w.status) break;
     }
   });
   for (int k = 0; k < ranges; ++k) {
@@ -131,6 +140,13 @@ Status EventHandler::detectAll(const Scene& scene, StepContext& ctx) {
     pushEvents(workers_[k].events);
   }
   joinRangeStats(ranges, [&](int k) -> const StepStats& { return workers_[k].stats; }, start, ctx.timing, *ctx.stats);
+  if (keepAll) {
+    const StepTimer timer(ctx.timing, ctx.stats->broadPhase);
+    candidates_.keepAll([&](auto&& visit) {
+      for (int k = 0; k < ranges; ++k)
+        for (uint64_t key : workers_[k].keys) visit(key);
+    });
+  }
   return Status::ok();
 }
 

@@ -70,6 +70,8 @@ void PairCandidates::build(const Scene& scene, const VecX& qs, const VecX& qe, d
                            int threads) {
   scene_ = &scene;
   threads_ = threads;
+  listsReadBefore_ = listsRead_;
+  listsRead_ = 0;
   slack_ = updates ? kFiledSlack : 0.0;
   qs_ = &qs;
   qe_ = &qe;
@@ -102,9 +104,9 @@ void PairCandidates::build(const Scene& scene, const VecX& qs, const VecX& qe, d
 }
 
 void PairCandidates::index() {
-  // Every list made before is stale now. Generation 0 means "none": at the wrap (after 2^32
-  // indexings) the lists are forgotten outright, so no old list can pass for a new one.
-  if (++generation_ == 0) {
+  // Every list made before is stale now. Generation 0 means "none": at the wrap (after 2^31
+  // indexings, below keepAll's kUnread bit) the lists are forgotten outright, so no old list can pass for a new one.
+  if (++generation_ == kUnread) {
     for (KeptList& list : kept_) list.generation = 0;
     generation_ = 1;
   }
@@ -223,6 +225,11 @@ const PairCandidates::KeptList& PairCandidates::keptListOf(int p) const {
   if (!keepsLists()) makeKeptStorage();
   KeptList& list = kept_[p];
   if (list.generation == generation_) return list;
+  ++listsRead_;
+  if (list.generation == (generation_ | kUnread)) {  // made by keepAll, read now for the first time
+    list.generation = generation_;
+    return list;
+  }
   keptScratch_.clear();
   forEachParticleNear(particleBoxes_[p], [&](int q) {
     if (q != p) keptScratch_.push_back(q);
@@ -234,6 +241,16 @@ const PairCandidates::KeptList& PairCandidates::keptListOf(int p) const {
   if (list.count > kKeptInline) keptMore_[p].assign(keptScratch_.begin() + stored, keptScratch_.end());
   list.generation = generation_;
   return list;
+}
+
+void PairCandidates::beginKeepAll() {
+  if (!keepsLists()) makeKeptStorage();
+  for (size_t p = 0; p < kept_.size(); ++p) {
+    KeptList& list = kept_[p];
+    if (list.count > kKeptInline) keptMore_[p].clear();
+    list.count = 0;
+    list.generation = generation_ | kUnread;
+  }
 }
 
 const std::vector<uint64_t>& PairCandidates::keptKeysOf(int p) const {
