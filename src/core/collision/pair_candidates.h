@@ -212,6 +212,11 @@ class PairCandidates {
   /// of the particles whose boxes meet b, and with edges those of the endpoints of the edges
   /// whose boxes meet b (they list b's particle against the edge).
   void forgetPairsNear(const Box& b);
+  /// Scenes without edges: particle p's box was re-filed from `old` to particleBoxes_[p]; the
+  /// current lists take p in or out, p's own is forgotten.
+  void refileInLists(int p, const Box& old);
+  /// Puts p into q's list (ascending) or takes it out.
+  void setKept(int q, int p, bool member);
   /// The same for edge e's box b: the particles whose boxes meet b, and e's endpoints (whose
   /// boxes meet b anyway, as b holds their paths; named so as not to rest on how boxes grow).
   void forgetEdgePairsNear(int e, const Box& b);
