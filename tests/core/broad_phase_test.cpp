@@ -270,15 +270,19 @@ TEST(BroadPhase, KeptPairListsWithEdgesFollowEveryRefiledBox) { checkKeptPairLis
 TEST(BroadPhase, ListsKeptAllAtOnceAreThoseMadeOneByOneAndFollowEveryRefiledBox) {
   checkKeptPairLists(false, 23, /*keepAll=*/true);
 }
+TEST(BroadPhase, ListsWithEdgesKeptAllAtOnceAreThoseMadeOneByOneAndFollowEveryRefiledBox) {
+  checkKeptPairLists(true, 37, /*keepAll=*/true);
+}
 
 // keepsAllNext: lists are made all at once in a step after one whose event loop read the lists of
 // at least an eighth of the particles, whether it made them one by one or read them made all at
 // once (counted either way, so the choice does not flip every other step), and not after a step
 // that read fewer.
-TEST(BroadPhase, ListsAreKeptAllAtOnceAfterAStepThatReadManyOfThem) {
+void checkKeepAllChoice(bool withEdges) {
   std::mt19937 rng(31);
   Motion m = randomMotion(rng, 160, 0.0);
-  m.scene.edges.clear();
+  while (withEdges && m.scene.edges.empty()) m = randomMotion(rng, 160, 0.0);
+  if (!withEdges) m.scene.edges.clear();
   const int n = m.scene.numParticles();
   PairCandidates c;
   std::vector<uint64_t> keys;
@@ -299,6 +303,9 @@ TEST(BroadPhase, ListsAreKeptAllAtOnceAfterAStepThatReadManyOfThem) {
   for (int p = 0; p < n / 16; ++p) c.pairsOf(p, keys);
   EXPECT_FALSE(step(0, false));
 }
+
+TEST(BroadPhase, ListsAreKeptAllAtOnceAfterAStepThatReadManyOfThem) { checkKeepAllChoice(false); }
+TEST(BroadPhase, ListsWithEdgesAreKeptAllAtOnceAfterAStepThatReadManyOfThem) { checkKeepAllChoice(true); }
 
 // One candidates object built again for another scene of as many particles, first without
 // edges, then with them, and back: its kept lists must be made for the new scene's kind (a list of

@@ -247,9 +247,11 @@ const PairCandidates::KeptList& PairCandidates::keptListOf(int p) const {
 
 void PairCandidates::beginKeepAll() {
   if (!keepsLists()) makeKeptStorage();
+  const bool edges = !scene_->edges.empty();
   for (size_t p = 0; p < kept_.size(); ++p) {
     KeptList& list = kept_[p];
-    if (list.count > kKeptInline) keptMore_[p].clear();
+    if (edges) keptKeys_[p].clear();
+    else if (list.count > kKeptInline) keptMore_[p].clear();
     list.count = 0;
     list.generation = generation_ | kUnread;
   }
@@ -259,6 +261,11 @@ const std::vector<uint64_t>& PairCandidates::keptKeysOf(int p) const {
   if (!keepsLists()) makeKeptStorage();
   std::vector<uint64_t>& keys = keptKeys_[p];
   if (kept_[p].generation == generation_) return keys;
+  ++listsRead_;
+  if (kept_[p].generation == (generation_ | kUnread)) {  // made by keepAll, read now for the first time
+    kept_[p].generation = generation_;
+    return keys;
+  }
   const std::vector<Edge>& edges = scene_->edges;
   keys.clear();
   forEachParticleNear(particleBoxes_[p], [&](int q) {

@@ -141,25 +141,37 @@ class PairCandidates {
   /// Whether pairsOf's lists are worth making all at once from the step's first detection
   /// (keepAll): between the last two builds (the last step) pairsOf read the lists of at least a
   /// kKeepAllFractionInverse-th of the particles (a pile whose zones ask for thousands a step;
-  /// not a gas, whose impulses ask for a few). Scenes without edges (sortedPairs()) only.
+  /// not a gas, whose impulses ask for a few).
   bool keepsAllNext() const {
-    return sortedPairs() && listsReadBefore_ * kKeepAllFractionInverse >= static_cast<long>(scene_->numParticles());
+    return !allPairs_ && listsReadBefore_ * kKeepAllFractionInverse >= static_cast<long>(scene_->numParticles());
   }
-  /// Makes every particle's pairsOf list at once, from every candidate particle pair (i, j),
-  /// i < j: forEachPair(visit) must call visit(key) for each of their keys in ascending order
-  /// (the rows of the step's first detection, each a particlesOf(i, -1) row), and may call it
-  /// for other keys, which are skipped. The lists are then exactly those pairsOf would make one
-  /// by one (the same boxes, overlap being symmetric), without a grid search and a sort each:
-  /// on rain (N = 10^4) the event loop made about 6,000 lists a step one by one, a tenth of its
-  /// time. Only for sortedPairs() scenes, right after build().
+  /// Makes every particle's pairsOf list at once, from every candidate pair: forEachPair(visit)
+  /// must call visit(key) for the key of every candidate particle pair (i, j), i < j, and
+  /// particle-edge pair, in ascending order (the rows of the step's first detection, each a
+  /// forEachInRow(i) row), and may call it for half-plane keys, which are skipped. Each key goes
+  /// to the list of every particle it involves, and since the keys come ascending so does each
+  /// list: the lists are exactly those pairsOf would make one by one (the same boxes, overlap
+  /// being symmetric), without a grid search and a sort each. On rain (N = 10^4) the event loop
+  /// made about 6,000 lists a step one by one, a tenth of its time; on chains 1,000 making them
+  /// (with edges) took a tenth as well. Right after build(), not with allPairs().
   template <class ForEachPair>
   void keepAll(ForEachPair&& forEachPair) {
     beginKeepAll();
+    if (scene_->edges.empty()) {
+      forEachPair([&](uint64_t key) {
+        if (keyKind(key) != PairKind::ParticleParticle) return;
+        keep(keyParticle(key), keyOther(key));
+        keep(keyOther(key), keyParticle(key));
+      });
+      return;
+    }
     forEachPair([&](uint64_t key) {
-      if (keyKind(key) != PairKind::ParticleParticle) return;
-      // Ascending keys: q's list receives its lower neighbours in order, all before its own row.
-      keep(keyParticle(key), keyOther(key));
-      keep(keyOther(key), keyParticle(key));
+      if (keyKind(key) == PairKind::ParticleHalfPlane) return;
+      const PairParticles pair = pairParticles(*scene_, key);
+      for (int k = 0; k < pair.count; ++k) {
+        std::vector<uint64_t>& keys = keptKeys_[pair.p[k]];
+        if (keys.empty() || keys.back() != key) keys.push_back(key);  // an edge's two ends may be one particle
+      }
     });
   }
   /// Whether pairsOf keeps its lists and so appends its keys ascending and each once: scenes
