@@ -114,9 +114,10 @@ class PairCandidates {
   void settle();
   /// Appends the keys of every candidate pair that involves particle p (as the particle, the
   /// other particle or an edge endpoint), each once, then its half-plane pairs ascending.
-  /// p's particle and edge pairs are kept from one call to the next until a box they depend on
-  /// is re-filed (the event loop asks for the same particles' pairs after every solve that moves
-  /// them: on rain at N = 10^5, 90,000 calls a step against 550 re-filed boxes). They come
+  /// p's particle and edge pairs are kept from one call to the next (the event loop asks for the
+  /// same particles' pairs after every solve that moves them: on rain at N = 10^5, 90,000 calls
+  /// a step against 550 re-filed boxes): with edges until a box they depend on is re-filed,
+  /// without edges updated as boxes are re-filed; keepAll() makes them all at once. They come
   /// ascending: in scenes without edges the whole list is then ascending (sortedPairs()); with
   /// edges a half-plane key may sort before an earlier particle-edge key of a higher particle.
   /// With every pair a candidate (allPairs()) nothing is kept. Not for concurrent use.
@@ -264,9 +265,10 @@ class PairCandidates {
   BoxGrid particleGrid_, edgeGrid_;
   std::vector<int> incidentStart_, incident_;  ///< edges of each particle (compressed rows)
   // pairsOf's lists. Without edges: the particles q != p whose boxes meet p's, ascending. A list
-  // is good while its generation equals generation_, which every index() advances; a re-filed box
-  // clears the generations of the particles it met before and meets now (their lists may have
-  // lost or gained it). A list fills one cache line, its generation included: the event loop
+  // is good while its generation equals generation_ (or generation_ | kUnread, made by keepAll
+  // and not read yet), which every index() advances; a re-filed box of particle p takes p in or
+  // out of the good lists of the particles it met before or meets now (refileInLists) and
+  // forgets p's own list. A list fills one cache line, its generation included: the event loop
   // reads thousands a step in no particular order, and with a heap vector per particle (and the
   // generations apart) each read cost three cache misses.
   mutable std::vector<KeptList> kept_;               ///< N, made at pairsOf's first call
