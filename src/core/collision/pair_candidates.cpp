@@ -105,7 +105,8 @@ void PairCandidates::build(const Scene& scene, const VecX& qs, const VecX& qe, d
 
 void PairCandidates::index() {
   // Every list made before is stale now. Generation 0 means "none": at the wrap (after 2^31
-  // indexings, below keepAll's kUnread bit) the lists are forgotten outright, so no old list can pass for a new one.
+  // indexings, below keepAll's kUnread bit) the lists are forgotten outright, so no old list can
+  // pass for a new one.
   if (++generation_ == kUnread) {
     for (KeptList& list : kept_) list.generation = 0;
     generation_ = 1;

@@ -278,8 +278,9 @@ class PairCandidates {
   // boxes meet against those edges.
   mutable std::vector<std::vector<uint64_t>> keptKeys_;  ///< N, made at pairsOf's first call
   mutable std::vector<int> keptScratch_;             ///< scratch: a list being made
-  /// Lists pairsOf read since the last build, each once (made one by one, or made by keepAll and
-  /// read for the first time: such a list carries kUnread in its generation until then).
+  /// Lists pairsOf read since the last build: each list made one by one (again if it was
+  /// forgotten and made anew), and each made by keepAll at its first read (it carries kUnread in
+  /// its generation until then); a list read again while good does not count.
   mutable long listsRead_ = 0;
   long listsReadBefore_ = 0;  ///< listsRead_ at the last build: the last step's (keepsAllNext)
   /// The generation bit of a list keepAll made and pairsOf has not read yet (generation_ stays below it).
