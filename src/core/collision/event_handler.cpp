@@ -63,7 +63,7 @@ Status EventHandler::handle(const Scene& scene, const State& start, State& state
   long processed = 0;
   changed_.clear();
   while (!heap_.empty()) {
-    std::pop_heap(heap_.begin(), heap_.end(), later);
+    std::pop_heap(heap_.begin(), heap_.end(), Later{});
     const Event e = heap_.back();
     heap_.pop_back();
     if (!stale(scene, e)) {
@@ -155,7 +155,7 @@ Status EventHandler::detectAll(const Scene& scene, StepContext& ctx) {
 void EventHandler::pushEvents(std::vector<Event>& events) {
   for (const Event& e : events) {
     heap_.push_back(e);
-    std::push_heap(heap_.begin(), heap_.end(), later);
+    std::push_heap(heap_.begin(), heap_.end(), Later{});
   }
   events.clear();
 }
