@@ -4,13 +4,39 @@ mean ms/step over the steps that all engines ran (runs may stop at the time limi
 steps), its first and last block, and the shares in zones and at rest after its last block.
 
     python3 bench/piles_table.py blocks.csv
+    python3 bench/piles_table.py --blocks blocks.csv   # also every block, engines side by side
+
+With --blocks, each run's blocks follow its row: ms/step per block and engine, then each
+engine's block over its first, which is what a cost that creeps as a pile forms shows (the
+engines' own ratio to their first block, so that a scene whose contacts grow is told apart from a
+method whose cost does).
 """
 import csv
 import sys
 from collections import OrderedDict
 
 
-def main(path):
+def block_rows(by_engine, engines, common):
+    """Every block up to `common` steps, engines side by side, and each block over the first."""
+    print("  %-11s" % "steps" + "".join(" | %-25s" % e for e in engines if e in by_engine))
+    firsts = {e: float(rows[0]["ms_per_step"]) for e, rows in by_engine.items()}
+    for k, row in enumerate(next(iter(by_engine.values()))):
+        if int(row["last_step"]) > common:
+            break
+        line = "  %-11s" % ("%s-%s" % (row["first_step"], row["last_step"]))
+        for e in engines:
+            rows = by_engine.get(e)
+            if rows is None:
+                continue
+            if k >= len(rows):
+                line += " | %-25s" % "-"
+                continue
+            ms = float(rows[k]["ms_per_step"])
+            line += " | %-25s" % ("%9.2f (%5.1f x first)" % (ms, ms / firsts[e] if firsts[e] > 0 else float("nan")))
+        print(line)
+
+
+def main(path, blocks=False):
     runs = OrderedDict()  # (scene, n, seed) -> engine -> [rows]
     engines = []
     with open(path, newline="") as f:
@@ -61,8 +87,15 @@ def main(path):
                 shares.append("%.0f%%" % (100 * float(by_engine[e][-1]["rest_share"])))
         line += " | " + " / ".join(shares)
         print(line)
+        if blocks:
+            block_rows(by_engine, engines, common)
     return 0
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1]))
+    args = sys.argv[1:]
+    per_block = "--blocks" in args
+    args = [a for a in args if a != "--blocks"]
+    if len(args) != 1:
+        sys.exit("usage: python3 bench/piles_table.py [--blocks] blocks.csv")
+    sys.exit(main(args[0], per_block))
