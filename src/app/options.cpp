@@ -134,7 +134,7 @@ void define(CLI::App& app, Options& o, Given& g) {
        "reproduce the reference's own formulas where they differ from exact mathematics (the particle-edge "
        "approach quintic); needed to write or grade files for the course (README, \"Course compatibility\")");
   flag("--no-sleep", o.noSleep, run,
-       "default mode: particles at rest do not sleep (by default a particle still for 60 steps sleeps, costing "
+       "default mode: particles at rest do not sleep (by default a particle still for 30 steps sleeps, costing "
        "nothing, until a contact or a moving neighbour wakes it; --compat never sleeps)");
   flag("--verify", o.verify, run,
        "after every step check that no pair is left colliding and the state is finite; report violations and "

@@ -96,9 +96,9 @@ TEST(Stats, NewtonIterationsOfTheImplicitIntegrators) {
 }
 
 // A disk resting on the floor (COR 0: nothing bounces) is still from the first step, so it falls
-// asleep at the end of step kStepsToSleep = 60 (src/core/collision/sleepers.h) and stays asleep;
+// asleep at the end of step kStepsToSleep = 30 (src/core/collision/sleepers.h) and stays asleep;
 // with --no-sleep, or --compat, nothing ever sleeps.
-TEST(Stats, AsleepCountsTheRestingDiskFromItsSixtiethStep) {
+TEST(Stats, AsleepCountsTheRestingDiskFromItsThirtiethStep) {
   const std::string scene = scratch("rest.xml"), path = scratch("rest.csv");
   {
     std::ofstream out(scene);
@@ -116,7 +116,7 @@ TEST(Stats, AsleepCountsTheRestingDiskFromItsSixtiethStep) {
     std::remove(path.c_str());
     ASSERT_EQ(csv.rows.size(), 101u) << mode;
     for (size_t r = 0; r < csv.rows.size(); ++r)
-      EXPECT_EQ(csv.at(r, "asleep"), (*mode == 0 && r >= 60) ? 1.0 : 0.0) << mode << " row " << r;
+      EXPECT_EQ(csv.at(r, "asleep"), (*mode == 0 && r >= 30) ? 1.0 : 0.0) << mode << " row " << r;
   }
   std::remove(scene.c_str());
 }
