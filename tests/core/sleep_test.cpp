@@ -266,11 +266,11 @@ TEST(Sleep, ADiskSlidingSlowerThanTheSleepSpeedStillNeverSleeps) {
 }
 
 // A ball of radius 1 thrown up at 0.5 m/s with dt 5e-4: around the top of its flight it moves
-// at most 30 g h^2 = 7e-5 m per step and 1.1e-3 m in all over the 30 steps to either side of the
-// top (a still run, kStepsToSleep, is 30 steps), both within the sleep
-// distance (3e-3 m), so stillness alone would put it to sleep in mid-air. Its velocity changes by
-// every kick of gravity, though (it is not supported), so it flies on: the symplectic Euler
-// parabola y_k = k h v0 - g h^2 k (k + 1) / 2, exactly.
+// at most 30 g h^2 = 7e-5 m per step and g (30 h)^2 / 2 = 1.1e-3 m in all over the kStepsToSleep
+// = 30 steps after it, both within the sleep distance (3e-3 m), so stillness alone would put it
+// to sleep in mid-air. Its velocity changes by every kick of gravity, though (it is not
+// supported), so it flies on: the symplectic Euler parabola y_k = k h v0 - g h^2 k (k + 1) / 2,
+// exactly.
 TEST(Sleep, ABallAtTheTopOfItsFlightDoesNotSleep) {
   for (const char* type : kEventTypes) {
     SCOPED_TRACE(type);
