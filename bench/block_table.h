@@ -1,8 +1,9 @@
 // The per-block report both benchmarks print (fosssim-bench and fosssim-box2d-pile), in one format
 // so that their tables line up: wall time per step of each block of 100 steps, and what the scene
-// was doing at the time (particles in failsafe zones, particles at rest, Box2D's bodies awake).
-// An average over a run hides a cost that creeps as a pile forms, and a pile that costs nothing
-// once it rests; the blocks show both.
+// was doing at the time (particles in failsafe zones, particles at rest, Box2D's bodies awake,
+// disks touching). An average over a run hides a cost that creeps as a pile forms, and a pile
+// that costs nothing once it rests; the blocks show both, and the touching pairs tell a cost that
+// grows with the scene's contacts (any engine's) from one that grows with the method.
 #pragma once
 
 #include "bench_scenes.h"
@@ -23,6 +24,7 @@ struct Block {
   double inZones = -1;        ///< FOSSSim: particles in failsafe zones at the ends of steps, mean share
   double atRest = 0;          ///< share of the movable particles at rest after the block's last step (atRestShare)
   double awake = -1;          ///< share of the particles (bodies) awake after the block's last step
+  long touching = -1;         ///< pairs of disks touching after the block's last step (touchingPairs)
 };
 
 /// The speed below which a particle counts as at rest: a thousandth of its radius per step (0.01 m/s
@@ -34,6 +36,19 @@ double restSpeed(double radius, double dt);
 /// The share of the scene's movable particles whose speed in `v` (2 entries per particle) is below
 /// restSpeed. Not timed by the benchmarks (computed between blocks).
 double atRestShare(const Scene& scene, const VecX& v);
+
+/// Disks closer than this fraction of their radius sum beyond touching count as touching. The
+/// engines rest differently: FOSSSim's contacts end at a gap of a few ulps, Box2D's overlap by up
+/// to its linear slop (0.005 m, a tenth of the benchmark's radius); both are within it, while a
+/// disk falling towards another is not until it is about to land.
+constexpr double kTouchingGap = 0.01;
+
+/// The pairs of distinct particles i < j of `x` (2 entries per particle) whose centres are at most
+/// (r_i + r_j)(1 + kTouchingGap) apart: the scene's contacts, measured the same way for every
+/// engine from positions alone. Non-finite positions, and those more than 10^15 cells of
+/// 2 (1 + kTouchingGap) max r from the origin (no benchmark scene's), touch nothing. Not timed by
+/// the benchmarks.
+long touchingPairs(const Scene& scene, const VecX& x);
 
 /// What names a run in the tables.
 struct RunLabel {

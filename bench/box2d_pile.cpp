@@ -115,7 +115,7 @@ RunResult run(const BenchScene& s, long steps, double timeLimit = 0) {
   std::unique_ptr<b2World> world = buildWorld(s, bodies);
   RunResult out;
   const float dt = static_cast<float>(s.scene.dt);
-  fosssim::VecX v(2 * bodies.size());
+  fosssim::VecX v(2 * bodies.size()), x(2 * bodies.size());
   auto blockStart = std::chrono::steady_clock::now();
   for (long k = 0; k < steps; ++k) {
     world->Step(dt, kVelocityIterations, kPositionIterations);
@@ -129,12 +129,15 @@ RunResult run(const BenchScene& s, long steps, double timeLimit = 0) {
       b.msPerStep = ms / static_cast<double>(b.last - b.first + 1);
       int awake = 0;
       for (size_t i = 0; i < bodies.size(); ++i) {
-        const b2Vec2 u = bodies[i]->GetLinearVelocity();
+        const b2Vec2 u = bodies[i]->GetLinearVelocity(), p = bodies[i]->GetPosition();
         v[2 * i] = u.x;
         v[2 * i + 1] = u.y;
+        x[2 * i] = p.x;
+        x[2 * i + 1] = p.y;
         awake += bodies[i]->IsAwake() ? 1 : 0;
       }
       b.atRest = fosssim::bench::atRestShare(s.scene, v);
+      b.touching = fosssim::bench::touchingPairs(s.scene, x);
       b.awake = bodies.empty() ? 0 : static_cast<double>(awake) / static_cast<double>(bodies.size());
       out.blocks.push_back(b);
       out.steps = k + 1;

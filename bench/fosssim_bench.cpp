@@ -188,6 +188,7 @@ Figures runScene(const Options& o, const std::string& kind, int n) {
           // Awake: not asleep after the block's last step (the default mode's sleepers; Box2D's
           // column of the same name).
           b.awake = 1.0 - static_cast<double>(st.asleep) / s.scene.numParticles();
+          b.touching = touchingPairs(s.scene, state.x);
         }
         blockZone = 0;
         blockFailsafe = 0;

@@ -6,10 +6,11 @@ steps), its first and last block, and the shares in zones and at rest after its 
     python3 bench/piles_table.py blocks.csv
     python3 bench/piles_table.py --blocks blocks.csv   # also every block, engines side by side
 
-With --blocks, each run's blocks follow its row: ms/step per block and engine, then each
-engine's block over its first, which is what a cost that creeps as a pile forms shows (the
-engines' own ratio to their first block, so that a scene whose contacts grow is told apart from a
-method whose cost does).
+With --blocks, each run's blocks follow its row: ms/step per block and engine, each engine's
+block over its first, which is what a cost that creeps as a pile forms shows (the engines' own
+ratio to their first block), and the pairs of disks touching after the block where the CSV has
+them: a cost that grows with the scene's contacts, in every engine, is told apart from one that
+grows with the method.
 """
 import csv
 import sys
@@ -18,7 +19,7 @@ from collections import OrderedDict
 
 def block_rows(by_engine, engines, common):
     """Every block up to `common` steps, engines side by side, and each block over the first."""
-    print("  %-11s" % "steps" + "".join(" | %-25s" % e for e in engines if e in by_engine))
+    print("  %-11s" % "steps" + "".join(" | %-35s" % (e + ", touching") for e in engines if e in by_engine))
     firsts = {e: float(rows[0]["ms_per_step"]) for e, rows in by_engine.items()}
     for k, row in enumerate(next(iter(by_engine.values()))):
         if int(row["last_step"]) > common:
@@ -29,10 +30,12 @@ def block_rows(by_engine, engines, common):
             if rows is None:
                 continue
             if k >= len(rows):
-                line += " | %-25s" % "-"
+                line += " | %-35s" % "-"
                 continue
             ms = float(rows[k]["ms_per_step"])
-            line += " | %-25s" % ("%9.2f (%5.1f x first)" % (ms, ms / firsts[e] if firsts[e] > 0 else float("nan")))
+            touching = rows[k].get("touching_pairs") or "-"  # older CSVs have no such column
+            line += " | %-35s" % ("%9.2f (%5.1f x first) %9s" % (ms, ms / firsts[e] if firsts[e] > 0 else float("nan"),
+                                                                touching))
         print(line)
 
 
