@@ -34,7 +34,7 @@
 // is measured against the kick, the velocity this step's forces gave the particle (Sleepers::
 // kick): a particle resting on a pile gains a kick every step and its contacts take it back. On
 // a jammed pile that is the answer Gauss-Seidel was creeping towards, reached without the
-// thousands of sweeps a jammed pile needs (README, Performance > Dense piles). What it costs the
+// thousands of sweeps a jammed pile needs (docs/performance-history.md). What it costs the
 // physics: a held particle loses at most a kick of speed (g h under gravity, which vanishes with
 // the step like the integrator's own error), and only if it was slower than a quarter of a kick
 // to begin with, so nothing that flows or slides is held; without forces (kick 0) only a particle
@@ -93,8 +93,8 @@ constexpr long kZoneUpdatesPerRow = 100;
 /// full budget: pile-rest 2,500 (200 steps) 6.8 -> 3.5 s, pile-low-cor0.5 2,500 (600 steps)
 /// 23 -> 11 ms/step, rain 800-3,000 (400 steps) 2.8-5.3 -> 1.9-4.0 ms/step; the price: those
 /// piles end 1-4% higher in energy (less settled within the step's budget). 1/100 gained little
-/// more (3.1 s). (Figures of the session's changes together, what they cost included: README,
-/// Performance > Dense piles.)
+/// more (3.1 s). (Figures of the session's changes together, what they cost included:
+/// docs/performance-history.md.)
 constexpr long kJammedBudgetDivisor = 10;
 
 /// With holding on, a zone's first solve in a step solves with this fraction of the budget per
@@ -102,8 +102,7 @@ constexpr long kJammedBudgetDivisor = 10;
 /// little every step); what a short one leaves is settled by holding the particles it has brought
 /// to rest and by the solves of the contacts that come back. With 1/10, random zones gained
 /// kinetic energy (ContactPhysicsRandom.KineticEnergyNeverGrows: a warm start the shorter solve
-/// had not taken back); 1/5 keeps every test. Measured with the hold: README, Performance > Dense
-/// piles.
+/// had not taken back); 1/5 keeps every test. Measured with the hold: docs/performance-history.md.
 constexpr long kFirstSolveBudgetDivisor = 5;
 
 /// With holding on, a zone against an obstacle halves its budget per row at each of its first

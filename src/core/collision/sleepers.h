@@ -57,7 +57,7 @@ constexpr int kStepsToSleep = 30;
 
 /// "Still": moving less than this fraction of the particle's radius per step (and in all over the
 /// kStepsToSleep steps). A settled pile jitters by a few 10^-3 of its radius per step while its
-/// failsafe stops and restarts neighbours (README, Performance > Dense piles): at 10^-3 the
+/// failsafe stops and restarts neighbours (docs/performance-history.md): at 10^-3 the
 /// benchmark's resting pile (pile-rest, 2,500 disks) was still 27% awake after 1,000 steps and
 /// cost 12 ms/step; at 2 10^-3, 1.3% and 1.7 ms/step; at 3 10^-3 it was asleep by step 800 and
 /// cost 0.35-0.43 ms/step from there (fosssim-bench --scenes pile-rest --sizes 2500 --steps 1000
