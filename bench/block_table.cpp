@@ -97,12 +97,12 @@ bool appendBlocksCsv(const std::string& path, const RunLabel& run, const Block* 
   if (!csv) return false;
   if (fresh) csv << "engine,scene,n,seed,first_step,last_step,ms_per_step,failsafe_ms_per_step,zone_share,rest_share,awake_share,touching_pairs\n";
   // Figures an engine does not have stay empty.
-  const auto optional = [](double x) { return x < 0 ? std::string() : std::to_string(x); };
+  const auto optional = [](auto x) { return x < 0 ? std::string() : std::to_string(x); };
   for (int b = 0; b < count; ++b) {
     const Block& k = blocks[b];
     csv << run.engine << "," << run.scene << "," << run.particles << "," << run.seed << "," << k.first << "," << k.last
         << "," << k.msPerStep << "," << optional(k.failsafeMs) << "," << optional(k.inZones) << "," << k.atRest << ","
-        << optional(k.awake) << "," << (k.touching < 0 ? std::string() : std::to_string(k.touching)) << "\n";
+        << optional(k.awake) << "," << optional(k.touching) << "\n";
   }
   return static_cast<bool>(csv.flush());
 }

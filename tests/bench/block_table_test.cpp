@@ -73,6 +73,8 @@ TEST(TouchingPairs, CountsGapsWithinTheFractionAndOverlapsOnly) {
   EXPECT_EQ(bench::touchingPairs(sizes.scene, sizes.x), 2);
 }
 
+// NaN and infinite coordinates, and (as documented) one beyond 10^15 cells from the origin, are
+// left out; the two finite disks near the origin still touch.
 TEST(TouchingPairs, NonFinitePositionsTouchNothing) {
   Disks d;
   d.add(0, 0, 1.0);
