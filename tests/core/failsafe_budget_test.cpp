@@ -287,5 +287,41 @@ TEST(ContactPhysics, AZoneAgainstAnObstacleHalvesItsBudgetAfterEachOfItsFirstTwo
   }
 }
 
+// 8j. A zone's first solve is budgeted on its own rows, not on every row of the step. The five-disk
+// column of 8i (all moving down at one kick, no sleepers, 40 updates per row, holding on) is a
+// zone solved first at T = 0.1; its rows need about 1,150 updates from cold, so the solve spends
+// its whole budget, 40 / 5 x max(5, 8) = 64 (8i). A column of 20 disks 10 m away, its own zone,
+// solved first at t = 0, puts 20 rows into the projector both zones share: the near column's first
+// solve must still spend 64, as it does alone (the control). Budgeted on the projector's rows, it
+// spent 8 x 25 = 200: a small zone beside a large one paid the large one's budget (on a resting
+// pile of 10^5 disks, a few such failures a step made most of the failsafe's work).
+TEST(ContactPhysics, AZonesFirstSolveIsBudgetedOnItsOwnRows) {
+  for (const bool farColumn : {false, true}) {
+    SCOPED_TRACE(farColumn ? "beside a 20-disk column" : "alone (control)");
+    TestScene s = restingColumn(5);
+    if (farColumn)
+      for (int k = 0; k < 20; ++k) addBody(s, 1.0, Vec2(10.0, 0.05 + 0.1 * k), Vec2::Zero(), 0.05);
+    for (int p = 0; p < s.scene.numParticles(); ++p) at(s.state.v, p) = Vec2(0.0, -9.81 * 0.01);
+    const double h = s.scene.dt;
+    StepZones step(s, /*updatesPerRow=*/40, /*hold=*/true);
+    VecX v = s.state.v;
+    std::vector<int> changed;
+    auto solveColumnFrom = [&](int bottom, double T) {
+      const int zone = step.zones.absorb(s.scene, step.motion, step.candidates,
+                                         pairKey(bottom, PairKind::ParticleHalfPlane, 0), T, h);
+      EXPECT_GE(zone, 0);
+      StepStats stats;
+      step.zones.resolve(s.scene, step.motion, step.candidates, zone, T, h, v, changed, stats);
+      EXPECT_EQ(stats.failsafeRounds, 1);
+      return stats.zoneUpdates;
+    };
+    if (farColumn) {
+      EXPECT_EQ(solveColumnFrom(5, 0.0), 8 * 20);  // its own first solve: 20 rows
+      EXPECT_NE(step.zones.zoneOf(5), step.zones.zoneOf(0));
+    }
+    EXPECT_EQ(solveColumnFrom(0, 0.1), 64);
+  }
+}
+
 }  // namespace
 }  // namespace fosssim::testing

@@ -254,6 +254,7 @@ class ContactZones {
   std::vector<char> rigid_;                ///< per root: moving rigidly for the rest of the step
   std::vector<char> immovable_;            ///< per root: a fixed particle or a half-plane among its rows
   std::vector<double> rateScale_;          ///< per root: see rateScale()
+  std::vector<int> rowCount_;              ///< per root: the projector rows set for its contacts in this step
   std::vector<int> frozen_;                ///< per root: its first members_ frozen at rest (immovable and rigid)
   std::vector<char> stopped_;              ///< N: stopped for the rest of the step: kJam, kHeld or 0
   std::vector<int> roots_;                 ///< every particle that has been a root this step

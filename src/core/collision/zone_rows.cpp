@@ -97,6 +97,7 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
   }
   const double* last = lastImpulse_.find(key);
   rowOf_.insert(key, projector_.addRow(row, last ? *last : 0.0, z));
+  ++rowCount_[z];
   requeried_.push_back(0);
   broughtForward_.push_back(0);
   unsolved_.push_back(key);
