@@ -1,5 +1,6 @@
 #include "fosssim/math/contact_projector.h"
 
+#include <algorithm>
 #include <cmath>
 
 // Forces inlining where the compiler's own choice was measured to cost (GCC and Clang).
@@ -20,8 +21,7 @@ void ContactProjector::reset(int capacity) {
   row_.clear();
   replaced_.clear();
   queued_.clear();
-  work_.clear();
-  head_ = 0;
+  head_ = tail_ = 0;
   changed_.clear();
   updates_ = 0;
 }
@@ -95,13 +95,41 @@ FOSSSIM_ALWAYS_INLINE inline void ContactProjector::apply(int k, double lambda) 
 void ContactProjector::queue(int k) {
   if (queued_[k]) return;
   queued_[k] = 1;
-  work_.push_back(k);
+  makeRoom(1);
+  work_[tail_++] = k;
 }
 
+// The queue is a window [head_, tail_) sliding along work_. Each row is queued at most once, so
+// the window holds at most rows() entries; sliding it back to the front when more was consumed
+// than it holds keeps work_ within about twice the rows however long a solve runs (a pile's
+// first solve makes a million updates at N = 10^5, and the slots it consumed used to stay).
+void ContactProjector::makeRoom(size_t n) {
+  if (tail_ + n <= work_.size()) return;
+  if (head_ >= tail_ - head_) {
+    std::copy(work_.begin() + static_cast<long>(head_), work_.begin() + static_cast<long>(tail_), work_.begin());
+    tail_ -= head_;
+    head_ = 0;
+    if (tail_ + n <= work_.size()) return;
+  }
+  work_.resize(2 * (tail_ + n));
+}
+
+// Without a branch per row: whether a row is queued already is a coin toss in a pile. The slot
+// past the queue's end is written either way and kept only when the row is new to the queue
+// (the order is queue()'s).
 void ContactProjector::queueRowsOf(int slot, int except) {
-  body_[slot].forEachRow([&](int k) {
-    if (k != except) queue(k);
+  const Body& body = body_[slot];
+  makeRoom(static_cast<size_t>(body.rowCount));
+  int* work = work_.data();
+  char* queued = queued_.data();
+  size_t tail = tail_;
+  body.forEachRow([&](int k) {
+    const bool add = (k != except) & (queued[k] == 0);
+    work[tail] = k;
+    queued[k] = static_cast<char>(queued[k] | add);
+    tail += add;
   });
+  tail_ = tail;
 }
 
 // One Gauss-Seidel step on row k (ZoneProjector's, in velocity form): w = G_k v, then
@@ -109,7 +137,7 @@ void ContactProjector::queueRowsOf(int slot, int except) {
 // |min(A_kk lambda, w)| / (|G_k| V) is zero exactly when the row is satisfied and complementary.
 bool ContactProjector::solve(const double* groupScale, double factor, double tolerance, long maxUpdates) {
   long updates = 0;
-  while (head_ < work_.size()) {
+  while (head_ < tail_) {
     const int k = work_[head_++];
     Row& row = row_[k];
     queued_[k] = 0;
@@ -130,19 +158,17 @@ bool ContactProjector::solve(const double* groupScale, double factor, double tol
     const double lambda = row.lambda - w / row.diag;
     apply(k, 0.0 >= lambda || std::isnan(lambda) ? 0.0 : lambda);
   }
-  work_.clear();
-  head_ = 0;
+  head_ = tail_ = 0;
   updates_ += updates;
   return true;
 }
 
 void ContactProjector::takeQueued(std::vector<int>& out) {
-  for (size_t q = head_; q < work_.size(); ++q) {
+  for (size_t q = head_; q < tail_; ++q) {
     queued_[work_[q]] = 0;
     out.push_back(work_[q]);
   }
-  work_.clear();
-  head_ = 0;
+  head_ = tail_ = 0;
 }
 
 // A_kk = sum over the row's distinct bodies of w_b |sum of that body's coefficients|^2 (a body

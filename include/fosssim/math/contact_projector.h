@@ -67,12 +67,12 @@ class ContactProjector {
   template <class Pred>
   void unqueueIf(Pred&& dropBody) {
     size_t kept = head_;
-    for (size_t q = head_; q < work_.size(); ++q) {
+    for (size_t q = head_; q < tail_; ++q) {
       const int k = work_[q];
       if (moves(k, dropBody)) queued_[k] = 0;
       else work_[kept++] = k;
     }
-    work_.resize(kept);
+    tail_ = kept;
   }
   /// Moves every queued row, in queue order, out of the queue and onto `out` (to be queued again
   /// with queueRow when its problem is solved).
@@ -90,7 +90,7 @@ class ContactProjector {
     return false;
   }
   /// Rows waiting in the queue.
-  int queuedRows() const { return static_cast<int>(work_.size() - head_); }
+  int queuedRows() const { return static_cast<int>(tail_ - head_); }
 
   const Vec2& velocity(int b) const { return velocity_[slot_[b]]; }
   /// Makes an immovable body b movable again, with inverse mass w and velocity v, and queues its
@@ -136,6 +136,7 @@ class ContactProjector {
   };
   void apply(int k, double lambda);
   void queue(int k);
+  void makeRoom(size_t n);  ///< room in work_ for n more queued rows
   double diagonal(const ConstraintRow& r) const;  ///< A_kk of a row whose bodies are slots
   void queueRowsOf(int slot, int except);
 
@@ -148,8 +149,8 @@ class ContactProjector {
   /// which every Gauss-Seidel update reads: this is read once a step (totalImpulse).
   std::vector<double> replaced_;
   std::vector<char> queued_;  ///< per row: in work_ (apart from the rows: queueing touches only these bytes)
-  std::vector<int> work_;     ///< FIFO of row indices (head_ marks the front)
-  size_t head_ = 0;
+  std::vector<int> work_;     ///< FIFO of row indices: work_[head_, tail_) (the rest is room)
+  size_t head_ = 0, tail_ = 0;
   std::vector<int> changed_;  ///< body slots changed since the last takeChanged
   long updates_ = 0;          ///< see updates()
 };
