@@ -103,8 +103,7 @@ void ContactProjector::queue(int k) {
 // the window holds at most rows() entries; sliding it back to the front when more was consumed
 // than it holds keeps work_ within about twice the rows however long a solve runs (a pile's
 // first solve makes a million updates at N = 10^5, and the slots it consumed used to stay).
-void ContactProjector::makeRoom(size_t n) {
-  if (tail_ + n <= work_.size()) return;
+void ContactProjector::growRoom(size_t n) {
   if (head_ >= tail_ - head_) {
     std::copy(work_.begin() + static_cast<long>(head_), work_.begin() + static_cast<long>(tail_), work_.begin());
     tail_ -= head_;
@@ -117,7 +116,7 @@ void ContactProjector::makeRoom(size_t n) {
 // Without a branch per row: whether a row is queued already is a coin toss in a pile. The slot
 // past the queue's end is written either way and kept only when the row is new to the queue
 // (the order is queue()'s).
-void ContactProjector::queueRowsOf(int slot, int except) {
+FOSSSIM_ALWAYS_INLINE inline void ContactProjector::queueRowsOf(int slot, int except) {
   const Body& body = body_[slot];
   makeRoom(static_cast<size_t>(body.rowCount));
   int* work = work_.data();

@@ -136,7 +136,11 @@ class ContactProjector {
   };
   void apply(int k, double lambda);
   void queue(int k);
-  void makeRoom(size_t n);  ///< room in work_ for n more queued rows
+  /// Room in work_ for n more queued rows (growRoom: the rare case, slide or grow).
+  void makeRoom(size_t n) {
+    if (tail_ + n > work_.size()) growRoom(n);
+  }
+  void growRoom(size_t n);
   double diagonal(const ConstraintRow& r) const;  ///< A_kk of a row whose bodies are slots
   void queueRowsOf(int slot, int except);
 
