@@ -8,6 +8,15 @@ namespace {
 
 Vec2 perp(const Vec2& a) { return Vec2(-a.y(), a.x()); }
 
+// Moves `from`'s elements to the end of `to`. Most merges bring one particle (a pile's zone
+// takes its neighbours one by one): push_back, where vector::insert called memmove for each, which
+// took 3% of rain's time at N = 10^4.
+void append(std::vector<int>& to, std::vector<int>& from) {
+  if (from.size() == 1) to.push_back(from[0]);
+  else to.insert(to.end(), from.begin(), from.end());
+  from.clear();
+}
+
 }  // namespace
 
 void ContactZones::reset(int n) {
@@ -75,10 +84,8 @@ int ContactZones::unite(int a, int b) {
   if (a == b) return a;
   if (members_[a].size() < members_[b].size()) std::swap(a, b);
   parent_[b] = a;
-  members_[a].insert(members_[a].end(), members_[b].begin(), members_[b].end());
-  members_[b].clear();
-  holdable_[a].insert(holdable_[a].end(), holdable_[b].begin(), holdable_[b].end());
-  holdable_[b].clear();
+  append(members_[a], members_[b]);
+  append(holdable_[a], holdable_[b]);
   metAgain_[a] = std::max(metAgain_[a], metAgain_[b]);
   solves_[a] = std::max(solves_[a], solves_[b]);
   rigid_[a] = rigid_[a] || rigid_[b];
