@@ -8,13 +8,12 @@ namespace {
 
 Vec2 perp(const Vec2& a) { return Vec2(-a.y(), a.x()); }
 
-// Moves `from`'s elements to the end of `to`. Most merges bring one particle (a pile's zone
-// takes its neighbours one by one): push_back, where vector::insert called memmove for each, which
-// took 3% of rain's time at N = 10^4.
-void append(std::vector<int>& to, std::vector<int>& from) {
-  if (from.size() == 1) to.push_back(from[0]);
-  else to.insert(to.end(), from.begin(), from.end());
-  from.clear();
+// Appends list [first, last] (linked through next) to list [head, tail]; either may be empty (-1).
+void splice(int& head, int& tail, int first, int last, std::vector<int>& next) {
+  if (first < 0) return;
+  if (head < 0) head = first;
+  else next[tail] = first;
+  tail = last;
 }
 
 }  // namespace
@@ -22,22 +21,13 @@ void append(std::vector<int>& to, std::vector<int>& from) {
 void ContactZones::reset(int n) {
   if (static_cast<int>(parent_.size()) != n) {
     parent_.assign(n, -1);
-    members_.assign(n, {});
-    holdable_.assign(n, {});
-    metAgain_.assign(n, 0);
-    solves_.assign(n, 0);
-    rigid_.assign(n, 0);
-    immovable_.assign(n, 0);
+    record_.assign(n, ZoneRecord{});
+    nextMember_.assign(n, -1);
+    nextHoldable_.assign(n, -1);
     rateScale_.assign(n, 0.0);
-    frozen_.assign(n, 0);
-    rowCount_.assign(n, 0);
     stopped_.assign(n, 0);
   } else {
-    for (int r : roots_) {
-      for (int p : members_[r]) parent_[p] = -1, stopped_[p] = 0;
-      members_[r].clear();
-      holdable_[r].clear();
-    }
+    for (int r : roots_) forEachMember(r, [&](int p) { parent_[p] = -1, stopped_[p] = 0; });
   }
   roots_.clear();
   // The impulses of this step's contacts start the next step's (warm start; addRow): each one's
@@ -62,18 +52,17 @@ void ContactZones::reset(int n) {
 int ContactZones::join(int p) {
   if (parent_[p] >= 0) return root(p);
   parent_[p] = p;
-  members_[p].assign(1, p);
+  ZoneRecord& zone = record_[p];
+  zone = ZoneRecord{};
+  zone.size = 1;
+  zone.first = zone.last = p;
+  nextMember_[p] = -1;
   // Whether p may ever be held in this step (its start speed is the step's; see holdResting).
-  holdable_[p].clear();
-  if (hold_ && sleepers_ && !(sleepers_->startSpeed(p) > kHeldStartFraction * sleepers_->kick(p)))
-    holdable_[p].push_back(p);
-  metAgain_[p] = 0;
-  solves_[p] = 0;
-  rigid_[p] = 0;
-  immovable_[p] = 0;
+  if (hold_ && sleepers_ && !(sleepers_->startSpeed(p) > kHeldStartFraction * sleepers_->kick(p))) {
+    zone.firstHoldable = zone.lastHoldable = p;
+    nextHoldable_[p] = -1;
+  }
   rateScale_[p] = 0;
-  frozen_[p] = 0;
-  rowCount_[p] = 0;
   roots_.push_back(p);
   return p;
 }
@@ -82,16 +71,19 @@ int ContactZones::join(int p) {
 int ContactZones::unite(int a, int b) {
   a = root(a), b = root(b);
   if (a == b) return a;
-  if (members_[a].size() < members_[b].size()) std::swap(a, b);
+  if (record_[a].size < record_[b].size) std::swap(a, b);
   parent_[b] = a;
-  append(members_[a], members_[b]);
-  append(holdable_[a], holdable_[b]);
-  metAgain_[a] = std::max(metAgain_[a], metAgain_[b]);
-  solves_[a] = std::max(solves_[a], solves_[b]);
-  rigid_[a] = rigid_[a] || rigid_[b];
-  immovable_[a] = immovable_[a] || immovable_[b];
+  ZoneRecord &za = record_[a], &zb = record_[b];
+  splice(za.first, za.last, zb.first, zb.last, nextMember_);
+  splice(za.firstHoldable, za.lastHoldable, zb.firstHoldable, zb.lastHoldable, nextHoldable_);
+  za.size += zb.size;
+  zb.first = zb.last = zb.firstHoldable = zb.lastHoldable = -1;  // b is no root: its lists are a's
+  za.metAgain = std::max(za.metAgain, zb.metAgain);
+  za.solves = std::max(za.solves, zb.solves);
+  za.rigid = za.rigid || zb.rigid;
+  za.immovable = za.immovable || zb.immovable;
+  za.rowCount += zb.rowCount;
   rateScale_[a] = std::max(rateScale_[a], rateScale_[b]);
-  rowCount_[a] += rowCount_[b];
   return a;
 }
 
@@ -113,9 +105,9 @@ int ContactZones::take(const Scene& scene, const StepMotion& motion, int p, int 
   rateScale_[r] = std::max(rateScale_[r], motion.rate(p).norm());
   if (zone < 0) return r;
   // The count of the side that did not move rigidly, if one did (its contacts' record, not the raft's).
-  const int a = root(zone), movingCount = rigid_[a] ? metAgain_[r] : metAgain_[a];
+  const int a = root(zone), movingCount = record_[a].rigid ? record_[r].metAgain : record_[a].metAgain;
   const int merged = unite(a, r);
-  if (rigid_[merged] && immovable_[merged] && !rigidOnly_) resumeProjection(scene, merged, movingCount);
+  if (record_[merged].rigid && record_[merged].immovable && !rigidOnly_) resumeProjection(scene, merged, movingCount);
   return merged;
 }
 
@@ -132,8 +124,8 @@ int ContactZones::absorb(const Scene& scene, const StepMotion& motion, const Pai
   // settling it: that solve counted already.) Its fresh row (normal of now) replaces the old one.
   const int* known = rowOf_.find(key);
   const bool solved = known && *known < solvedRows_;
-  if (solved && !requeried_[*known]) ++metAgain_[root(zone)];
-  if (solved && metAgain_[root(zone)] > kMaxZoneProjections && immovable_[root(zone)] && !rigidOnly_) {
+  if (solved && !requeried_[*known]) ++record_[root(zone)].metAgain;
+  if (solved && record_[root(zone)].metAgain > kMaxZoneProjections && record_[root(zone)].immovable && !rigidOnly_) {
     // A jam against an obstacle: the contact keeps closing although it was solved for again and
     // again. Its particles stop for the rest of the step (obstacles from now on), not the zone.
     for (int k = 0; k < pair.count; ++k)
@@ -179,7 +171,8 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
                            double h, VecX& v, std::vector<int>& changed, StepStats& stats) {
   for (;;) {
     zone = root(zone);
-    if (!rigid_[zone] && !rigidOnly_ && (immovable_[zone] || metAgain_[zone] <= kMaxZoneProjections)) {
+    ZoneRecord& z = record_[zone];  // until growth below merges it
+    if (!z.rigid && !rigidOnly_ && (z.immovable || z.metAgain <= kMaxZoneProjections)) {
       ++stats.failsafeRounds;
       // A solve that runs out of its budget leaves safe velocities (no energy gained) that may
       // still let some contact close: that contact comes back as an event, counted as met again.
@@ -191,13 +184,13 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
       // 700-800: 19 first solves a step ended on budgets of some 20 updates for each of the
       // ~56,000 rows then in the projector, and first solves made 23.6 million updates a step).
       if (!waiting_.empty()) requeueWaiting(zone);
-      const int fresh = solves_[zone]++ == 0 ? rowCount_[zone]
-                                             : std::max(projector_.rows() - solvedRows_, projector_.queuedRows());
-      const bool jammed = metAgain_[zone] > kMaxZoneProjections;
-      const long divisor = jammed                        ? kJammedBudgetDivisor
-                           : solves_[zone] == 1 && hold_ ? kFirstSolveBudgetDivisor
-                           : immovable_[zone] && hold_   ? 1L << std::min(metAgain_[zone], kRepeatBudgetHalvings)
-                                                         : 1;
+      const int fresh =
+          z.solves++ == 0 ? z.rowCount : std::max(projector_.rows() - solvedRows_, projector_.queuedRows());
+      const bool jammed = z.metAgain > kMaxZoneProjections;
+      const long divisor = jammed                   ? kJammedBudgetDivisor
+                           : z.solves == 1 && hold_ ? kFirstSolveBudgetDivisor
+                           : z.immovable && hold_   ? 1L << std::min(z.metAgain, kRepeatBudgetHalvings)
+                                                    : 1;
       const long perRow = std::max(updatesPerRow_ / divisor, 1L);
       const long budget = perRow * std::max(fresh, 8);
       solvedRows_ = projector_.rows();
@@ -212,8 +205,8 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
       const bool solved = projector_.solve(rateScale_.data(), 1.0 / h, kZoneProjectionTolerance, budget);
       stats.zoneUpdates += projector_.updates() - before;
       if (!solved) {
-        if (immovable_[zone]) holdResting(scene, zone);
-        ++metAgain_[zone];
+        if (z.immovable) holdResting(scene, zone);
+        ++z.metAgain;
         // A failure is its zone's alone. This zone's rows still queued are dropped; those of
         // other zones waiting for their solves at this instant are set aside for those solves
         // (the worklist is shared: dropping them too sent their contacts back as events counted
@@ -239,9 +232,9 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
         takeUnsolved(scene, zone, [](uint64_t) {});  // this zone's settled; the rows set aside wait
       }
     } else {
-      rigid_[zone] = 1;
+      z.rigid = 1;
     }
-    if (rigid_[zone]) moveRigidly(scene, motion, zone, T);
+    if (z.rigid) moveRigidly(scene, motion, zone, T);
     moved_.clear();
     projector_.takeChanged(moved_);
     queue_.clear();
@@ -265,7 +258,7 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
     zone = grow(scene, motion, candidates, zone, T, h, added);
     // Growing may have merged a zone whose rows wait set aside (a pair can join without a row of
     // its own, at coincident centres): they are this zone's now, and only its solve settles them.
-    if (added == 0 && (rigid_[zone] || !waitingFor(zone))) return;
+    if (added == 0 && (record_[zone].rigid || !waitingFor(zone))) return;
   }
 }
 
@@ -278,14 +271,15 @@ bool ContactZones::solvesNow(uint64_t key) {
 
 // The members of a zone against an obstacle that its budget-ended solve has brought to rest stop
 // for the rest of the step (kHeldKickFraction, kHeldStartFraction). Only the members that started
-// the step slow enough are looked at (holdable_, in the order of members_; empty with holding off
+// the step slow enough are looked at (the zone's holdable list, in the order of its members; empty with holding off
 // or without sleepers), and those that stop leave the list for good: a fed pile's zone ends a
 // hundred solves a step on its budget, and scanning all its members each time took 5% of rain's
 // time at 10^4.
 void ContactZones::holdResting([[maybe_unused]] const Scene& scene, int zone) {
-  std::vector<int>& candidates = holdable_[zone];
-  size_t kept = 0;
-  for (int p : candidates) {
+  ZoneRecord& z = record_[zone];
+  int first = -1, last = -1;  // the list of those that stay holdable, relinked in order
+  for (int p = z.firstHoldable, next; p >= 0; p = next) {
+    next = nextHoldable_[p];
     // Stopped (held or jammed) for the rest of the step. Of isImmobile's other cases none can
     // hold for a member here: take() makes fixed and sleeping particles obstacles, not members,
     // and the zone solves by projection, so it is not rigid. (isImmobile's union-find walk took
@@ -293,13 +287,15 @@ void ContactZones::holdResting([[maybe_unused]] const Scene& scene, int zone) {
     if (stopped_[p]) continue;
     assert(!isImmobile(scene, p));
     if (projector_.velocity(p).norm() > kHeldKickFraction * sleepers_->kick(p)) {
-      candidates[kept++] = p;
+      nextHoldable_[p] = -1;
+      splice(first, last, p, p, nextHoldable_);
       continue;
     }
     stopped_[p] = kHeld;
     projector_.freeze(p, Vec2::Zero());
   }
-  candidates.resize(kept);
+  z.firstHoldable = first;
+  z.lastHoldable = last;
 }
 
 // A zone moving rigidly that meets an obstacle goes back to the projection (see the top of the
@@ -307,10 +303,11 @@ void ContactZones::holdResting([[maybe_unused]] const Scene& scene, int zone) {
 // their rows are queued for the zone's next solve. Stopped members (a jam or a hold of the zone
 // it merged with) stay stopped; the others are movable already (release() leaves them as they are).
 void ContactZones::resumeProjection(const Scene& scene, int zone, int metAgain) {
-  rigid_[zone] = 0;
-  metAgain_[zone] = metAgain;
-  for (int p : members_[zone])
+  record_[zone].rigid = 0;
+  record_[zone].metAgain = metAgain;
+  forEachMember(zone, [&](int p) {
     if (!stopped_[p]) projector_.release(p, 1.0 / scene.massOf(p), projector_.velocity(p));
+  });
 }
 
 // Whether rows set aside wait for zone `zone`'s solve.
@@ -339,48 +336,48 @@ void ContactZones::requeueWaiting(int zone) {
 // (a fixed particle or a half-plane among its contacts) stops. Either way its particles leave
 // the projection (frozen there at these velocities).
 void ContactZones::moveRigidly(const Scene& scene, const StepMotion& motion, int zone, double T) {
-  const std::vector<int>& members = members_[zone];
-  if (immovable_[zone]) {
+  ZoneRecord& z = record_[zone];
+  if (z.immovable) {
     // Members stay frozen, and unite() only appends: only the members that joined since the
     // last time are new. (Visiting all of them at every resolve of a zone of 20,000 particles,
     // which new contacts join all through a step, took 4% of rain's time at N = 10^5.)
-    for (size_t k = static_cast<size_t>(frozen_[zone]); k < members.size(); ++k)
-      projector_.freeze(members[k], Vec2::Zero());
-    frozen_[zone] = static_cast<int>(members.size());
+    for (int p = z.lastFrozen < 0 ? z.first : nextMember_[z.lastFrozen]; p >= 0; p = nextMember_[p])
+      projector_.freeze(p, Vec2::Zero());
+    z.lastFrozen = z.last;
     return;
   }
   double mass = 0;
   Vec2 c = Vec2::Zero(), vc = Vec2::Zero();
-  for (int p : members) {
+  forEachMember(zone, [&](int p) {
     const double m = scene.massOf(p);
     mass += m;
     c += m * motion.at(p, T);
     vc += m * projector_.velocity(p);
-  }
+  });
   c /= mass;
   vc /= mass;
   double angular = 0, inertia = 0;
-  for (int p : members) {
+  forEachMember(zone, [&](int p) {
     const double m = scene.massOf(p);
     const Vec2 r = motion.at(p, T) - c, u = projector_.velocity(p) - vc;
     angular += m * (r.x() * u.y() - r.y() * u.x());
     inertia += m * r.squaredNorm();
-  }
+  });
   const double w = inertia > 0.0 ? angular / inertia : 0.0;
-  for (int p : members) projector_.freeze(p, vc + w * perp(motion.at(p, T) - c));
+  forEachMember(zone, [&](int p) { projector_.freeze(p, vc + w * perp(motion.at(p, T) - c)); });
 }
 
 void ContactZones::sizes(StepStats& stats) const {
   for (int r : roots_) {
     if (parent_[r] != r) continue;
     ++stats.zones;
-    stats.rigidZones += rigid_[r];
-    stats.zoneParticles += static_cast<int>(members_[r].size());
-    for (int p : members_[r]) {
+    stats.rigidZones += record_[r].rigid;
+    stats.zoneParticles += record_[r].size;
+    forEachMember(r, [&](int p) {
       stats.jammedParticles += stopped_[p] == kJam;
       stats.heldParticles += stopped_[p] == kHeld;
-    }
-    stats.largestZone = std::max(stats.largestZone, static_cast<int>(members_[r].size()));
+    });
+    stats.largestZone = std::max(stats.largestZone, record_[r].size);
   }
   stats.failsafeUsed = stats.failsafeUsed || stats.zones > 0;
 }

@@ -160,14 +160,14 @@ class ContactZones {
 
   /// The zone of particle p, or -1.
   int zoneOf(int p) const { return parent_.empty() || parent_[p] < 0 ? -1 : root(p); }
-  bool isRigid(int zone) const { return rigid_[root(zone)] != 0; }
+  bool isRigid(int zone) const { return record_[root(zone)].rigid != 0; }
   /// Whether particle p cannot move for the rest of the step: fixed, or in a rigid zone that
   /// stopped (it holds a fixed particle or touches a half-plane). Particles outside its zone meet
   /// it as an obstacle.
   bool isImmobile(const Scene& scene, int p) const {
     if (scene.isFixed(p) || (!stopped_.empty() && stopped_[p]) || (sleepers_ && sleepers_->asleep(p))) return true;
     const int z = zoneOf(p);
-    return z >= 0 && rigid_[z] && immovable_[z];
+    return z >= 0 && record_[z].rigid && record_[z].immovable;
   }
   /// The largest rate (displacement per step) among the zone's particles: the scale of what
   /// its projection leaves closing.
@@ -245,17 +245,34 @@ class ContactZones {
   bool hold_ = true;
   const Sleepers* sleepers_ = nullptr;
   std::vector<int> parent_;                ///< N: union-find parent, -1 when in no zone
-  std::vector<std::vector<int>> members_;  ///< per root: its particles
-  /// Per root: its members that may still be held (started the step slower than
-  /// kHeldStartFraction kicks and not stopped yet), in the order of members_.
-  std::vector<std::vector<int>> holdable_;
-  std::vector<int> metAgain_;              ///< per root: contacts back after a solve, failed solves (jam count)
-  std::vector<int> solves_;                ///< per root: solves in this step
-  std::vector<char> rigid_;                ///< per root: moving rigidly for the rest of the step
-  std::vector<char> immovable_;            ///< per root: a fixed particle or a half-plane among its rows
-  std::vector<double> rateScale_;          ///< per root: see rateScale()
-  std::vector<int> rowCount_;              ///< per root: the projector rows set for its contacts in this step
-  std::vector<int> frozen_;                ///< per root: its first members_ frozen at rest (immovable and rigid)
+  /// What is known of one zone, kept at its root: a particle that joins writes this record and
+  /// its own links, not a dozen arrays (and no list of its own on the heap: with one vector of
+  /// members per particle, reading a joining particle's one-element list was a cache miss, and
+  /// merging lists took 4% of rain's time at N = 10^4, perf). Members and holdable members are
+  /// lists linked through nextMember_ and nextHoldable_, in the order they joined: a merge
+  /// splices the smaller zone's lists after the larger's.
+  struct ZoneRecord {
+    int metAgain = 0;  ///< contacts back after a solve, failed solves (jam count)
+    int solves = 0;    ///< solves in this step
+    int rowCount = 0;  ///< the projector rows set for its contacts in this step
+    int size = 0;      ///< members
+    int first = -1, last = -1;  ///< its members (nextMember_), -1: none
+    /// Its members that may still be held (started the step slower than kHeldStartFraction
+    /// kicks and not stopped yet), in the order of its members (nextHoldable_).
+    int firstHoldable = -1, lastHoldable = -1;
+    int lastFrozen = -1;  ///< its members up to this one are frozen at rest (immovable and rigid); -1: none
+    char rigid = 0;       ///< moving rigidly for the rest of the step
+    char immovable = 0;   ///< a fixed particle or a half-plane among its rows
+  };
+  /// Calls f(p) for every member of zone `zone` (a root), in the order they joined.
+  template <class F>
+  void forEachMember(int zone, F&& f) const {
+    for (int p = record_[zone].first; p >= 0; p = nextMember_[p]) f(p);
+  }
+  std::vector<ZoneRecord> record_;  ///< per root
+  std::vector<int> nextMember_;     ///< N: the member after p in its zone, -1 last
+  std::vector<int> nextHoldable_;   ///< N: the holdable member after p in its zone, -1 last
+  std::vector<double> rateScale_;   ///< per root: see rateScale() (an array: the projector reads it by group)
   std::vector<char> stopped_;              ///< N: stopped for the rest of the step: kJam, kHeld or 0
   std::vector<int> roots_;                 ///< every particle that has been a root this step
   PairKeyMap<int> rowOf_;                  ///< the projector's row of each pair with one this step
@@ -266,7 +283,7 @@ class ContactZones {
   std::vector<int> waiting_;
   /// Per projector row: its contact was queried again because a solve spent its budget before
   /// settling it. Coming back as an event then shows the budget, not a jam (the failed solve was
-  /// counted once, in metAgain_), so it is not counted again; it comes back at the failure's
+  /// counted once, in metAgain), so it is not counted again; it comes back at the failure's
   /// instant if it closes within the step (solvesNow). Cleared when the row is set again.
   std::vector<char> requeried_;
   std::vector<char> broughtForward_;  ///< per projector row: solvesNow said yes in this step

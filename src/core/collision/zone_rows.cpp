@@ -62,10 +62,10 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
                           double deepest) {
   const int z = root(zone);
   const PairParticles pair = pairParticles(scene, key);
-  immovable_[z] = immovable_[z] || keyKind(key) == PairKind::ParticleHalfPlane;
+  record_[z].immovable = record_[z].immovable || keyKind(key) == PairKind::ParticleHalfPlane;
   for (int k = 0; k < pair.count; ++k)
-    immovable_[z] = immovable_[z] || (isImmobile(scene, pair.p[k]) && zoneOf(pair.p[k]) != z);
-  if (rigid_[z] && immovable_[z] && !rigidOnly_) resumeProjection(scene, z, 0);  // never stopped whole
+    record_[z].immovable = record_[z].immovable || (isImmobile(scene, pair.p[k]) && zoneOf(pair.p[k]) != z);
+  if (record_[z].rigid && record_[z].immovable && !rigidOnly_) resumeProjection(scene, z, 0);  // never stopped whole
   Vec2 n = Vec2::Zero();
   math::ConstraintRow row = contactRow(scene, key, [&](int p) { return motion.at(p, T); }, n);
   // A contact that does not close at T but deepens later in the step (an edge rotating under a
@@ -97,7 +97,7 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
   }
   const double* last = lastImpulse_.find(key);
   rowOf_.insert(key, projector_.addRow(row, last ? *last : 0.0, z));
-  ++rowCount_[z];
+  ++record_[z].rowCount;
   requeried_.push_back(0);
   broughtForward_.push_back(0);
   unsolved_.push_back(key);
