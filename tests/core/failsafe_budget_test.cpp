@@ -8,8 +8,8 @@
 // whole. Expected values come from the Gauss-Seidel rate of the column's system (computed with
 // NumPy), from the column being at rest (the same answer in every step), from the hold's stated
 // bounds and from rigid motion and momentum (a frictionless floor takes no momentum along it).
-#include "../../src/core/collision/contact_zones.h"
 #include "contact_physics.h"
+#include "step_zones.h"
 
 namespace fosssim::testing {
 namespace {
@@ -178,23 +178,6 @@ TEST(ContactPhysics, ARigidZoneThatLandsOnARestingZoneKeepsItsSlide) {
     EXPECT_NEAR(slide, failsafe == Failsafe::Rigid ? 0.0 : 60.0, 1e-12);
   }
 }
-
-/// The failsafe's zones for one step of `s` in which every particle moves with its velocity, set
-/// up as the event loop sets them up (paths, broad phase, zones; no sleepers).
-struct StepZones {
-  StepMotion motion;
-  PairCandidates candidates;  // reads motion's vectors: a StepZones stays where it was made
-  ContactZones zones;
-  StepZones(const TestScene& s, long updatesPerRow, bool hold) {
-    motion.begin(s.state.x, s.state.x + s.scene.dt * s.state.v);
-    candidates.build(s.scene, motion.from(), motion.end(), 0.0, /*updates=*/true);
-    zones.reset(s.scene.numParticles());
-    zones.setUpdatesPerRow(updatesPerRow);
-    zones.setHold(hold);
-  }
-  StepZones(const StepZones&) = delete;
-  StepZones& operator=(const StepZones&) = delete;
-};
 
 // 8h. The contacts a budget-ended solve leaves closing are solved at its instant, each once in a
 // step (ContactZones::solvesNow). Three unit disks (radius 0.05) on the x axis, gaps 1e-4 and
