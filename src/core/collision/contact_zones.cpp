@@ -271,10 +271,10 @@ bool ContactZones::solvesNow(uint64_t key) {
 
 // The members of a zone against an obstacle that its budget-ended solve has brought to rest stop
 // for the rest of the step (kHeldKickFraction, kHeldStartFraction). Only the members that started
-// the step slow enough are looked at (the zone's holdable list, in the order of its members; empty with holding off
-// or without sleepers), and those that stop leave the list for good: a fed pile's zone ends a
-// hundred solves a step on its budget, and scanning all its members each time took 5% of rain's
-// time at 10^4.
+// the step slow enough are looked at (the zone's holdable list, in the order of its members;
+// empty with holding off or without sleepers), and those that stop leave the list for good: a
+// fed pile's zone ends a hundred solves a step on its budget, and scanning all its members each
+// time took 5% of rain's time at 10^4.
 void ContactZones::holdResting([[maybe_unused]] const Scene& scene, int zone) {
   ZoneRecord& z = record_[zone];
   int first = -1, last = -1;  // the list of those that stay holdable, relinked in order

@@ -244,7 +244,7 @@ class ContactZones {
   long updatesPerRow_ = kZoneUpdatesPerRow;
   bool hold_ = true;
   const Sleepers* sleepers_ = nullptr;
-  std::vector<int> parent_;                ///< N: union-find parent, -1 when in no zone
+  std::vector<int> parent_;  ///< N: union-find parent, -1 when in no zone
   /// What is known of one zone, kept at its root: a particle that joins writes this record and
   /// its own links, not a dozen arrays (and no list of its own on the heap: with one vector of
   /// members per particle, reading a joining particle's one-element list was a cache miss, and
@@ -273,11 +273,11 @@ class ContactZones {
   std::vector<int> nextMember_;     ///< N: the member after p in its zone, -1 last
   std::vector<int> nextHoldable_;   ///< N: the holdable member after p in its zone, -1 last
   std::vector<double> rateScale_;   ///< per root: see rateScale() (an array: the projector reads it by group)
-  std::vector<char> stopped_;              ///< N: stopped for the rest of the step: kJam, kHeld or 0
-  std::vector<int> roots_;                 ///< every particle that has been a root this step
-  PairKeyMap<int> rowOf_;                  ///< the projector's row of each pair with one this step
-  PairKeyMap<double> lastImpulse_;         ///< each contact's positive impulse at the end of the last step
-  std::vector<uint64_t> unsolved_;         ///< pairs whose rows were set since the last solve (any zone's)
+  std::vector<char> stopped_;       ///< N: stopped for the rest of the step: kJam, kHeld or 0
+  std::vector<int> roots_;          ///< every particle that has been a root this step
+  PairKeyMap<int> rowOf_;           ///< the projector's row of each pair with one this step
+  PairKeyMap<double> lastImpulse_;  ///< each contact's positive impulse at the end of the last step
+  std::vector<uint64_t> unsolved_;  ///< pairs whose rows were set since the last solve (any zone's)
   /// Projector rows of zones waiting for their solves at this instant, set aside (out of the
   /// queue) when another zone's solve spent its budget; requeueWaiting queues a zone's again.
   std::vector<int> waiting_;

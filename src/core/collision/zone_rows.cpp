@@ -62,10 +62,11 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
                           double deepest) {
   const int z = root(zone);
   const PairParticles pair = pairParticles(scene, key);
-  record_[z].immovable = record_[z].immovable || keyKind(key) == PairKind::ParticleHalfPlane;
+  ZoneRecord& record = record_[z];
+  record.immovable = record.immovable || keyKind(key) == PairKind::ParticleHalfPlane;
   for (int k = 0; k < pair.count; ++k)
-    record_[z].immovable = record_[z].immovable || (isImmobile(scene, pair.p[k]) && zoneOf(pair.p[k]) != z);
-  if (record_[z].rigid && record_[z].immovable && !rigidOnly_) resumeProjection(scene, z, 0);  // never stopped whole
+    record.immovable = record.immovable || (isImmobile(scene, pair.p[k]) && zoneOf(pair.p[k]) != z);
+  if (record.rigid && record.immovable && !rigidOnly_) resumeProjection(scene, z, 0);  // never stopped whole
   Vec2 n = Vec2::Zero();
   math::ConstraintRow row = contactRow(scene, key, [&](int p) { return motion.at(p, T); }, n);
   // A contact that does not close at T but deepens later in the step (an edge rotating under a
@@ -97,7 +98,7 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
   }
   const double* last = lastImpulse_.find(key);
   rowOf_.insert(key, projector_.addRow(row, last ? *last : 0.0, z));
-  ++record_[z].rowCount;
+  ++record.rowCount;
   requeried_.push_back(0);
   broughtForward_.push_back(0);
   unsolved_.push_back(key);
