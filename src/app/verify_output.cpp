@@ -3,6 +3,7 @@
 #include "fosssim/core/verify.h"
 
 #include <cstdio>
+#include <string>
 
 namespace fosssim::app {
 namespace {
@@ -10,12 +11,38 @@ namespace {
 /// Violations printed per step; the rest are counted.
 constexpr size_t kReportedPerStep = 5;
 
+/// "1 step", "2 steps".
+std::string counted(long n, const char* noun) {
+  return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+}
+
 }  // namespace
+
+std::string verifyScope(CollisionType type, bool compat) {
+  const char* promise = "continuous-time and hybrid handling (without --compat) promise that no pair is left colliding";
+  switch (type) {
+    case CollisionType::None:
+      return "the scene has no collision handling: nothing keeps pairs apart, so every contact is found";
+    case CollisionType::Simple:
+      return std::string("simple handling responds only to pairs that overlap at the end of a step, so contacts "
+                         "within a step are to be expected; ") + promise;
+    case CollisionType::Penalty:
+      return std::string("penalty handling lets pairs overlap while its force pushes them apart, so contacts are to "
+                         "be expected; ") + promise;
+    case CollisionType::ContinuousTime:
+    case CollisionType::Hybrid:
+      if (!compat) return "";
+      return std::string("--compat reproduces the course's handling, flaws included, and it can leave pairs "
+                         "colliding; without --compat ") +
+             (type == CollisionType::Hybrid ? "hybrid" : "continuous-time") + " handling promises that none is";
+  }
+  return "";
+}
 
 Status VerifyOutput::afterStep(const SceneFile& file, const State& state, const CollisionLog&) {
   ++steps_;
   if (Status s = checkFinite(state); !s) {
-    ++violations_;
+    ++violations_, ++stepsWithViolations_;
     std::fprintf(stderr, "verify: step %ld: %s\n", state.step, s.message().c_str());
     return Status::ok();
   }
@@ -32,12 +59,11 @@ Status VerifyOutput::afterStep(const SceneFile& file, const State& state, const 
 }
 
 Status VerifyOutput::finish() {
-  std::fprintf(stderr, "verify: %ld steps checked, %ld violations in %ld steps\n", steps_, violations_,
-               stepsWithViolations_);
-  if (violations_ > 0)
-    return Status::error("--verify found " + std::to_string(violations_) + " violations in " +
-                         std::to_string(stepsWithViolations_) + " steps");
-  return Status::ok();
+  const std::string found = counted(violations_, "violation") + " in " + counted(stepsWithViolations_, "step");
+  std::fprintf(stderr, "verify: %s checked, %s\n", counted(steps_, "step").c_str(), found.c_str());
+  if (violations_ == 0) return Status::ok();
+  if (!scope_.empty()) std::fprintf(stderr, "verify: %s\n", scope_.c_str());
+  return Status::error("--verify found " + found);
 }
 
 }  // namespace fosssim::app
