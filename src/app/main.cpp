@@ -85,8 +85,7 @@ int run(int argc, char** argv) {
   ObserverList observers;
   if (!options.output.empty())
     observers.items.push_back(std::make_unique<TrajectoryOutput>(options.output, options.compact));
-  if (options.verify)
-    observers.items.push_back(std::make_unique<VerifyOutput>(*simulator, file.scene.collision.type, options.compat));
+  if (options.verify) observers.items.push_back(std::make_unique<VerifyOutput>(*simulator));
   if (!options.stats.empty()) observers.items.push_back(std::make_unique<StatsOutput>(options.stats, *simulator));
   if (Status s = addPictureOutputs(options, file, observers); !s) return fail(s.message());
 

@@ -18,7 +18,8 @@ std::string counted(long n, const char* noun) {
 
 }  // namespace
 
-std::string verifyScope(CollisionType type, bool compat) {
+std::string verifyScope(CollisionType type, bool keepsPairsApart) {
+  if (keepsPairsApart) return "";
   const char* promise = "continuous-time and hybrid handling (without --compat) promise that no pair is left colliding";
   switch (type) {
     case CollisionType::None:
@@ -30,11 +31,9 @@ std::string verifyScope(CollisionType type, bool compat) {
       return std::string("penalty handling lets pairs overlap while its force pushes them apart, so contacts are to "
                          "be expected; ") + promise;
     case CollisionType::ContinuousTime:
-    case CollisionType::Hybrid:
-      if (!compat) return "";
+    case CollisionType::Hybrid:  // the course's handlers: the default mode's keep pairs apart
       return std::string("--compat reproduces the course's handling, flaws included, and it can leave pairs "
-                         "colliding; without --compat ") +
-             (type == CollisionType::Hybrid ? "hybrid" : "continuous-time") + " handling promises that none is";
+                         "colliding; without --compat ") + collisionKeyword(type) + " handling promises that none is";
   }
   return "";
 }

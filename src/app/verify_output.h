@@ -18,16 +18,15 @@
 
 namespace fosssim::app {
 
-/// Why --verify may find contacts with this handling although nothing is wrong, as one sentence;
-/// empty when the handling promises that no pair is left colliding (continuous-time and hybrid
-/// without --compat), where every finding is a defect.
-std::string verifyScope(CollisionType type, bool compat);
+/// Why --verify may find contacts with handling of this type although nothing is wrong, as one
+/// sentence; empty when the handler keeps pairs apart (Simulator::keepsPairsApart: continuous-time
+/// and hybrid without --compat), where every finding is a defect.
+std::string verifyScope(CollisionType type, bool keepsPairsApart);
 
 class VerifyOutput final : public RunObserver {
  public:
-  /// `type` and `compat`: the run's collision handling, for the summary (verifyScope).
-  VerifyOutput(const Simulator& simulator, CollisionType type, bool compat)
-      : simulator_(simulator), scope_(verifyScope(type, compat)) {}
+  explicit VerifyOutput(const Simulator& simulator)
+      : simulator_(simulator), scope_(verifyScope(simulator.collisionType(), simulator.keepsPairsApart())) {}
   Status afterStep(const SceneFile& file, const State& state, const CollisionLog& log) override;
   Status finish() override;
 

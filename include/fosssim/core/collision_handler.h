@@ -74,6 +74,9 @@ class CollisionHandler {
   /// Diagnostics: the rigid impact zone that moved `particle` in the last step, or -1 (only
   /// the hybrid handler has zones).
   virtual int zoneOf(int /*particle*/) const { return -1; }
+  /// Whether the handler promises what unresolved() checks: no pair left colliding after a
+  /// step (the default mode's time-ordered handling). The course's methods do not.
+  virtual bool keepsPairsApart() const { return false; }
   /// The verification seam: pairs that still collide somewhere along the last step's motion
   /// from start to end (at most `limit`, 0 = all), what --verify reports. By default the motion
   /// is the straight line from start to end and every pair counts; handlers whose particles

@@ -56,6 +56,10 @@ class Simulator {
   /// What the last step cost and did (timings are measured only when enabled).
   const StepStats& stats() const { return stats_; }
   void setTiming(bool on) { timing_ = on; }
+  /// The scene's collision handling, and whether it promises that no pair is left colliding
+  /// after a step (what unresolved() checks; see CollisionHandler::keepsPairsApart).
+  CollisionType collisionType() const { return collision_->type; }
+  bool keepsPairsApart() const { return handler_ && handler_->keepsPairsApart(); }
   /// What this scene's trajectory records contain.
   const RecordLayout& layout() const { return collision_->layout; }
   /// The largest energy growth (in multiples of the scene's energy scale) seen in this run; 0

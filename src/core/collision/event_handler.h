@@ -47,6 +47,7 @@ class EventHandler final : public CollisionHandler {
   EventHandler(const CollisionSettings& settings, int eventsPerParticle, const HandlerOptions& options);
   Status handle(const Scene& scene, const State& start, State& state, StepContext& ctx) override;
   int zoneOf(int particle) const override;
+  bool keepsPairsApart() const override { return true; }
   std::vector<Violation> unresolved(const Scene& scene, const VecX& start, const VecX& end,
                                     size_t limit) const override;
 
