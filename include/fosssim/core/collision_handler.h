@@ -77,6 +77,14 @@ class CollisionHandler {
   /// Whether the handler promises what unresolved() checks: no pair left colliding after a
   /// step (the default mode's time-ordered handling). The course's methods do not.
   virtual bool keepsPairsApart() const { return false; }
+  /// Called before the integrator's prediction, with the step's start: the particles (size N,
+  /// 1 each) this step will keep where they rest whatever is predicted for them (the default
+  /// mode's sleepers, and the fixed particles with them), or null when none sleeps. Their
+  /// predicted forces may be incomplete (ForceContext::resting); the handler must then read
+  /// nothing of their prediction. Valid until the step's handle() returns.
+  virtual const std::vector<char>* restingAtStart(const Scene& /*scene*/, const State& /*start*/) {
+    return nullptr;
+  }
   /// The verification seam: pairs that still collide somewhere along the last step's motion
   /// from start to end (at most `limit`, 0 = all), what --verify reports. By default the motion
   /// is the straight line from start to end and every pair counts; handlers whose particles

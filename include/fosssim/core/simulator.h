@@ -75,6 +75,9 @@ class Simulator {
   double dt_ = 0;
   CollisionSettings settings_;
   std::unique_ptr<Integrator> integrator_;
+  /// The integrator predicts each particle from its own force alone (the explicit methods): the
+  /// forces may then leave out what acts only on particles the handler keeps at rest.
+  bool predictsEachAlone_ = false;
   std::unique_ptr<CollisionHandler> handler_;  ///< null for "none" and "penalty"
   CollisionLog log_;
   StepStats stats_;

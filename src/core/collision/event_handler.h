@@ -48,6 +48,9 @@ class EventHandler final : public CollisionHandler {
   Status handle(const Scene& scene, const State& start, State& state, StepContext& ctx) override;
   int zoneOf(int particle) const override;
   bool keepsPairsApart() const override { return true; }
+  const std::vector<char>* restingAtStart(const Scene& scene, const State& start) override {
+    return sleepers_.restingAtStart(scene, start);
+  }
   std::vector<Violation> unresolved(const Scene& scene, const VecX& start, const VecX& end,
                                     size_t limit) const override;
 

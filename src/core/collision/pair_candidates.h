@@ -82,6 +82,19 @@ class PairCandidates {
   void particlesOf(int i, int after, std::vector<int>& out) const;
   /// Appends the particles j < i whose boxes meet particle i's (in no particular order).
   void particlesBefore(int i, std::vector<int>& out) const;
+  /// Calls visit(j) for every particle j whose box meets particle p's (p itself included), in no
+  /// particular order: particlesOf and particlesBefore together, without the sort. Not with
+  /// allPairs().
+  template <class Visit>
+  void forEachParticleMeetingParticle(int p, Visit&& visit) const {
+    particleGrid_.forEachOverlap(particleBoxes_[p], visit);
+  }
+  /// Calls visit(j) for every particle j whose box meets edge e's, in no particular order: the
+  /// particles whose edgesOf lists e (and e's endpoints). Not with allPairs().
+  template <class Visit>
+  void forEachParticleMeetingEdge(int e, Visit&& visit) const {
+    particleGrid_.forEachOverlap(edgeBoxes_[e], visit);
+  }
   /// Appends the edges e > after not incident to i whose boxes meet particle i's, ascending.
   void edgesOf(int i, int after, std::vector<int>& out) const;
   /// Whether particle i may reach half-plane h.

@@ -12,9 +12,12 @@ void Sleepers::begin(const Scene& scene, const State& start, State& state, doubl
   // The kicks, whether sleeping is on or not: the zones' held particles need them too, and end()
   // sums them over still runs.
   if (static_cast<int>(kick_.size()) != n) kick_.assign(n, 0.0), startSpeed_.assign(n, 0.0);
+  // A sleeper's prediction is thrown away below, and its forces may have been left incomplete
+  // (restingAtStart): it keeps the kick it had when it fell asleep (read if a hit wakes it).
+  const bool sleepers = enabled_ && sleeping_ > 0 && static_cast<int>(asleep_.size()) == n;
   forRowRanges(n, threads_, [&](int, int first, int end) {
     for (int p = first; p < end; ++p) {
-      kick_[p] = (at(state.v, p) - at(start.v, p)).norm();
+      kick_[p] = sleepers && restsAtStart(start, p) ? restKick_[p] : (at(state.v, p) - at(start.v, p)).norm();
       startSpeed_[p] = at(start.v, p).norm();
     }
   });
@@ -29,6 +32,7 @@ void Sleepers::begin(const Scene& scene, const State& start, State& state, doubl
     anchor_ = start.x;
     anchorVelocity_ = start.v;
     kicks_.assign(n, 0.0);
+    restKick_.assign(n, 0.0);
     rest_ = start.x;
     sleeping_ = 0;
   }
@@ -54,7 +58,7 @@ void Sleepers::begin(const Scene& scene, const State& start, State& state, doubl
       // A sleeper starts the step where it fell asleep, at rest, unless someone else moved it
       // between steps (a script assigning positions or velocities, the grader's state): then it
       // wakes and takes the integrator's prediction like any particle.
-      if (at(start.x, p) != at(rest_, p) || at(start.v, p) != Vec2::Zero()) {
+      if (!restsAtStart(start, p)) {
         asleep_[p] = 0, still_[p] = 0, ++woken[range];  // wake(), its count summed below
         continue;
       }
@@ -71,6 +75,16 @@ void Sleepers::begin(const Scene& scene, const State& start, State& state, doubl
     for (int m = islandStart_[k]; m < islandStart_[k + 1]; ++m) awake = awake || !asleep_[islandMembers_[m]];
     if (awake) wakeIsland(k);
   }
+}
+
+const std::vector<char>* Sleepers::restingAtStart(const Scene& scene, const State& start) {
+  const int n = scene.numParticles();
+  if (!enabled_ || sleeping_ == 0 || static_cast<int>(asleep_.size()) != n) return nullptr;
+  resting_.resize(static_cast<size_t>(n));
+  forRowRanges(n, threads_, [&](int, int first, int end) {
+    for (int p = first; p < end; ++p) resting_[p] = static_cast<char>(scene.isFixed(p) || restsAtStart(start, p));
+  });
+  return &resting_;
 }
 
 int Sleepers::wake(int p) {
@@ -197,6 +211,7 @@ void Sleepers::end(const Scene& scene, const State& start, State& state) {
 // speed: dropping it is what sleeping means).
 void Sleepers::fallAsleep(int p, State& state) {
   asleep_[p] = 1;
+  restKick_[p] = kick_[p];
   moved_[p] = 0;
   at(state.v, p).setZero();
   at(rest_, p) = at(state.x, p);

@@ -82,6 +82,12 @@ class Sleepers {
   /// between steps by a caller), wakes instead. h: the step.
   void begin(const Scene& scene, const State& start, State& state, double h);
 
+  /// Before begin(), with the step's start: per particle (size N), 1 for each sleeper that
+  /// begin() will put back where it rests (the sleepers a caller did not move) and for each
+  /// fixed particle (never moved, whatever its force), or null when none sleeps. Valid until
+  /// the next call.
+  const std::vector<char>* restingAtStart(const Scene& scene, const State& start);
+
   /// Whether any particle sleeps in this step (nothing else here is needed when none does).
   bool any() const { return sleeping_ > 0; }
   bool asleep(int p) const { return sleeping_ > 0 && asleep_[p]; }
@@ -91,7 +97,8 @@ class Sleepers {
   /// Whether p did not stay still in the last step (a neighbour that moves wakes sleepers).
   bool movedLastStep(int p) const { return moved_.empty() || moved_[p] != 0; }
   /// The velocity change this step's forces gave particle p (|predicted v - start v|); known
-  /// from begin() on, whether sleeping is on or not.
+  /// from begin() on, whether sleeping is on or not. A sleeper put back at rest keeps the kick
+  /// of the step it fell asleep in (its forces may not have been computed whole: restingAtStart).
   double kick(int p) const { return kick_[p]; }
   /// Particle p's speed at the step's start (known from begin() on).
   double startSpeed(int p) const { return startSpeed_[p]; }
@@ -123,6 +130,8 @@ class Sleepers {
   std::vector<double> kicks_;    ///< N: sum of kick_ over the particle's still run
   VecX rest_;                    ///< 2N: a sleeper's position (where it fell asleep)
   std::vector<double> kick_;     ///< N: this step's |predicted v - start v|
+  std::vector<double> restKick_; ///< N: a sleeper's kick in the step it fell asleep
+  std::vector<char> resting_;    ///< N: restingAtStart's answer
   std::vector<double> startSpeed_;  ///< N: |start v|
   std::vector<std::pair<int, int>> coupled_;  ///< pairs the forces and edges tie (see Force::couples)
   std::vector<int> islandOf_;    ///< N: island of two or more particles, or -1 (empty: none)
@@ -135,6 +144,10 @@ class Sleepers {
   void findIslands(const Scene& scene);  ///< from coupled_, unless it and the fixed flags are unchanged
   int wakeIsland(int k);  ///< wakes island k's sleepers; returns how many
   void fallAsleep(int p, State& state);
+  /// Asleep, and starts the step where it fell asleep at rest (not moved by a caller).
+  bool restsAtStart(const State& start, int p) const {
+    return asleep_[p] && at(start.x, p) == at(rest_, p) && at(start.v, p) == Vec2::Zero();
+  }
 };
 
 }  // namespace fosssim

@@ -24,6 +24,8 @@ struct PenaltyScratch {
   PairCandidates candidates;
   std::vector<std::vector<int>> rows;            ///< per range of rows: candidate scratch
   std::vector<std::vector<PenaltyPair>> found;   ///< per range of rows, with threads
+  std::vector<char> skipRows;                    ///< N: rows of resting particles left unread
+  std::vector<std::vector<int>> border;          ///< per range: resting particles met by moving ones
 };
 
 }  // namespace fosssim
