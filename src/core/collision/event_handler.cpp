@@ -45,14 +45,20 @@ Status EventHandler::handle(const Scene& scene, const State& start, State& state
   events_.assign(n, 0);
   zones_.reset(n);
   heap_.clear();
-  {
-    const StepTimer timer(ctx.timing, ctx.stats->broadPhase);
-    candidates_.build(scene, motion_.from(), motion_.end(), 0.0, /*updates=*/true, threads_);
-    if (allPairs_) candidates_.forceAllPairs();
-    if (sleepers_.any()) wakeNearMoving(scene, *ctx.stats);
+  // With every movable particle asleep no pair is queried (none has a particle that moves): a
+  // pile at rest then needs neither the broad phase nor the detection.
+  const long movable = std::count(scene.fixed.begin(), scene.fixed.end(), 0);
+  const bool stillPile = sleepers_.any() && sleepers_.sleeping() == movable;
+  if (!stillPile) {
+    {
+      const StepTimer timer(ctx.timing, ctx.stats->broadPhase);
+      candidates_.build(scene, motion_.from(), motion_.end(), 0.0, /*updates=*/true, threads_);
+      if (allPairs_) candidates_.forceAllPairs();
+      if (sleepers_.any()) wakeNearMoving(scene, *ctx.stats);
+    }
+    // Detect.
+    if (Status s = detectAll(scene, ctx); !s) return s;
   }
-  // Detect.
-  if (Status s = detectAll(scene, ctx); !s) return s;
   // Respond, in time order. Every event is dropped (stale, resolved), costs a particle one of its
   // quota of impulses, adds a contact's rows to a zone (bounded by the candidate pairs), or brings
   // one back; past kMaxZoneProjections of those a jam stops particles or a zone moves rigidly,
