@@ -110,6 +110,58 @@ TEST(RestingForces, APileRunsTheSameWhetherSleepersForcesAreComputedOrNot) {
   }
 }
 
+/// A random heap: `disks` disks of random radius dropped from random heights into a box (floor
+/// and walls), a fixed disk on the floor, capsule links of three particles, gravity and a penalty
+/// layer; and one disk high above that lands on the heap after it has settled.
+TestScene randomHeap(const char* type, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  TestScene s = contactScene(type, 0.2 * u(rng));
+  s.scene.halfplanes.push_back(HalfPlane{Vec2(0, 0), Vec2(0, 1)});
+  s.scene.halfplanes.push_back(HalfPlane{Vec2(-1, 0), Vec2(1, 0)});
+  s.scene.halfplanes.push_back(HalfPlane{Vec2(1, 0), Vec2(-1, 0)});
+  s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, -9.81)));
+  s.scene.forces.push_back(std::make_unique<PenaltyForce>(5.0 + 20.0 * u(rng), 0.005 + 0.01 * u(rng)));
+  addBody(s, 1.0, Vec2(0.3, 0.05), Vec2::Zero(), 0.05, true);
+  for (int k = 0; k < 30; ++k)
+    addBody(s, 0.5 + u(rng), Vec2(-0.9 + 1.8 * u(rng), 0.1 + 1.5 * u(rng)), Vec2::Zero(), 0.04 + 0.03 * u(rng));
+  for (int link = 0; link < 2; ++link) {
+    const Vec2 at0(-0.6 + 1.0 * u(rng), 1.8 + 0.3 * link);
+    const int first = s.scene.numParticles();
+    for (int k = 0; k < 3; ++k) addBody(s, 0.5, at0 + Vec2(0.1 * k, 0), Vec2::Zero(), 0.03);
+    for (int k = 0; k < 2; ++k) s.scene.edges.push_back(Edge{first + k, first + k + 1, 0.03});
+  }
+  addBody(s, 1.0, Vec2(-0.5 + u(rng), 25.0), Vec2::Zero(), 0.05);
+  return s;
+}
+
+// The same promise on random heaps, with fixed particles and edges among the sleepers.
+TEST(RestingForces, RandomHeapsRunTheSameWhetherSleepersForcesAreComputedOrNot) {
+  int slept = 0, woken = 0;
+  for (const char* type : kEventTypes) {
+    for (unsigned seed = 1; seed <= 3; ++seed) {
+      SCOPED_TRACE(std::string(type) + ", seed " + std::to_string(seed));
+      TestScene a = randomHeap(type, seed), b = randomHeap(type, seed);
+      std::unique_ptr<Simulator> leaving, computing;
+      SimulatorOptions options;
+      options.handler.compat = false;
+      ASSERT_TRUE(Simulator::create(a.scene, options, leaving).isOk());
+      options.logPolynomials = true;
+      ASSERT_TRUE(Simulator::create(b.scene, options, computing).isOk());
+      for (int k = 0; k < 300; ++k) {
+        ASSERT_TRUE(leaving->step(a.scene, a.state).isOk());
+        ASSERT_TRUE(computing->step(b.scene, b.state).isOk());
+        ASSERT_EQ(a.state.x, b.state.x) << "step " << k + 1;
+        ASSERT_EQ(a.state.v, b.state.v) << "step " << k + 1;
+        slept = std::max(slept, leaving->stats().asleep);
+        woken += leaving->stats().woken;
+      }
+    }
+  }
+  EXPECT_GE(slept, 20) << "the heaps should have fallen asleep";
+  EXPECT_GT(woken, 0) << "the dropped disks should have woken sleepers";
+}
+
 // What a sleeper's incomplete prediction could still reach: its kick, the velocity change its
 // forces gave it, which the zones' holds and the sleep test read if a hit wakes it. A disk on the
 // floor whose contact takes back a kick of 0.1 m/s every step falls asleep; then, told that its
