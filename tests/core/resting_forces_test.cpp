@@ -66,6 +66,27 @@ TEST(RestingForces, EveryMovingParticlesPenaltyForceIsTheSameBitForBit) {
   }
 }
 
+/// Steps `a` with the sleepers' forces left out and `b` (the same scene) with them computed: the
+/// polynomial log, which records sleepers' predicted motion too, turns the leaving out off. The
+/// states must be the same bit for bit after every step. Raises `mostAsleep` to the most
+/// particles asleep after a step and adds the sleepers woken to `woken`.
+void runBothWays(TestScene& a, TestScene& b, int steps, int& mostAsleep, int& woken) {
+  std::unique_ptr<Simulator> leaving, computing;
+  SimulatorOptions options;
+  options.handler.compat = false;
+  ASSERT_TRUE(Simulator::create(a.scene, options, leaving).isOk());
+  options.logPolynomials = true;
+  ASSERT_TRUE(Simulator::create(b.scene, options, computing).isOk());
+  for (int k = 0; k < steps; ++k) {
+    ASSERT_TRUE(leaving->step(a.scene, a.state).isOk());
+    ASSERT_TRUE(computing->step(b.scene, b.state).isOk());
+    ASSERT_EQ(a.state.x, b.state.x) << "step " << k + 1;
+    ASSERT_EQ(a.state.v, b.state.v) << "step " << k + 1;
+    mostAsleep = std::max(mostAsleep, leaving->stats().asleep);
+    woken += leaving->stats().woken;
+  }
+}
+
 /// Three rows of twelve disks between two walls on the floor, under gravity and a penalty layer,
 /// and one disk high above them that lands on the pile at about step 200.
 TestScene pileAndDrop(const char* type) {
@@ -81,29 +102,16 @@ TestScene pileAndDrop(const char* type) {
   return s;
 }
 
-// The pile falls asleep, then the disk from above lands on it and wakes part of it. The
-// polynomial log (which records every pair's predicted motion, sleepers' too) turns the leaving
-// out off: with and without it the states are the same bit for bit, so nothing in the step read
-// a sleeper's incomplete force.
+// The pile falls asleep, then the disk from above lands on it and wakes part of it: with the
+// sleepers' forces left out or computed, the states are the same bit for bit, so nothing in the
+// step read a sleeper's incomplete force.
 TEST(RestingForces, APileRunsTheSameWhetherSleepersForcesAreComputedOrNot) {
   for (const char* type : kEventTypes) {
     SCOPED_TRACE(type);
     TestScene a = pileAndDrop(type), b = pileAndDrop(type);
-    std::unique_ptr<Simulator> leaving, computing;
-    SimulatorOptions options;
-    options.handler.compat = false;
-    ASSERT_TRUE(Simulator::create(a.scene, options, leaving).isOk());
-    options.logPolynomials = true;
-    ASSERT_TRUE(Simulator::create(b.scene, options, computing).isOk());
     int mostAsleep = 0, woken = 0;
-    for (int k = 0; k < 300; ++k) {
-      ASSERT_TRUE(leaving->step(a.scene, a.state).isOk());
-      ASSERT_TRUE(computing->step(b.scene, b.state).isOk());
-      ASSERT_EQ(a.state.x, b.state.x) << "step " << k + 1;
-      ASSERT_EQ(a.state.v, b.state.v) << "step " << k + 1;
-      mostAsleep = std::max(mostAsleep, leaving->stats().asleep);
-      woken += leaving->stats().woken;
-    }
+    runBothWays(a, b, 300, mostAsleep, woken);
+    if (HasFatalFailure()) return;
     EXPECT_GE(mostAsleep, 30) << "the pile should have fallen asleep";
     EXPECT_GT(woken, 0) << "the dropped disk should have woken sleepers";
     EXPECT_LT(at(a.state.x, 36).y(), 1.0) << "the dropped disk should have landed";
@@ -142,20 +150,8 @@ TEST(RestingForces, RandomHeapsRunTheSameWhetherSleepersForcesAreComputedOrNot) 
     for (unsigned seed = 1; seed <= 3; ++seed) {
       SCOPED_TRACE(std::string(type) + ", seed " + std::to_string(seed));
       TestScene a = randomHeap(type, seed), b = randomHeap(type, seed);
-      std::unique_ptr<Simulator> leaving, computing;
-      SimulatorOptions options;
-      options.handler.compat = false;
-      ASSERT_TRUE(Simulator::create(a.scene, options, leaving).isOk());
-      options.logPolynomials = true;
-      ASSERT_TRUE(Simulator::create(b.scene, options, computing).isOk());
-      for (int k = 0; k < 300; ++k) {
-        ASSERT_TRUE(leaving->step(a.scene, a.state).isOk());
-        ASSERT_TRUE(computing->step(b.scene, b.state).isOk());
-        ASSERT_EQ(a.state.x, b.state.x) << "step " << k + 1;
-        ASSERT_EQ(a.state.v, b.state.v) << "step " << k + 1;
-        slept = std::max(slept, leaving->stats().asleep);
-        woken += leaving->stats().woken;
-      }
+      runBothWays(a, b, 300, slept, woken);
+      if (HasFatalFailure()) return;
     }
   }
   EXPECT_GE(slept, 20) << "the heaps should have fallen asleep";
