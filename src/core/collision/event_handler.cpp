@@ -47,9 +47,7 @@ Status EventHandler::handle(const Scene& scene, const State& start, State& state
   heap_.clear();
   // With every movable particle asleep no pair is queried (none has a particle that moves): a
   // pile at rest then needs neither the broad phase nor the detection.
-  const long movable = std::count(scene.fixed.begin(), scene.fixed.end(), 0);
-  const bool stillPile = sleepers_.any() && sleepers_.sleeping() == movable;
-  if (!stillPile) {
+  if (!sleepers_.allAsleep()) {
     {
       const StepTimer timer(ctx.timing, ctx.stats->broadPhase);
       candidates_.build(scene, motion_.from(), motion_.end(), 0.0, /*updates=*/true, threads_);

@@ -39,11 +39,13 @@ void Sleepers::begin(const Scene& scene, const State& start, State& state, doubl
   // Who may sleep, and with whom: the scene's contents do not change during a run, but this
   // costs O(N + E + forces) and keeps no stale answer if a caller edits a scene between runs.
   mayRest_.assign(n, 0);
+  mayRestCount_ = 0;
   coupled_.clear();
   bool listed = true;
   for (const auto& f : scene.forces) listed = f->couples(coupled_) && listed;
   if (listed) {
     for (int p = 0; p < n; ++p) mayRest_[p] = !scene.isFixed(p);
+    mayRestCount_ = static_cast<int>(std::count(mayRest_.begin(), mayRest_.end(), 1));
     for (const Edge& e : scene.edges) coupled_.emplace_back(e.i, e.j);
   } else {
     coupled_.clear();  // nothing sleeps: no islands to keep

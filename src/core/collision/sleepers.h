@@ -93,6 +93,8 @@ class Sleepers {
   /// Whether any particle sleeps in this step (nothing else here is needed when none does).
   bool any() const { return sleeping_ > 0; }
   bool asleep(int p) const { return sleeping_ > 0 && asleep_[p]; }
+  /// Whether every movable particle sleeps in this step (after begin(): nothing moves).
+  bool allAsleep() const { return sleeping_ > 0 && sleeping_ == mayRestCount_; }
   /// Wakes p and the rest of its island (no-op if awake): they count as moving again from now
   /// on. Returns how many woke.
   int wake(int p);
@@ -134,6 +136,7 @@ class Sleepers {
   std::vector<double> kick_;     ///< N: this step's |predicted v - start v|
   std::vector<double> restKick_; ///< N: a sleeper's kick in the step it fell asleep
   std::vector<char> resting_;    ///< N: restingAtStart's answer
+  int mayRestCount_ = 0;         ///< particles that may sleep (movable, when the forces list their ties)
   std::vector<double> startSpeed_;  ///< N: |start v|
   std::vector<std::pair<int, int>> coupled_;  ///< pairs the forces and edges tie (see Force::couples)
   std::vector<int> islandOf_;    ///< N: island of two or more particles, or -1 (empty: none)
