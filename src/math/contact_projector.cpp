@@ -23,6 +23,11 @@ void ContactProjector::reset(int capacity) {
   queued_.clear();
   head_ = tail_ = 0;
   changed_.clear();
+  startVelocity_.clear();
+  touchedFlag_.clear();
+  startLambda_.clear();
+  startReplaced_.clear();
+  touched_.clear();
   updates_ = 0;
 }
 
@@ -34,12 +39,16 @@ void ContactProjector::addBody(int b, double inverseMass, const Vec2& v) {
   body_.push_back(std::move(body));
   velocity_.push_back(v);
   inverseMass_.push_back(inverseMass);
+  startVelocity_.push_back(v);
 }
 
 int ContactProjector::addRow(const ConstraintRow& row, double warmStart, int group) {
   row_.emplace_back();
   replaced_.push_back(0.0);
   queued_.push_back(0);
+  touchedFlag_.push_back(0);
+  startLambda_.push_back(0.0);
+  startReplaced_.push_back(0.0);
   const int index = static_cast<int>(row_.size()) - 1;
   setRow(index, row, group);
   if (warmStart > 0.0) apply(index, warmStart);  // from 0
@@ -52,6 +61,11 @@ int ContactProjector::addRow(const ConstraintRow& row, double warmStart, int gro
 // normal: every later update is again a projection onto a half-space through v = 0.
 void ContactProjector::setRow(int index, const ConstraintRow& row, int group) {
   Row& k = row_[index];
+  // For the energy guard: what the multiplier gained since the guard's start leaves it for
+  // replaced_, and the new multiplier starts from 0.
+  touch(index);
+  startReplaced_[index] += k.lambda - startLambda_[index];
+  startLambda_[index] = 0.0;
   replaced_[index] += k.lambda;
   k.r = row;
   k.group = group;
@@ -78,15 +92,16 @@ void ContactProjector::setRow(int index, const ConstraintRow& row, int group) {
 // calls it for every update (GCC otherwise kept the call: rain and chains at N = 1,000-2,500
 // took 3-5% longer per step, fastest of 18 runs each).
 FOSSSIM_ALWAYS_INLINE inline void ContactProjector::apply(int k, double lambda) {
+  touch(k);
   Row& row = row_[k];
   const double delta = lambda - row.lambda;
   row.lambda = lambda;
   for (int m = 0; m < row.r.count; ++m) {
     const int s = row.r.body[m];
     if (inverseMass_[s] == 0.0) continue;
-    velocity_[s] += inverseMass_[s] * delta * row.r.coef[m];
     Body& b = body_[s];
-    if (!b.changed) b.changed = true, changed_.push_back(s);
+    if (!b.changed) b.changed = true, changed_.push_back(s), startVelocity_[s] = velocity_[s];
+    velocity_[s] += inverseMass_[s] * delta * row.r.coef[m];
   }
   for (int m = 0; m < row.r.count; ++m)
     if (inverseMass_[row.r.body[m]] != 0.0) queueRowsOf(row.r.body[m], k);
@@ -196,8 +211,13 @@ void ContactProjector::freeze(int b, const Vec2& v) {
   inverseMass_[s] = 0.0;
   body.forEachRow([&](int k) { row_[k].diag = diagonal(row_[k].r); });  // the body no longer takes a share
   if (velocity_[s] == v) return;
+  setVelocity(s, v);
+  if (!body.changed) body.changed = true, changed_.push_back(s), startVelocity_[s] = v;
+}
+
+void ContactProjector::setVelocity(int s, const Vec2& v) {
+  if (body_[s].changed) startVelocity_[s] += v - velocity_[s];
   velocity_[s] = v;
-  if (!body.changed) body.changed = true, changed_.push_back(s);
 }
 
 // Its rows' diagonals take its share again; their multipliers so far stay applied to the other
@@ -207,7 +227,7 @@ void ContactProjector::release(int b, double inverseMass, const Vec2& v) {
   const int s = slot_[b];
   if (inverseMass_[s] != 0.0) return;
   inverseMass_[s] = inverseMass;
-  velocity_[s] = v;
+  setVelocity(s, v);
   body_[s].forEachRow([&](int k) {
     row_[k].diag = diagonal(row_[k].r);
     queue(k);
@@ -232,6 +252,34 @@ void ContactProjector::takeChanged(std::vector<int>& out) {
     out.push_back(body_[s].id);
   }
   changed_.clear();
+  for (int k : touched_) touchedFlag_[k] = 0;
+  touched_.clear();
+}
+
+// The changed bodies' kinetic energy along the line from the guard's start (f = 0) to now
+// (f = 1) is KE(0) + f B + f^2 C (see the header); C > 0 whenever anything moved. A gain
+// B + C > 0 is taken back to f = -B / C, where the energy is KE(0) again, or to f = 0 when the
+// changes only add (B >= 0). Multipliers on the same line stay non-negative (both ends are).
+double ContactProjector::capEnergy() {
+  double b = 0, c = 0, start = 0;
+  for (int s : changed_) {
+    if (inverseMass_[s] == 0.0) continue;
+    const double m = 1.0 / inverseMass_[s];
+    const Vec2 d = velocity_[s] - startVelocity_[s];
+    b += m * startVelocity_[s].dot(d);
+    c += 0.5 * m * d.squaredNorm();
+    start += 0.5 * m * startVelocity_[s].squaredNorm();
+  }
+  if (!(b + c > kEnergyRoundingFraction * (start + c))) return 1.0;
+  const double f = b < 0.0 ? -b / c : 0.0;
+  for (int s : changed_)
+    if (inverseMass_[s] != 0.0) velocity_[s] = startVelocity_[s] + f * (velocity_[s] - startVelocity_[s]);
+  for (int k : touched_) {
+    row_[k].lambda = startLambda_[k] + f * (row_[k].lambda - startLambda_[k]);
+    replaced_[k] -= (1.0 - f) * startReplaced_[k];
+    queue(k);  // settled or not, it may close again
+  }
+  return f;
 }
 
 }  // namespace fosssim::math

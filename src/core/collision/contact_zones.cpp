@@ -204,28 +204,38 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
       const long before = projector_.updates();
       const bool solved = projector_.solve(rateScale_.data(), 1.0 / h, kZoneProjectionTolerance, budget);
       stats.zoneUpdates += projector_.updates() - before;
-      if (!solved) {
-        if (z.immovable) holdResting(scene, zone);
-        ++z.metAgain;
-        // A failure is its zone's alone. This zone's rows still queued are dropped; those of
-        // other zones waiting for their solves at this instant are set aside for those solves
-        // (the worklist is shared: dropping them too sent their contacts back as events counted
-        // against zones whose solves had not failed, and the fed rain pile then had zones moving
-        // rigidly in up to twice as many steps; leaving them queued let this zone's next solves
-        // spend their budgets on them).
+      // No energy from the zones: the warm starts applied since the last solve (and the rows'
+      // changes to other zones' bodies waiting at this instant) are taken back as far as this
+      // solve did not (ContactProjector::capEnergy). What that leaves closing comes back as
+      // events: every body it scaled is in the changed list below, and every row it scaled is
+      // queued.
+      const bool capped = projector_.capEnergy() < 1.0;
+      stats.energyCaps += capped;
+      // The rows set since the last solve stand for contacts whose events were taken: one that
+      // the solve did not settle, or whose settling the cap took back, would not be queried
+      // again where its bodies' velocities end unchanged, and its pair would close unseen for the
+      // rest of the step. So this zone's are queried again at T: such a contact comes back as an
+      // event, marked as back for this solve (not counted as met again).
+      const auto requery = [&](uint64_t key) {
+        const PairParticles pair = pairParticles(scene, key);
+        for (int k = 0; k < pair.count; ++k)
+          if (!scene.isFixed(pair.p[k])) changed.push_back(pair.p[k]);
+        requeried_[*rowOf_.find(key)] = 1;
+      };
+      if (!solved || capped) {
+        if (!solved) {
+          if (z.immovable) holdResting(scene, zone);
+          ++z.metAgain;
+        }
+        // A failure is its zone's alone (and so is a cap). This zone's rows still queued are
+        // dropped; those of other zones waiting for their solves at this instant are set aside
+        // for those solves (the worklist is shared: dropping them too sent their contacts back as
+        // events counted against zones whose solves had not failed, and the fed rain pile then
+        // had zones moving rigidly in up to twice as many steps; leaving them queued let this
+        // zone's next solves spend their budgets on them).
         projector_.unqueueIf(memberOf(zone));
         projector_.takeQueued(waiting_);
-        // The rows set since the last solve stand for contacts whose events were taken: one that
-        // the solve did not reach (its bodies' velocities unchanged) would not be queried again,
-        // and its pair would close unseen for the rest of the step. So this zone's are queried
-        // again at T: such a contact comes back as an event, marked as back for this failure,
-        // which metAgain_ counted once.
-        takeUnsolved(scene, zone, [&](uint64_t key) {
-          const PairParticles pair = pairParticles(scene, key);
-          for (int k = 0; k < pair.count; ++k)
-            if (!scene.isFixed(pair.p[k])) changed.push_back(pair.p[k]);
-          requeried_[*rowOf_.find(key)] = 1;
-        });
+        takeUnsolved(scene, zone, requery);  // a failure: metAgain counted it once
       } else if (waiting_.empty()) {
         unsolved_.clear();  // every row settled, whichever zone's
       } else {
@@ -233,6 +243,10 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
       }
     } else {
       z.rigid = 1;
+      // Rigid motion projects the zone's velocities, warm starts included: what those added
+      // (here, or to other zones' bodies waiting at this instant, which the transfer below
+      // carries too) is taken back first.
+      stats.energyCaps += projector_.capEnergy() < 1.0;
     }
     if (z.rigid) moveRigidly(scene, motion, zone, T);
     moved_.clear();
