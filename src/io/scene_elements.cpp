@@ -69,6 +69,14 @@ void readParticle(ElementReader& r, Builder& b) {
   const Vec2 x = readVec(r, "px", "py"), v = readVec(r, "vx", "vy");
   p.fixed = r.flag("fixed");
   p.radius = r.number("radius");
+  // The course simulator moves a fixed particle at the velocity it starts with; the default
+  // mode's continuous-time and hybrid handling refuse one (EventHandler::fixedAtRest), at run
+  // time, where this line is no longer known.
+  if (p.fixed && v != Vec2::Zero())
+    b.messages.warn(r.line(), "moving fixed particle", "moving fixed particles",
+                    r.where(v.x() != 0.0 ? "vx" : "vy") +
+                        ": a fixed particle with a velocity moves at it, as in the course simulator (--compat); "
+                        "the default mode's continuous-time and hybrid handling stop at its first step");
   b.particles.push_back(p);
   b.positions.insert(b.positions.end(), {x.x(), x.y()});
   b.velocities.insert(b.velocities.end(), {v.x(), v.y()});
@@ -225,7 +233,7 @@ const std::vector<ElementSpec>& elementTable() {
         {"py", Kind::Number, "m", nullptr, "initial position, y", "1"},
         {"vx", Kind::Number, "m/s", nullptr, "initial velocity, x", "0"},
         {"vy", Kind::Number, "m/s", nullptr, "initial velocity, y", "0"},
-        {"fixed", Kind::Flag, "", nullptr, "1: the particle never moves (forces and collisions leave it)", "0"},
+        {"fixed", Kind::Flag, "", nullptr, "1: forces and collisions leave it; it keeps its initial velocity (the course simulator moves it at that velocity; the default mode's continuous-time and hybrid handling need it 0)", "0"},
         {"radius", Kind::Positive, "m", "0.1", "disk radius (collisions and pictures)", "0.1"}},
        readParticle},
       {"edge", "Bodies", false, Repeat::Adds,

@@ -111,7 +111,9 @@ TEST(SceneLoader, LenientAttributeSyntaxOfTheCourseScenes) {
   EXPECT_EQ(f.initial.v[1], -1.0);
   EXPECT_TRUE(f.scene.isFixed(0));
   EXPECT_EQ(f.scene.radius[0], 0.2);
-  EXPECT_TRUE(f.warnings.empty());
+  // Nothing about the syntax; only that this fixed particle moves (AMovingFixedParticleIsWarnedAbout).
+  ASSERT_EQ(f.warnings.size(), 1u);
+  EXPECT_NE(f.warnings[0].find("a fixed particle with a velocity"), std::string::npos) << f.warnings[0];
 }
 
 TEST(SceneLoader, NumberSpellings) {
@@ -214,6 +216,21 @@ TEST(SceneLoader, ForcesAreSummedInTheReferenceOrder) {
   VecX grad = VecX::Zero(4);
   others[1]->addGradient(f.scene, f.initial.x, f.initial.v, grad);
   EXPECT_EQ(grad[1], 1.0);  // -F_y = -m g_y = 1 for particle 0 (m = 1)
+}
+
+// A fixed particle given a velocity moves at it in the course simulator (and --compat), but the
+// default mode's time-ordered handling refuses it at run time, where the line is not known: the
+// loader warns at the element, naming the first non-zero component. A fixed particle at rest,
+// or a moving free one, draws no warning.
+TEST(SceneLoader, AMovingFixedParticleIsWarnedAbout) {
+  const SceneFile moving = load(replaced(5, "  <particle m=\"2\" px=\"1\" py=\"0\" vx=\"0\" vy=\"-3\" fixed=\"1\"/>"));
+  ASSERT_EQ(moving.warnings.size(), 1u);
+  EXPECT_NE(moving.warnings[0].find(located(5, "particle", "vy") + ": a fixed particle with a velocity moves at it"),
+            std::string::npos)
+      << moving.warnings[0];
+  EXPECT_NE(moving.warnings[0].find("--compat"), std::string::npos) << moving.warnings[0];
+  EXPECT_TRUE(load(replaced(5, "  <particle m=\"2\" px=\"1\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"1\"/>")).warnings.empty());
+  EXPECT_TRUE(load(replaced(5, "  <particle m=\"2\" px=\"1\" py=\"0\" vx=\"5\" vy=\"0\" fixed=\"0\"/>")).warnings.empty());
 }
 
 TEST(SceneLoader, EverythingElse) {

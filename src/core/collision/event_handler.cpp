@@ -7,6 +7,7 @@
 #include "pair_query.h"
 
 #include <algorithm>
+#include <sstream>
 
 namespace fosssim {
 
@@ -25,6 +26,7 @@ EventHandler::EventHandler(const CollisionSettings& settings, int eventsPerParti
 
 Status EventHandler::handle(const Scene& scene, const State& start, State& state, StepContext& ctx) {
   const int n = scene.numParticles();
+  if (Status s = fixedAtRest(scene, start); !s) return s;
   if (ctx.log->polynomials.enabled()) logReferencePolynomials(scene, start, state, ctx);
   sleepers_.begin(scene, start, state, ctx.dt);  // sleepers back where they rest
   motion_.begin(start.x, state.x, threads_);
@@ -248,6 +250,32 @@ void EventHandler::respond(const Scene& scene, const Event& e, State& state, Ste
 void EventHandler::logReferencePolynomials(const Scene& scene, const State& start, const State& state,
                                            StepContext& ctx) {
   logger_.forEachCollision(scene, start.x, state.x, &ctx.log->polynomials, [](const Collision&) {});
+}
+
+// Scene::fixed says a fixed particle never moves, and the contacts here rely on it: a zone against
+// a fixed particle stops, a jam stops the particles it pins, a held particle waits, each of
+// them at rest. The reference's integrators move a fixed particle at the velocity it starts
+// with (x += h v, its force zeroed), so a scene can give one a velocity; here it would plough
+// through the disks its contacts stopped (a 4 m/s fixed disk pushing two disks into a wall left
+// 14 pairs overlapping in 50 steps), so the step fails with a message instead.
+Status EventHandler::fixedAtRest(const Scene& scene, const State& start) {
+  if (fixedListOf_ != scene.fixed.data() || fixedListSize_ != scene.fixed.size()) {
+    fixedList_.clear();
+    for (size_t p = 0; p < scene.fixed.size(); ++p)
+      if (scene.fixed[p]) fixedList_.push_back(static_cast<int>(p));
+    fixedListOf_ = scene.fixed.data();
+    fixedListSize_ = scene.fixed.size();
+  }
+  for (int p : fixedList_) {
+    const Vec2 v = at(start.v, p);
+    if (v == Vec2::Zero()) continue;
+    std::ostringstream s;
+    s << "particle " << p << " is fixed but moves (velocity (" << v.x() << ", " << v.y() << ")): the default mode "
+      << "keeps pairs apart only against fixed particles at rest; give it velocity 0, or run with --compat, whose "
+      << "fixed particles move at their initial velocity as the course simulator's do";
+    return Status::error(s.str());
+  }
+  return Status::ok();
 }
 
 int EventHandler::zoneOf(int particle) const {
