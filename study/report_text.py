@@ -26,7 +26,8 @@ contacts as README.md ("Contacts in the default mode") promises, and this run me
   time: {promise_order}
 - **No energy gained with COR ≤ 1.** Impulses that meet at one instant are applied one after
   another, never summed from stale velocities, and the failsafe (inelastic projection of a zone's
-  velocities) can only take energy away: {promise_energy}
+  velocities; warm starts that a solve leaves adding energy are scaled back) can only take energy
+  away: {promise_energy}
 - **No tunnelling.** Every candidate pair is queried over the whole step, again after every
   impulse: {promise_tunnel}
 - **Momentum and angular momentum** change only by impulses along the line through the contact:
