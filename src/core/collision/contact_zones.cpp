@@ -45,6 +45,7 @@ void ContactZones::reset(int n) {
   waiting_.clear();
   requeried_.clear();
   broughtForward_.clear();
+  curving_.clear();
   solvedRows_ = 0;
   projector_.reset(n);
 }
@@ -236,10 +237,24 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
         projector_.unqueueIf(memberOf(zone));
         projector_.takeQueued(waiting_);
         takeUnsolved(scene, zone, requery);  // a failure: metAgain counted it once
-      } else if (waiting_.empty()) {
-        unsolved_.clear();  // every row settled, whichever zone's
       } else {
-        takeUnsolved(scene, zone, [](uint64_t) {});  // this zone's settled; the rows set aside wait
+        // A curving contact's row has its normal where the overlap would be deepest, and there
+        // the overlap's rate is 0: the row can hold with nothing changed while the pair still
+        // overlaps (dense packs with short edges ended 1e-7 deep). Such a contact is queried
+        // again at T, and coming back it counts as met again: one that no row settles ends in a
+        // jam, whose stop leaves it apart.
+        const auto again = [&](uint64_t key) {
+          if (!curving_[*rowOf_.find(key)]) return;
+          const PairParticles pair = pairParticles(scene, key);
+          for (int k = 0; k < pair.count; ++k)
+            if (!scene.isFixed(pair.p[k])) changed.push_back(pair.p[k]);
+        };
+        if (waiting_.empty()) {  // every row settled, whichever zone's
+          for (uint64_t key : unsolved_) again(key);
+          unsolved_.clear();
+        } else {
+          takeUnsolved(scene, zone, again);  // this zone's settled; the rows set aside wait
+        }
       }
     } else {
       z.rigid = 1;

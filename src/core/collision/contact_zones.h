@@ -287,6 +287,9 @@ class ContactZones {
   /// instant if it closes within the step (solvesNow). Cleared when the row is set again.
   std::vector<char> requeried_;
   std::vector<char> broughtForward_;  ///< per projector row: solvesNow said yes in this step
+  /// Per projector row: its normal is where its contact would overlap deepest (a contact that
+  /// deepens without closing: an edge rotating into a particle). See resolve.
+  std::vector<char> curving_;
   std::vector<int> queue_;
   std::vector<uint64_t> keys_;
   std::vector<int> moved_;

@@ -128,9 +128,16 @@ Status EventHandler::detectChanged(const Scene& scene, double T, StepContext& ct
   for (uint64_t key : keys_)
     if (Status s = query(scene, key, T, *ctx.stats, found_); !s) return s;
   // A contact that a zone's budget-ended solve left closing joins the zone at this instant,
-  // not at its own time (ContactZones::solvesNow).
-  for (Event& e : found_)
-    if (e.t > T && zones_.solvesNow(e.key)) e.t = T;
+  // not at its own time (ContactZones::solvesNow). It stays queued at its own time too: at this
+  // instant it may be neither touching nor closing (an edge rotating toward a particle it meets
+  // later in the step), and then nothing here constrains it; if the zone's solve changes its
+  // particles, that copy is stale and dropped.
+  const size_t found = found_.size();
+  for (size_t k = 0; k < found; ++k)
+    if (found_[k].t > T && zones_.solvesNow(found_[k].key)) {
+      found_.push_back(found_[k]);
+      found_.back().t = T;
+    }
   pushEvents(found_);
   return Status::ok();
 }

@@ -78,12 +78,14 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
     alpha = math::segmentParameterClamped(motion.at(keyParticle(key), T), motion.at(e.i, T), motion.at(e.j, T));
   }
   const auto rate = [&](int p) { return motion.rate(p); };
-  if (deepest >= 0.0) {  // the caller found it deepening already
+  bool curving = deepest >= 0.0;
+  if (curving) {  // the caller found it deepening already
     row = contactRow(scene, key, [&](int p) { return motion.at(p, deepest); }, n);
   } else if (const double closing = closingSpeed(scene, key, n, alpha, rate, scale);
              closing <= kRestingClosingFraction * scale) {
     const double td = deepeningTime(scene, key, [&](int p, double t) { return motion.at(p, t); }, closing, T);
-    if (td >= 0.0) row = contactRow(scene, key, [&](int p) { return motion.at(p, td); }, n);
+    curving = td >= 0.0;
+    if (curving) row = contactRow(scene, key, [&](int p) { return motion.at(p, td); }, n);
   }
   if (n == Vec2::Zero()) return false;  // coincident centres: no direction to keep apart along
   if (const int* known = rowOf_.find(key)) {
@@ -93,6 +95,7 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
     if (*known >= solvedRows_) return false;
     projector_.setRow(*known, row, z);
     requeried_[*known] = 0;
+    curving_[*known] = curving;
     unsolved_.push_back(key);
     return false;
   }
@@ -101,6 +104,7 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
   ++record.rowCount;
   requeried_.push_back(0);
   broughtForward_.push_back(0);
+  curving_.push_back(curving);
   unsolved_.push_back(key);
   return true;
 }
