@@ -135,6 +135,30 @@ TEST(ContactPhysicsRandom, DensePacksNeverGainKineticEnergy) {
   }
 }
 
+// A pack of 16-100 disks for the two tests below (DensePacksWithShortEdgesStayApart says what is
+// in it), every length and speed multiplied by `scale`.
+TestScene packWithShortEdges(int pack, double scale = 1.0) {
+  const double cors[] = {0.0, 0.5, 1.0};
+  Rng rng(5000 + pack);
+  TestScene s = contactScene(kEventTypes[pack % 2], cors[(pack / 2) % 3]);
+  const int side = 4 + pack % 7;
+  const double r = 0.05, gap = uniform(rng, 0.0005, 0.01);
+  for (int i = 0; i < side; ++i)
+    for (int j = 0; j < side; ++j) {
+      const Vec2 p(-0.8 + (2 * r + gap) * i + (j % 2) * (r + gap / 2), -0.8 + (2 * r + gap) * 0.87 * j);
+      const double radius = r * uniform(rng, 0.9, 1.0);
+      Vec2 v(uniform(rng, -1, 1), uniform(rng, -1, 1));
+      v *= uniform(rng, 0, 1) < 0.3 ? 20.0 : 2.0;
+      const double m = uniform(rng, 0.5, 2.0);
+      if (p.x() > 0.85 || p.y() > 0.85) continue;
+      addBody(s, m, scale * p, scale * v, scale * radius);
+    }
+  for (int k = 0; k + 1 < s.state.numParticles(); k += 3) s.scene.edges.push_back(Edge{k, k + 1, scale * 0.01});
+  const Vec2 walls[] = {Vec2(1, 0), Vec2(-1, 0), Vec2(0, 1), Vec2(0, -1)};
+  for (const Vec2& w : walls) s.scene.halfplanes.push_back(HalfPlane{-0.95 * scale * w, uniform(rng, 0.1, 10) * w});
+  return s;
+}
+
 // 1f. Dense packs threaded with short edges: 60 packs of 16-100 disks as above (none fixed), every
 // third disk joined to the next by an edge of radius 0.01 (a capsule between neighbours), over 60
 // steps with the default budget. Edges rotate, so a contact can deepen without closing. Before
@@ -145,28 +169,10 @@ TEST(ContactPhysicsRandom, DensePacksNeverGainKineticEnergy) {
 // changed while the pair still overlapped (1 pack, 1e-7 deep). Kinetic energy must not grow
 // either.
 TEST(ContactPhysicsRandom, DensePacksWithShortEdgesStayApart) {
-  const double cors[] = {0.0, 0.5, 1.0};
   for (int pack = 0; pack < 60; ++pack) {
-    Rng rng(5000 + pack);
-    const char* type = kEventTypes[pack % 2];
-    TestScene s = contactScene(type, cors[(pack / 2) % 3]);
-    const int side = 4 + pack % 7;
-    const double r = 0.05, gap = uniform(rng, 0.0005, 0.01);
-    for (int i = 0; i < side; ++i)
-      for (int j = 0; j < side; ++j) {
-        const Vec2 p(-0.8 + (2 * r + gap) * i + (j % 2) * (r + gap / 2), -0.8 + (2 * r + gap) * 0.87 * j);
-        const double radius = r * uniform(rng, 0.9, 1.0);
-        Vec2 v(uniform(rng, -1, 1), uniform(rng, -1, 1));
-        v *= uniform(rng, 0, 1) < 0.3 ? 20.0 : 2.0;
-        const double m = uniform(rng, 0.5, 2.0);
-        if (p.x() > 0.85 || p.y() > 0.85) continue;
-        addBody(s, m, p, v, radius);
-      }
-    for (int k = 0; k + 1 < s.state.numParticles(); k += 3) s.scene.edges.push_back(Edge{k, k + 1, 0.01});
-    const Vec2 walls[] = {Vec2(1, 0), Vec2(-1, 0), Vec2(0, 1), Vec2(0, -1)};
-    for (const Vec2& w : walls) s.scene.halfplanes.push_back(HalfPlane{-0.95 * w, uniform(rng, 0.1, 10) * w});
-    SCOPED_TRACE(std::string(type) + " pack " + std::to_string(pack) + " of " + std::to_string(s.state.numParticles()) +
-                 " disks, COR " + std::to_string(s.scene.collision.cor));
+    TestScene s = packWithShortEdges(pack);
+    SCOPED_TRACE(std::string(kEventTypes[pack % 2]) + " pack " + std::to_string(pack) + " of " +
+                 std::to_string(s.state.numParticles()) + " disks, COR " + std::to_string(s.scene.collision.cor));
     auto sim = defaultModeSimulator(s);
     for (int k = 0; k < 60; ++k) {
       const double before = kinetic(s);
@@ -181,6 +187,24 @@ TEST(ContactPhysicsRandom, DensePacksWithShortEdgesStayApart) {
       }
     }
   }
+}
+
+// 5c. Units, where they matter most: 20 of those packs with every length and speed multiplied
+// by 2^30 and by 2^-30 (exact in binary) run bit for bit as the unscaled ones over 40 steps,
+// zones, holds, jams and energy caps included. Any absolute tolerance would break this.
+TEST(ContactPhysicsRandom, DensePacksScaledByPowersOfTwoRunTheSame) {
+  for (int pack = 0; pack < 20; ++pack)
+    for (int exponent : {-30, 30}) {
+      const double scale = std::ldexp(1.0, exponent);
+      TestScene a = packWithShortEdges(pack), b = packWithShortEdges(pack, scale);
+      auto simA = defaultModeSimulator(a), simB = defaultModeSimulator(b);
+      for (int k = 0; k < 40; ++k) {
+        ASSERT_TRUE(simA->step(a.scene, a.state).isOk());
+        ASSERT_TRUE(simB->step(b.scene, b.state).isOk());
+        ASSERT_EQ(a.state.x, b.state.x / scale) << "pack " << pack << " at 2^" << exponent << ", step " << k + 1;
+        ASSERT_EQ(a.state.v, b.state.v / scale) << "pack " << pack << " at 2^" << exponent << ", step " << k + 1;
+      }
+    }
 }
 
 // 2b. Thirty shots of three fast disks (20-200 m/s across a slot, so up to 40 bounces per step)
