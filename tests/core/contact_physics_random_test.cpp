@@ -17,6 +17,23 @@ using Rng = std::mt19937;
 double uniform(Rng& rng, double lo, double hi) { return lo + (hi - lo) * (rng() / 4294967296.0); }
 int uniformInt(Rng& rng, int lo, int hi) { return lo + static_cast<int>(rng() % static_cast<uint32_t>(hi - lo + 1)); }
 
+// Steps a scene without forces (kinetic energy is its only energy) until `steps` steps or the
+// first failure: a step that leaves a pair colliding (stepClean) or raises the kinetic energy.
+void stepCleanWithoutEnergyGain(Simulator& sim, TestScene& s, int steps) {
+  for (int k = 0; k < steps; ++k) {
+    const double before = kinetic(s);
+    const ::testing::AssertionResult clean = stepClean(sim, s);
+    if (!clean) {
+      ADD_FAILURE() << clean.message();
+      return;
+    }
+    if (kinetic(s) > before * (1 + 1e-12)) {
+      ADD_FAILURE() << "step " << k + 1 << ": kinetic energy " << before << " -> " << kinetic(s);
+      return;
+    }
+  }
+}
+
 const char* failsafeName(Failsafe f) { return f == Failsafe::Rigid ? "rigid" : "projection"; }
 
 // A random collision-free scene in the box [-1, 1]^2: 3-12 disks (some fixed), up to 3 edges
@@ -68,18 +85,7 @@ TEST(ContactPhysicsRandom, KineticEnergyNeverGrows) {
                      " COR " + std::to_string(s.scene.collision.cor));
         auto sim = defaultModeSimulator(s);
         // On a failure, go on with the next scene (so that a run lists every failing scene).
-        for (int k = 0; k < 25; ++k) {
-          const double before = kinetic(s);
-          const ::testing::AssertionResult clean = stepClean(*sim, s);
-          if (!clean) {
-            ADD_FAILURE() << clean.message();
-            break;
-          }
-          if (kinetic(s) > before * (1 + 1e-12)) {
-            ADD_FAILURE() << "step " << k + 1 << ": kinetic energy " << before << " -> " << kinetic(s);
-            break;
-          }
-        }
+        stepCleanWithoutEnergyGain(*sim, s, 25);
       }
     }
 }
@@ -120,18 +126,7 @@ TEST(ContactPhysicsRandom, DensePacksNeverGainKineticEnergy) {
                  " disks, COR " + std::to_string(s.scene.collision.cor) + ", budget " + std::to_string(budget) +
                  (hold ? ", holding" : ", no holding"));
     auto sim = defaultModeSimulator(s, true, budget, hold);
-    for (int k = 0; k < 80; ++k) {
-      const double before = kinetic(s);
-      const ::testing::AssertionResult clean = stepClean(*sim, s);
-      if (!clean) {
-        ADD_FAILURE() << clean.message();
-        break;
-      }
-      if (kinetic(s) > before * (1 + 1e-12)) {
-        ADD_FAILURE() << "step " << k + 1 << ": kinetic energy " << before << " -> " << kinetic(s);
-        break;
-      }
-    }
+    stepCleanWithoutEnergyGain(*sim, s, 80);
   }
 }
 
@@ -174,18 +169,7 @@ TEST(ContactPhysicsRandom, DensePacksWithShortEdgesStayApart) {
     SCOPED_TRACE(std::string(kEventTypes[pack % 2]) + " pack " + std::to_string(pack) + " of " +
                  std::to_string(s.state.numParticles()) + " disks, COR " + std::to_string(s.scene.collision.cor));
     auto sim = defaultModeSimulator(s);
-    for (int k = 0; k < 60; ++k) {
-      const double before = kinetic(s);
-      const ::testing::AssertionResult clean = stepClean(*sim, s);
-      if (!clean) {
-        ADD_FAILURE() << clean.message();
-        break;
-      }
-      if (kinetic(s) > before * (1 + 1e-12)) {
-        ADD_FAILURE() << "step " << k + 1 << ": kinetic energy " << before << " -> " << kinetic(s);
-        break;
-      }
-    }
+    stepCleanWithoutEnergyGain(*sim, s, 60);
   }
 }
 
