@@ -54,7 +54,9 @@ struct CollisionSettings {
 struct Scene {
   // --- particles: N of them -------------------------------------------------------------------
   VecX mass;                  ///< 2N: particle i's mass at rows 2i and 2i+1 (the diagonal of M)
-  std::vector<char> fixed;    ///< N: 1 if forces and collisions leave the particle (infinite mass): it keeps its velocity, which the default mode's time-ordered handling requires to be 0
+  /// N: 1 if forces and collisions leave the particle (infinite mass). It keeps its velocity,
+  /// which the default mode's time-ordered handling requires to be 0.
+  std::vector<char> fixed;
   std::vector<double> radius; ///< N: disk radius, > 0
 
   // --- other geometry -------------------------------------------------------------------------

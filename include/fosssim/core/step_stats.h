@@ -30,8 +30,8 @@ struct StepStats {
   int jammedParticles = 0;   ///< default mode: particles a jam against an obstacle stopped for the rest of the step
   int heldParticles = 0;     ///< default mode: particles held at rest by a budget-ended solve (stopped for the rest of the step)
   long zoneUpdates = 0;      ///< default mode: Gauss-Seidel updates of the failsafe's projection (the zones' solves)
-  /// default mode: zone solves after which the rows' changes, warm starts included, were scaled
-  /// back because they had added kinetic energy (ContactProjector::capEnergy)
+  /// default mode: zone solves and rigid moves at which the rows' changes since the last one, warm
+  /// starts included, were scaled back for adding kinetic energy (ContactProjector::capEnergy)
   int energyCaps = 0;
 
   void clear() { *this = StepStats{}; }

@@ -183,7 +183,8 @@ class ContactZones {
   void setSleepers(const Sleepers* sleepers) { sleepers_ = sleepers; }
 
   /// Whether the contact of pair `key`, found closing at a later time of the step, is to be
-  /// solved at the current instant instead; true at most once per contact and step. So it is
+  /// solved at the current instant too (its event also stays at its own time, for a contact that
+  /// is not closing yet at this instant); true at most once per contact and step. So it is
   /// for a contact that a budget-ended solve left closing (requeried, see requeried_): its row is
   /// in the zone already, the zone constrains it at its instant as it does every near pair, and
   /// the contacts one failed solve leaves then come back as one instant and one solve, not one

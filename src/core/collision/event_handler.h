@@ -13,7 +13,8 @@
 //            the impact zones of contact_zones.h, which stop them approaching without a loop;
 //            the contacts that reach the zones at one instant join them first, and the zones
 //            are solved once for the instant; the contacts a budget-ended solve leaves closing
-//            come back at its instant, together (ContactZones::solvesNow);
+//            come back at its instant, together (ContactZones::solvesNow), and at their own
+//            times as well (an edge rotating toward a particle meets it only there);
 //   sleep    particles at rest sleep: obstacles that cost nothing until woken (sleepers.h);
 //   finish   every particle ends its last straight piece at t = 1.
 // Free flight between events is exact and impulses act along the line through the contact, so
