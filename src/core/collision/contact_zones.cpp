@@ -217,10 +217,13 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
       // again where its bodies' velocities end unchanged, and its pair would close unseen for the
       // rest of the step. So this zone's are queried again at T: such a contact comes back as an
       // event, marked as back for this solve (not counted as met again).
-      const auto requery = [&](uint64_t key) {
+      const auto queryAgain = [&](uint64_t key) {
         const PairParticles pair = pairParticles(scene, key);
         for (int k = 0; k < pair.count; ++k)
           if (!scene.isFixed(pair.p[k])) changed.push_back(pair.p[k]);
+      };
+      const auto requery = [&](uint64_t key) {
+        queryAgain(key);
         requeried_[*rowOf_.find(key)] = 1;
       };
       if (!solved || capped) {
@@ -244,10 +247,7 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
         // again at T, and coming back it counts as met again: one that no row settles ends in a
         // jam, whose stop leaves it apart.
         const auto again = [&](uint64_t key) {
-          if (!curving_[*rowOf_.find(key)]) return;
-          const PairParticles pair = pairParticles(scene, key);
-          for (int k = 0; k < pair.count; ++k)
-            if (!scene.isFixed(pair.p[k])) changed.push_back(pair.p[k]);
+          if (curving_[*rowOf_.find(key)]) queryAgain(key);
         };
         if (waiting_.empty()) {  // every row settled, whichever zone's
           for (uint64_t key : unsolved_) again(key);

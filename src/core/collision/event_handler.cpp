@@ -252,21 +252,16 @@ void EventHandler::logReferencePolynomials(const Scene& scene, const State& star
   logger_.forEachCollision(scene, start.x, state.x, &ctx.log->polynomials, [](const Collision&) {});
 }
 
-// Scene::fixed says a fixed particle never moves, and the contacts here rely on it: a zone against
-// a fixed particle stops, a jam stops the particles it pins, a held particle waits, each of
-// them at rest. The reference's integrators move a fixed particle at the velocity it starts
-// with (x += h v, its force zeroed), so a scene can give one a velocity; here it would plough
-// through the disks its contacts stopped (a 4 m/s fixed disk pushing two disks into a wall left
-// 14 pairs overlapping in 50 steps), so the step fails with a message instead.
-Status EventHandler::fixedAtRest(const Scene& scene, const State& start) {
-  if (fixedListOf_ != scene.fixed.data() || fixedListSize_ != scene.fixed.size()) {
-    fixedList_.clear();
-    for (size_t p = 0; p < scene.fixed.size(); ++p)
-      if (scene.fixed[p]) fixedList_.push_back(static_cast<int>(p));
-    fixedListOf_ = scene.fixed.data();
-    fixedListSize_ = scene.fixed.size();
-  }
-  for (int p : fixedList_) {
+// The contacts here rely on fixed particles at rest: a zone against a fixed particle stops, a
+// jam stops the particles it pins, a held particle waits, each of them at rest. The reference's
+// integrators move a fixed particle at the velocity it starts with (x += h v, its force zeroed),
+// so a scene can give one a velocity; here it would plough through the disks its contacts
+// stopped (a 4 m/s fixed disk pushing two disks into a wall left 14 pairs overlapping in 50
+// steps), so the step fails with a message instead. One pass over the flags, as Sleepers::begin
+// makes every step.
+Status EventHandler::fixedAtRest(const Scene& scene, const State& start) const {
+  for (int p = 0; p < scene.numParticles(); ++p) {
+    if (!scene.isFixed(p)) continue;
     const Vec2 v = at(start.v, p);
     if (v == Vec2::Zero()) continue;
     std::ostringstream s;

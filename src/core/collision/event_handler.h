@@ -97,7 +97,7 @@ class EventHandler final : public CollisionHandler {
   /// An error naming the first fixed particle that starts the step moving, if any (the default
   /// mode keeps pairs apart against fixed particles at rest; the reference moves one at its
   /// initial velocity, and --compat does).
-  Status fixedAtRest(const Scene& scene, const State& start);
+  Status fixedAtRest(const Scene& scene, const State& start) const;
 
   double cor_;
   int eventsPerParticle_;
@@ -126,11 +126,6 @@ class EventHandler final : public CollisionHandler {
   std::vector<int> wakeFrom_;     ///< scratch: the sleepers or the movers wakeNearMoving searches from
   std::vector<uint64_t> keys_;    ///< scratch: pairs to query
   std::vector<char> inChanged_;   ///< N: whether the particle is in changed_ (detectChanged's scratch, all 0 between)
-  /// The fixed particles of the scene whose flags fixedList_ was made from (its flags' storage and
-  /// size): fixedAtRest reads these, not all N flags, in every step.
-  std::vector<int> fixedList_;
-  const char* fixedListOf_ = nullptr;
-  size_t fixedListSize_ = 0;
 };
 
 }  // namespace fosssim
