@@ -1,7 +1,7 @@
 // fosssim-bench: milliseconds per step by phase on the scalable scenes (bench_scenes.h), and
 // narrow-phase queries per second, on one core. Prints a table; --csv also writes the figures.
 //
-//   fosssim-bench [--sizes 1000,10000,100000] [--scenes rain,gas,chains,bullets] [--collision hybrid]
+//   fosssim-bench [--sizes 1000,10000,100000] [--scenes rain,gas,chains,bullets] [--collision hybrid] [--integrator NAME]
 //                 [--steps K] [--repeats R] [--all-pairs] [--compat] [--threads T] [--csv FILE] [--no-queries]
 //                 [--no-steps] [--alternatives] [--seed S] [--blocks] [--blocks-csv FILE]
 //                                                    (fosssim-bench -h says what each does)
@@ -45,6 +45,7 @@ struct Options {
   std::vector<int> sizes = {1000, 10000, 100000};
   std::vector<std::string> scenes = sceneKinds();
   std::string collision = "hybrid";
+  std::string integrator;  ///< empty: each scene's own (symplectic Euler)
   long steps = 0;  ///< 0: each scene's own length
   int repeats = 0;  ///< 0: 3 below 10^5 particles, 1 from there on
   bool allPairs = false;
@@ -122,6 +123,7 @@ Figures runScene(const Options& o, const std::string& kind, int n) {
     std::snprintf(f.error, sizeof f.error, "unknown scene %s", kind.c_str());
     return f;
   }
+  if (!o.integrator.empty()) s.scene.integrator = o.integrator;
   f.particles = s.scene.numParticles();
   f.edges = static_cast<int>(s.scene.edges.size());
   f.steps = o.steps > 0 ? o.steps : s.scene.numSteps();
@@ -271,6 +273,12 @@ void define(CLI::App& app, Options& o) {
                  "collision handling of every scene, one of " + cli::listed(collisionTypes()) + " (default hybrid)")
       ->option_text("TYPE")
       ->check(cli::oneOf("collision type", collisionTypes()));
+  std::vector<std::string> integrators;
+  for (const IntegratorEntry& entry : integratorTable()) integrators.push_back(entry.keyword);
+  app.add_option("--integrator", o.integrator,
+                 "integrator of every scene, one of " + cli::listed(integrators) + " (default: the scenes' symplectic-euler)")
+      ->option_text("NAME")
+      ->check(cli::oneOf("integrator", integrators));
   app.add_option("--steps", o.steps, "steps per run, 1 to 10^9 (default: each scene's own length)")
       ->option_text("K")
       ->check(cli::integerIn(1, 1000000000));
@@ -324,8 +332,8 @@ int main(int argc, char** argv) {
   }
   printMachine();
   if (o.stepTable) {
-    std::printf("ms per step by phase (%s handling, %d thread%s%s%s%s%s, seed %u; fastest of the repeated runs)\n",
-                o.collision.c_str(), o.threads, o.threads == 1 ? "" : "s", o.allPairs ? ", all pairs" : "",
+    std::printf("ms per step by phase (%s handling%s%s, %d thread%s%s%s%s%s, seed %u; fastest of the repeated runs)\n",
+                o.collision.c_str(), o.integrator.empty() ? "" : ", ", o.integrator.c_str(), o.threads, o.threads == 1 ? "" : "s", o.allPairs ? ", all pairs" : "",
                 o.compat ? ", --compat" : "", o.noSleep && !o.compat ? ", no sleeping" : "",
                 o.noHold && !o.compat ? ", no holding" : "", o.seed);
     std::printf("%-16s %7s %6s %9s %7s %7s %7s %7s %8s %8s | %9s %9s %6s %5s %6s %6s %6s %5s %5s %5s %7s %6s %8s\n", "scene", "N",
