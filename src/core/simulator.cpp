@@ -25,7 +25,7 @@ Status Simulator::create(const Scene& scene, const SimulatorOptions& options,
   sim->dt_ = scene.dt;
   sim->settings_ = scene.collision;
   sim->integrator_ = integrator->make();
-  sim->predictsEachAlone_ = !integrator->implicit;
+  sim->holdsResting_ = integrator->implicit;
   if (collision->make) sim->handler_ = collision->make(scene.collision, options.handler);
   sim->log_.polynomials.setEnabled(options.logPolynomials && collision->layout.polynomials);
   sim->forces_ = ForceContext(options.handler.allPairs, options.handler.threads);
@@ -113,10 +113,12 @@ Status Simulator::step(const Scene& scene, State& state, StepObserver* observer)
   copyState(state, start_, forces_.threads());
   {
     const StepTimer timer(timing_, stats_.integrate);
-    // Sleepers go back where they rest whatever is predicted for them; an explicit method
-    // predicts every other particle from its own force, which stays the same bit for bit. (The
-    // reference's polynomial log records every pair's predicted motion, sleepers' too.)
-    const bool restingKnown = handler_ && predictsEachAlone_ && !log_.polynomials.enabled();
+    // Sleepers go back where they rest whatever is predicted for them. An explicit method
+    // predicts every other particle from its own force, which stays the same bit for bit, and
+    // leaves the sleepers' predictions incomplete: not with the polynomial log, which records
+    // every pair's predicted motion, sleepers' too. An implicit method holds them where they rest
+    // (their prediction: at rest, which the log may record).
+    const bool restingKnown = handler_ && (holdsResting_ || !log_.polynomials.enabled());
     forces_.setResting(restingKnown ? handler_->restingAtStart(scene, start_) : nullptr);
     const Status s = integrator_->step(scene, state, dt, forces_);
     forces_.setResting(nullptr);

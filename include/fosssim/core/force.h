@@ -35,11 +35,13 @@ class ForceContext {
   PenaltyScratch& penaltyScratch();
 
   /// Particles whose force this evaluation nobody reads (size N, 1 for such a particle), or
-  /// null: all are read. A Simulator sets it around an explicit integrator's step to the
-  /// particles asleep at the step's start, which the step puts back where they rest whatever
-  /// was predicted, and to the fixed particles, whose force such a step zeroes. A force may then
+  /// null: all are read. A Simulator sets it around its integrator's step to the particles
+  /// asleep at the step's start, which the step puts back where they rest whatever was
+  /// predicted, and to the fixed particles, whose force an explicit step zeroes. A force may then
   /// leave out what acts on those particles only (the penalty force: pairs whose particles all
-  /// rest); every other particle's force stays bit for bit.
+  /// rest); every other particle's force stays bit for bit. The implicit integrators hold such
+  /// particles where they are, as fixed ones, and leave them out of their linear system
+  /// (src/core/integrators/implicit_system.h).
   void setResting(const std::vector<char>* resting) { resting_ = resting; }
   const std::vector<char>* resting() const { return resting_; }
 

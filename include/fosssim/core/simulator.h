@@ -75,9 +75,10 @@ class Simulator {
   double dt_ = 0;
   CollisionSettings settings_;
   std::unique_ptr<Integrator> integrator_;
-  /// The integrator predicts each particle from its own force alone (the explicit methods): the
-  /// forces may then leave out what acts only on particles the handler keeps at rest.
-  bool predictsEachAlone_ = false;
+  /// The integrator holds the particles the handler keeps at rest where they are (the implicit
+  /// methods: they leave the system); otherwise (the explicit methods, which predict each
+  /// particle from its own force alone) their forces may be left incomplete.
+  bool holdsResting_ = false;
   std::unique_ptr<CollisionHandler> handler_;  ///< null for "none" and "penalty"
   CollisionLog log_;
   StepStats stats_;

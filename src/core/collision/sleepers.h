@@ -3,10 +3,10 @@
 // A particle that has stayed still for kStepsToSleep steps falls asleep: from then on it is an
 // obstacle, like a fixed particle. The handler puts it back where the step started with zero
 // velocity (whatever the integrator predicted), queries no pair whose particles are all asleep or
-// fixed, and impulses and zones meet it with infinite mass. Under an explicit integrator the
-// forces between sleepers are not computed either (restingAtStart, ForceContext::resting), and a
-// step in which every movable particle sleeps builds no broad phase: a resting pile then costs
-// the step's passes over its particles and nothing else.
+// fixed, and impulses and zones meet it with infinite mass. The forces between sleepers are not
+// computed either (restingAtStart, ForceContext::resting), an implicit integrator leaves the
+// sleepers out of its linear system, and a step in which every movable particle sleeps builds no
+// broad phase: a resting pile then costs the step's passes over its particles and nothing else.
 //
 // What wakes a sleeper, and when (so that the default mode's promises hold):
 //   * a contact that hits it harder than resting contact does: an event whose closing speed

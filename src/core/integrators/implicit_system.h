@@ -7,6 +7,17 @@
 // (sum the Hessians, scale by h^2, add h times the damping Jacobians, add M; full-pivoting LU), so
 // implicit scenes reproduce its trajectories bit for bit. Larger ones, where a dense O(n^3) solve
 // would be unusable, use a sparse LU of the same matrix.
+//
+// Particles held at rest (ForceContext::resting: the default mode's sleepers, which the step puts
+// back where they rest) are solved for as fixed ones are, velocity change 0, but their rows and
+// columns leave the system instead of becoming the identity: a pile asleep then costs neither
+// forces nor a factorisation, and a pile partly asleep the system of its awake particles only.
+// In exact arithmetic that is the same solution as the identity rows give (an entry tying a
+// solved particle to a held one multiplies the held one's zero velocity change). With sleepers
+// held it is also what the awake particles get with the sleepers left free: no Jacobian ties a
+// sleeper to an awake particle, since particles tied at a distance sleep and wake together
+// (sleepers.h). The rounding is that of the smaller system, always factored by sparse LU.
+
 #pragma once
 
 #include "fosssim/core/integrator.h"
@@ -22,10 +33,11 @@ using SparseMat = Eigen::SparseMatrix<double>;
 class ImplicitSystem {
  public:
   /// Assembles and factors the system at (x, v) for step h, with right-hand side
-  /// h F(x, v) - M dvCurrent. Returns an error if the matrix is singular.
+  /// h F(x, v) - M dvCurrent, over the particles that are neither fixed nor held at rest
+  /// (forces.resting(), see above). Returns an error if the matrix is singular.
   Status assemble(const Scene& scene, const VecX& x, const VecX& v, double h, const VecX& dvCurrent,
                   ForceContext& forces);
-  /// Solves for delta with the last assembled system.
+  /// Solves for delta (size 2N; 0 for fixed and held particles) with the last assembled system.
   const VecX& solve();
 
   /// Systems with at most this many degrees of freedom (2 per particle) are solved densely.
@@ -34,9 +46,18 @@ class ImplicitSystem {
  private:
   Status assembleDense(const Scene& scene, double h);
   Status assembleSparse(const Scene& scene, double h);
+  /// The system of the solved particles only (with particles held at rest).
+  Status assembleReduced(const Scene& scene, double h);
+  /// Factors the n x n matrix of entries_ (summed) by sparse LU.
+  Status factorSparse(Eigen::Index n);
 
   Triplets jacobianX_, jacobianV_, entries_;
   bool dense_ = true;
+  /// Whether the last assembly held particles at rest (the reduced system); then per particle
+  /// its index among the solved particles (-1: fixed or held), and the solved particles in order.
+  bool reduced_ = false;
+  std::vector<int> slot_, solved_;
+  VecX reducedRhs_;
   Eigen::MatrixXd denseMatrix_, denseDamping_;
   Eigen::FullPivLU<Eigen::MatrixXd> denseLu_;
   SparseMat matrix_;
