@@ -28,13 +28,16 @@ std::string shortNumber(double value) {
 Status ImplicitSystem::assemble(const Scene& scene, const VecX& x, const VecX& v, double h,
                                 const VecX& dvCurrent, ForceContext& forces) {
   const int n = scene.numParticles();
-  const std::vector<char>* held = forces.resting();
-  reduced_ = held && static_cast<int>(held->size()) == n;
-  if (reduced_) {
+  const std::vector<char>* resting = forces.resting();
+  const char* held = resting && static_cast<int>(resting->size()) == n ? resting->data() : nullptr;
+  // The reference's dense solve where it reproduces the reference (nothing held, a small system);
+  // otherwise the solved particles' system.
+  dense_ = !held && x.size() <= kMaxDenseDofs;
+  if (!dense_) {
     slot_.assign(n, -1);
     solved_.clear();
     for (int i = 0; i < n; ++i)
-      if (!scene.isFixed(i) && !(*held)[i]) slot_[i] = static_cast<int>(solved_.size()), solved_.push_back(i);
+      if (!scene.isFixed(i) && !(held && held[i])) slot_[i] = static_cast<int>(solved_.size()), solved_.push_back(i);
     if (solved_.empty()) return Status::ok();  // nothing moves: no forces, no system
   }
   // Right-hand side h F - M dv.
@@ -48,16 +51,14 @@ Status ImplicitSystem::assemble(const Scene& scene, const VecX& x, const VecX& v
     force->addJacobianX(scene, x, v, jacobianX_);
     force->addJacobianV(scene, x, v, jacobianV_);
   }
-  if (reduced_) return assembleReduced(scene, h);
-  // Fixed particles' velocity changes are zero: identity rows, zero right-hand side.
-  for (int i = 0; i < n; ++i)
-    if (scene.isFixed(i)) at(rhs_, i).setZero();
-  dense_ = x.size() <= kMaxDenseDofs;
   return dense_ ? assembleDense(scene, h) : assembleSparse(scene, h);
 }
 
+// Fixed particles' velocity changes are zero: identity rows and columns, zero right-hand side.
 Status ImplicitSystem::assembleDense(const Scene& scene, double h) {
   const Eigen::Index n = rhs_.size();
+  for (int i = 0; i < scene.numParticles(); ++i)
+    if (scene.isFixed(i)) at(rhs_, i).setZero();
   denseMatrix_.setZero(n, n);
   denseDamping_.setZero(n, n);
   for (const auto& t : jacobianX_) denseMatrix_(t.row(), t.col()) += t.value();
@@ -77,27 +78,12 @@ Status ImplicitSystem::assembleDense(const Scene& scene, double h) {
   return Status::ok();
 }
 
-Status ImplicitSystem::assembleSparse(const Scene& scene, double h) {
-  const Eigen::Index n = rhs_.size();
-  auto fixedDof = [&](Eigen::Index r) { return scene.isFixed(static_cast<int>(r / 2)); };
-  entries_.clear();
-  entries_.reserve(jacobianX_.size() + jacobianV_.size() + n);
-  for (const auto& t : jacobianX_)
-    if (!fixedDof(t.row()) && !fixedDof(t.col())) entries_.emplace_back(t.row(), t.col(), h * h * t.value());
-  for (const auto& t : jacobianV_)
-    if (!fixedDof(t.row()) && !fixedDof(t.col())) entries_.emplace_back(t.row(), t.col(), h * t.value());
-  for (Eigen::Index r = 0; r < n; ++r) entries_.emplace_back(r, r, fixedDof(r) ? 1.0 : scene.mass[r]);
-  return factorSparse(n);
-}
-
 // The solved particles' rows and columns, renumbered in their order; the entries that tie one
 // to a fixed or held particle multiply that particle's zero velocity change and are left out.
-// Always sparse: the dense solve is there to reproduce the reference's rounding, which a
-// reduced system does not have anyway, and a few hundred particles awake in a sleeping pile
-// would pay its O(n^3).
-Status ImplicitSystem::assembleReduced(const Scene& scene, double h) {
+// With every particle solved this is the full matrix, entry for entry.
+Status ImplicitSystem::assembleSparse(const Scene& scene, double h) {
   const Eigen::Index n = 2 * static_cast<Eigen::Index>(solved_.size());
-  auto reducedDof = [&](Eigen::Index r) -> Eigen::Index {
+  auto solvedDof = [&](Eigen::Index r) -> Eigen::Index {
     const int s = slot_[static_cast<size_t>(r / 2)];
     return s < 0 ? -1 : 2 * s + r % 2;
   };
@@ -105,26 +91,21 @@ Status ImplicitSystem::assembleReduced(const Scene& scene, double h) {
   entries_.reserve(jacobianX_.size() + jacobianV_.size() + n);
   auto add = [&](const Triplets& jacobian, double scale) {
     for (const auto& t : jacobian) {
-      const Eigen::Index r = reducedDof(t.row()), c = reducedDof(t.col());
+      const Eigen::Index r = solvedDof(t.row()), c = solvedDof(t.col());
       if (r >= 0 && c >= 0) entries_.emplace_back(r, c, scale * t.value());
     }
   };
   add(jacobianX_, h * h);
   add(jacobianV_, h);
-  reducedRhs_.resize(n);
+  solvedRhs_.resize(n);
   for (size_t s = 0; s < solved_.size(); ++s) {
     const int i = solved_[s];
     for (int d = 0; d < 2; ++d) {
       const Eigen::Index r = 2 * static_cast<Eigen::Index>(s) + d;
       entries_.emplace_back(r, r, scene.mass[2 * i + d]);
-      reducedRhs_[r] = rhs_[2 * i + d];
+      solvedRhs_[r] = rhs_[2 * i + d];
     }
   }
-  return factorSparse(n);
-}
-
-Status ImplicitSystem::factorSparse(Eigen::Index n) {
-  dense_ = false;
   matrix_.resize(n, n);
   matrix_.setFromTriplets(entries_.begin(), entries_.end());
   lu_.compute(matrix_);
@@ -134,14 +115,14 @@ Status ImplicitSystem::factorSparse(Eigen::Index n) {
 }
 
 const VecX& ImplicitSystem::solve() {
-  if (!reduced_) {
-    delta_ = dense_ ? VecX(denseLu_.solve(rhs_)) : VecX(lu_.solve(rhs_));
+  if (dense_) {
+    delta_ = denseLu_.solve(rhs_);
     return delta_;
   }
   delta_.setZero(2 * static_cast<Eigen::Index>(slot_.size()));
   if (solved_.empty()) return delta_;
-  const VecX reduced = lu_.solve(reducedRhs_);
-  for (size_t s = 0; s < solved_.size(); ++s) at(delta_, solved_[s]) = at(reduced, static_cast<int>(s));
+  const VecX solved = lu_.solve(solvedRhs_);
+  for (size_t s = 0; s < solved_.size(); ++s) at(delta_, solved_[s]) = at(solved, static_cast<int>(s));
   return delta_;
 }
 

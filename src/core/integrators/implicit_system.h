@@ -4,19 +4,20 @@
 // particles' rows and columns replaced by the identity and a zero right-hand side.
 //
 // Small systems are solved densely, assembled and factored exactly as the course's reference does
-// (sum the Hessians, scale by h^2, add h times the damping Jacobians, add M; full-pivoting LU), so
-// implicit scenes reproduce its trajectories bit for bit. Larger ones, where a dense O(n^3) solve
-// would be unusable, use a sparse LU of the same matrix.
+// (sum the Hessians, scale by h^2, add h times the damping Jacobians, add M; full-pivoting LU, fixed
+// particles' rows and columns the identity), so implicit scenes reproduce its trajectories bit for
+// bit. Larger ones, where a dense O(n^3) solve would be unusable, use a sparse LU of the same
+// system with the fixed particles' rows and columns left out (their velocity change is 0).
 //
 // Particles held at rest (ForceContext::resting: the default mode's sleepers, which the step puts
-// back where they rest) are solved for as fixed ones are, velocity change 0, but their rows and
-// columns leave the system instead of becoming the identity: a pile asleep then costs neither
-// forces nor a factorisation, and a pile partly asleep the system of its awake particles only.
-// In exact arithmetic that is the same solution as the identity rows give (an entry tying a
-// solved particle to a held one multiplies the held one's zero velocity change). With sleepers
-// held it is also what the awake particles get with the sleepers left free: no Jacobian ties a
-// sleeper to an awake particle, since particles tied at a distance sleep and wake together
-// (sleepers.h). The rounding is that of the smaller system, always factored by sparse LU.
+// back where they rest) are left out the same way, and then the system is always sparse: a pile
+// asleep costs neither forces nor a factorisation, and a pile partly asleep the system of its
+// awake particles only (the dense solve is there for the reference's rounding, which such a
+// system does not have anyway, and a few hundred awake particles would pay its O(n^3)).
+// Leaving a particle out is the same, in exact arithmetic, as its identity row (an entry tying a
+// solved particle to it multiplies its zero velocity change). With sleepers held it is also what
+// the awake particles get with the sleepers left free: no Jacobian ties a sleeper to an awake
+// particle, since particles tied at a distance sleep and wake together (sleepers.h).
 
 #pragma once
 
@@ -45,19 +46,15 @@ class ImplicitSystem {
 
  private:
   Status assembleDense(const Scene& scene, double h);
+  /// The sparse system of the solved particles (slot_, solved_).
   Status assembleSparse(const Scene& scene, double h);
-  /// The system of the solved particles only (with particles held at rest).
-  Status assembleReduced(const Scene& scene, double h);
-  /// Factors the n x n matrix of entries_ (summed) by sparse LU.
-  Status factorSparse(Eigen::Index n);
 
   Triplets jacobianX_, jacobianV_, entries_;
   bool dense_ = true;
-  /// Whether the last assembly held particles at rest (the reduced system); then per particle
-  /// its index among the solved particles (-1: fixed or held), and the solved particles in order.
-  bool reduced_ = false;
+  /// For the sparse system: per particle its index among the solved particles (-1: fixed or
+  /// held), the solved particles in order, and their right-hand side.
   std::vector<int> slot_, solved_;
-  VecX reducedRhs_;
+  VecX solvedRhs_;
   Eigen::MatrixXd denseMatrix_, denseDamping_;
   Eigen::FullPivLU<Eigen::MatrixXd> denseLu_;
   SparseMat matrix_;
