@@ -69,6 +69,7 @@ void ContactProjector::setRow(int index, const ConstraintRow& row, int group) {
   replaced_[index] += k.lambda;
   k.r = row;
   k.group = group;
+  k.epoch = epoch_;
   k.diag = 0;
   k.lambda = 0;
   double normSquared = 0;
@@ -149,8 +150,10 @@ FOSSSIM_ALWAYS_INLINE inline void ContactProjector::queueRowsOf(int slot, int ex
 // One Gauss-Seidel step on row k (ZoneProjector's, in velocity form): w = G_k v, then
 // lambda' = max(0, lambda - w / A_kk) and v_b += w_b coef_b (lambda' - lambda). Its residual
 // |min(A_kk lambda, w)| / (|G_k| V) is zero exactly when the row is satisfied and complementary.
-bool ContactProjector::solve(const double* groupScale, double factor, double tolerance, long maxUpdates) {
+bool ContactProjector::solve(const double* groupScale, double factor, double tolerance, long maxUpdates,
+                             RowSource* source) {
   long updates = 0;
+  ConstraintRow now;
   while (head_ < tail_) {
     const int k = work_[head_++];
     Row& row = row_[k];
@@ -163,6 +166,13 @@ bool ContactProjector::solve(const double* groupScale, double factor, double tol
     // inlined, and this loop is the failsafe's.
     const double reached = row.diag * row.lambda <= w || std::isnan(w) ? row.diag * row.lambda : w;
     if (std::fabs(reached) <= threshold) continue;
+    if (source != nullptr && row.epoch != epoch_) {  // stale: made again first (RowSource)
+      if (source->rowNow(k, now)) {
+        setRow(k, now, row.group);  // queued again, to be looked at with its new normal
+        continue;
+      }
+      row.epoch = epoch_;  // kept as it is for this instant
+    }
     if (++updates > maxUpdates) {  // row k stays queued, at the front, with the rest
       queued_[k] = 1;
       --head_;

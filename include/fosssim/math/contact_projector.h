@@ -25,6 +25,25 @@ namespace fosssim::math {
 
 class ContactProjector {
  public:
+  /// Makes a stale row again for the current instant. Why: an impulse conserves angular momentum
+  /// only if it acts along the line through the contact at the instant it is applied. A row
+  /// keeps the normal (and, for an edge, the contact's parameter) of the instant it was set; a
+  /// later solve that changes its multiplier would push along a line the bodies have since left
+  /// (an oblique pair in a zone turned its line of centres, and L moved by 1e-7 of its scale in
+  /// packs of disks, by up to 9% with edges). Made again, the row is replaced as setRow replaces
+  /// it (its impulse so far stays applied, from the instant it acted), and what changes now acts
+  /// along the line of now.
+  class RowSource {
+   public:
+    /// Row `index` as of the current instant, in `out` (bodies by id, as addRow takes them);
+    /// false keeps the row as it is for this instant (a row whose normal the caller chose
+    /// deliberately, or with no direction now).
+    virtual bool rowNow(int index, ConstraintRow& out) = 0;
+
+   protected:
+    ~RowSource() = default;
+  };
+
   /// Forgets every body and row; bodies are indices 0..capacity-1.
   void reset(int capacity);
 
@@ -59,7 +78,15 @@ class ContactProjector {
   /// V = factor * groupScale[group of k]. Independent problems can then share the worklist (no
   /// body in two groups' rows moves) and each still settle to its own tolerance: under one
   /// scale, the largest group's would let a slow group's approaching rows pass as settled.
-  bool solve(const double* groupScale, double factor, double tolerance, long maxUpdates);
+  /// With a `source`, a row set before the current instant (beginInstant) is first made again
+  /// by the source before its multiplier changes (see RowSource).
+  bool solve(const double* groupScale, double factor, double tolerance, long maxUpdates,
+             RowSource* source = nullptr);
+
+  /// Rows set from now on belong to a new instant of the caller's time; those set before are
+  /// stale: a solve with a RowSource asks for them again before it changes their multipliers.
+  void beginInstant() { ++epoch_; }
+
 
   /// Drops from the queue every row with a movable body b for which dropBody(b) holds (a solve
   /// that spent its budget leaves its rows queued: a caller solving independent problems drops
@@ -151,6 +178,7 @@ class ContactProjector {
     double norm = 0;        ///< |G_k|
     double lambda = 0;
     int group = 0;          ///< index into solve's groupScale
+    long epoch = 0;         ///< the instant (beginInstant's count) it was set at
   };
   void apply(int k, double lambda);
   /// Row k's multiplier is about to change: remembers where it started (capEnergy).
@@ -194,6 +222,7 @@ class ContactProjector {
   std::vector<double> startLambda_, startReplaced_;
   std::vector<int> touched_;
   long updates_ = 0;          ///< see updates()
+  long epoch_ = 0;            ///< instants begun (beginInstant); rows carry the one they were set at
 };
 
 }  // namespace fosssim::math

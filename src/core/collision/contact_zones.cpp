@@ -46,6 +46,8 @@ void ContactZones::reset(int n) {
   requeried_.clear();
   broughtForward_.clear();
   curving_.clear();
+  rowKey_.clear();
+  instant_ = -1;
   solvedRows_ = 0;
   projector_.reset(n);
 }
@@ -170,6 +172,8 @@ int ContactZones::grow(const Scene& scene, const StepMotion& motion, const PairC
 // stops growing (Harmon et al.'s merge-and-project loop, at one instant) or moves rigidly.
 void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidates& candidates, int zone, double T,
                            double h, VecX& v, std::vector<int>& changed, StepStats& stats) {
+  atInstant(T);
+  RowsAt rowsNow(*this, scene, motion, T);
   for (;;) {
     zone = root(zone);
     ZoneRecord& z = record_[zone];  // until growth below merges it
@@ -203,7 +207,7 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
       // chains 2,500, --verify). A root merged into another since keeps the smaller scale it had
       // (scales only grow within a step), so its rows are held, if anything, tighter.
       const long before = projector_.updates();
-      const bool solved = projector_.solve(rateScale_.data(), 1.0 / h, kZoneProjectionTolerance, budget);
+      const bool solved = projector_.solve(rateScale_.data(), 1.0 / h, kZoneProjectionTolerance, budget, &rowsNow);
       stats.zoneUpdates += projector_.updates() - before;
       // No energy from the zones: the warm starts applied since the last solve (and the rows'
       // changes to other zones' bodies waiting at this instant) are taken back as far as this

@@ -214,6 +214,26 @@ class ContactZones {
   template <class Position>
   math::ConstraintRow contactRow(const Scene& scene, uint64_t key, Position&& position, Vec2& normal) const;
   bool near(const Scene& scene, const StepMotion& motion, uint64_t key, double T) const;
+  /// Rows set from here on are of instant T (the projector's beginInstant when T is new).
+  void atInstant(double T) {
+    if (T == instant_) return;
+    instant_ = T;
+    projector_.beginInstant();
+  }
+  /// The projector's source of rows made again at instant T (ContactProjector::RowSource): a
+  /// contact's row with its particles where they are at T; a curving row keeps its normal.
+  class RowsAt final : public math::ContactProjector::RowSource {
+   public:
+    RowsAt(const ContactZones& zones, const Scene& scene, const StepMotion& motion, double T)
+        : zones_(zones), scene_(scene), motion_(motion), T_(T) {}
+    bool rowNow(int index, math::ConstraintRow& out) override;
+
+   private:
+    const ContactZones& zones_;
+    const Scene& scene_;
+    const StepMotion& motion_;
+    double T_;
+  };
   /// The predicate "particle p is in zone `zone`" (a root), for the projector's row filters.
   auto memberOf(int zone) const {
     return [this, zone](int p) { return zoneOf(p) == zone; };
@@ -291,6 +311,8 @@ class ContactZones {
   /// Per projector row: its normal is where its contact would overlap deepest (a contact that
   /// deepens without closing: an edge rotating into a particle). See resolve.
   std::vector<char> curving_;
+  std::vector<uint64_t> rowKey_;  ///< per projector row: its pair
+  double instant_ = -1;           ///< the instant rows are set at now (atInstant); -1: none yet this step
   std::vector<int> queue_;
   std::vector<uint64_t> keys_;
   std::vector<int> moved_;

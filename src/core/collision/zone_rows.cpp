@@ -60,6 +60,7 @@ bool ContactZones::near(const Scene& scene, const StepMotion& motion, uint64_t k
 
 bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone, uint64_t key, double T,
                           double deepest) {
+  atInstant(T);
   const int z = root(zone);
   const PairParticles pair = pairParticles(scene, key);
   ZoneRecord& record = record_[z];
@@ -105,6 +106,7 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
   // their momentum so: ZoneAngularMomentum). Contacts inside a rigid zone are exempt anyway.
   const double* last = record.rigid ? nullptr : lastImpulse_.find(key);
   rowOf_.insert(key, projector_.addRow(row, last ? *last : 0.0, z));
+  rowKey_.push_back(key);
   ++record.rowCount;
   requeried_.push_back(0);
   broughtForward_.push_back(0);
@@ -147,6 +149,13 @@ math::ConstraintRow ContactZones::contactRow(const Scene& scene, uint64_t key, P
       break;
   }
   return row;
+}
+
+bool ContactZones::RowsAt::rowNow(int index, math::ConstraintRow& out) {
+  if (zones_.curving_[index]) return false;  // its normal is where it deepens, on purpose
+  Vec2 n = Vec2::Zero();
+  out = zones_.contactRow(scene_, zones_.rowKey_[index], [&](int p) { return motion_.at(p, T_); }, n);
+  return n != Vec2::Zero();
 }
 
 }  // namespace fosssim
