@@ -36,7 +36,10 @@ def chart_contacts(data_dir):
     problems = sd.unique(rows, "problem")
     titles = {r["problem"]: r["title"] for r in summary}
     quantities = [
-        ("energy / its start (kinetic + potential)", lambda r, mine: r["energy"] / mine[0]["energy"]),
+        # E / E0, generalised to 1 + (E - E0) / |E0| (the same for E0 > 0; a gain still rises above
+        # 1 where the start is negative: the clump's gravitational energy).
+        ("energy relative to its start, 1 + (E - E0) / |E0|",
+         lambda r, mine: 1 + (r["energy"] - mine[0]["energy"]) / abs(mine[0]["energy"])),
         ("|momentum| [kg m/s]", lambda r, mine: r["momentum"]),
         ("angular momentum about the origin [kg m²/s]", lambda r, mine: r["angular_momentum"]),
     ]
@@ -57,7 +60,7 @@ def chart_contacts(data_dir):
     fig.legend(handles, labels, loc="upper center", ncol=4, bbox_to_anchor=(0.5, 0.995))
     fig.suptitle("Multi-contact problems: energy, momentum and angular momentum over time, the default mode (blue) "
                  "next to --compat (red).\nWalls, floors, fixed edges and gravity exchange momentum with the "
-                 "particles; only the rack and the cradle are isolated (both momenta should stay flat).",
+                 "particles; only the rack, the cradle and the clump are isolated (both momenta should stay flat).",
                  y=1.025, fontsize=10)
     fig.tight_layout(rect=(0, 0, 1, 0.975))
     save(fig, data_dir, "contacts")

@@ -129,9 +129,12 @@ ContactResult runContactProblem(const ContactProblem& problem, ContactMode mode,
   // Totals over the steps every shot completed (a failed shot's later samples are incomplete).
   if (done < static_cast<long>(r.series.size())) r.series.resize(done + 1);
   const double e0 = r.series.empty() ? 0 : r.series[0].energy;
+  // E / E0 where E0 > 0; in general 1 + (E - E0) / |E0|, which is the same there and still rises
+  // with a gain where the start is negative (a clump bound by its own gravitation).
+  const auto relative = [e0](double e) { return 1.0 + (e - e0) / std::abs(e0); };
   r.energyGain = 1;
   for (const ContactSample& s : r.series) {
-    r.energyGain = std::max(r.energyGain, s.energy / e0);
+    r.energyGain = std::max(r.energyGain, relative(s.energy));
     const double fraction = s.zoneParticles / double(std::max(1, r.particles * r.shots));
     if (s.step > 0) {
       r.zoneFractionMean += fraction;
@@ -143,7 +146,7 @@ ContactResult runContactProblem(const ContactProblem& problem, ContactMode mode,
     r.contacts += s.contacts;
   }
   if (r.series.size() > 1) r.zoneFractionMean /= static_cast<double>(r.series.size() - 1);
-  if (!r.series.empty()) r.energyEnd = r.series.back().energy / e0;
+  if (!r.series.empty()) r.energyEnd = relative(r.series.back().energy);
   double peak = 0;
   for (const ContactSample& s : r.series) peak = std::max(peak, s.kinetic);
   for (size_t k = r.series.size(); k-- > 0 && r.series[k].kinetic <= kStoppedEnergy * peak;)

@@ -1,5 +1,6 @@
 // Multi-contact problems: scenes where several contacts meet in one step (a joint of two floor
-// edges, a touching rack, a narrow corridor or slot, a cradle, a pile in a V). Each runs with the
+// edges, a touching rack, a narrow corridor or slot, a cradle, a pile in a V, a self-gravitating
+// clump). Each runs with the
 // default mode's time-ordered contacts and with --compat (the course's summed impulses, one-pass
 // continuous-time and freezing rigid zones), for "continuous-time" and "hybrid", recording energy,
 // momentum and angular momentum over time and the outcome each problem is about (a gain of
@@ -51,8 +52,10 @@ struct ContactResult {
   int particles = 0;  ///< movable particles per shot
   double dt = 0;
   std::vector<ContactSample> series;
-  double energyGain = kNotApplicable;     ///< largest E / E0 over the run
-  double energyEnd = kNotApplicable;      ///< E_end / E0
+  /// Largest E / E0 over the run (in general 1 + (E - E0) / |E0|: the same for E0 > 0, and still a
+  /// gain above 1 for a negative E0, a clump bound by its own gravitation).
+  double energyGain = kNotApplicable;
+  double energyEnd = kNotApplicable;      ///< E_end / E0 (the same generalised)
   double momentumDrift = kNotApplicable;  ///< |P_end - P_0| / sum m|v_0| (problems without walls or floors)
   double angularDrift = kNotApplicable;   ///< |L_end - L_0| / sum m|x_0||v_0| (the same problems)
   int escaped = 0;              ///< particles that left their container (summed over shots)
@@ -111,7 +114,8 @@ class ContactJudge {
   virtual void finish(ContactResult&) {}
 };
 
-/// The six problems: joint drop, touching rack, corridor, slot, Newton's cradle, pile in a V.
+/// The seven problems: joint drop, touching rack, corridor, slot, Newton's cradle, pile in a V,
+/// clump.
 /// `quick`: shorter runs, fewer shots, a smaller pile (the same code).
 std::vector<ContactProblem> contactProblems(bool quick);
 

@@ -1,4 +1,4 @@
-// The six multi-contact problems of contact_problems.h: their scenes and what each one judges.
+// The seven multi-contact problems of contact_problems.h: their scenes and what each one judges.
 // Every scene uses symplectic Euler at dt = 0.01 s (free flight is exact for it) and the hybrid
 // without its penalty layer (k = 0): the problems compare contact handling, and a penalty force
 // acting before contact would blur the closed forms (a rebound at exactly the impact speed, a
@@ -308,6 +308,49 @@ class PileJudge final : public ContactJudge {
   double stopped_ = 0, packed_ = 0;
 };
 
+// ---- Clump -------------------------------------------------------------------------------------
+// A 7 x 7 hexagonal pack of disks (radius 0.045-0.05, masses 0.5-2, gaps 0.5-10 mm) moving at up to
+// 1 m/s each way and squeezed toward its centre at 2 /s, held together by the gravitation of every
+// pair (G = 0.05), COR 0.5, no walls, no gravity: the pack collapses into a jostling clump whose
+// contacts come at many instants of every step, most of them through the failsafe's zones. Only
+// pair forces and contacts act, so momentum and angular momentum are invariants (symplectic Euler
+// keeps both under central pair forces: its kick is torque-free, its drift exact).
+
+constexpr int kClumpSide = 7;
+constexpr double kClumpCor = 0.5, kClumpG = 0.05;
+
+ContactProblem clump(bool quick) {
+  const int side = quick ? 4 : kClumpSide;
+  ContactProblem p = problem("clump", "Clump: " + std::to_string(side * side) +
+                                          " disks held together by their own gravitation (COR " +
+                                          numberText(kClumpCor) + ")");
+  p.isolated = true;
+  p.scene = [quick, side](const std::string& collision, int) {
+    SceneBuilder x = heading(collision, kClumpCor, quick ? 0.3 : 1.0);
+    // A fixed sequence (a linear congruential one, written out: the problem must not depend on
+    // the standard library's distributions) of numbers in [0, 1).
+    unsigned long long seed = 20261205;
+    auto next = [&seed] {
+      seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
+      return static_cast<double>(seed >> 11) * 0x1.0p-53;
+    };
+    const double r = 0.05, gap = 0.0005 + 0.0095 * next();
+    const Vec2 centre((side - 1) * (r + gap / 2), (side - 1) * (r + gap / 2) * 0.87);
+    for (int i = 0; i < side; ++i)
+      for (int j = 0; j < side; ++j) {
+        const Vec2 site((2 * r + gap) * i + (j % 2) * (r + gap / 2), (2 * r + gap) * 0.87 * j);
+        const Vec2 v(2 * next() - 1, 2 * next() - 1);
+        const double m = 0.5 + 1.5 * next(), radius = r * (0.9 + 0.1 * next());
+        x.particle(site - centre, v - 2.0 * (site - centre), m, false, radius);
+      }
+    for (int i = 0; i < side * side; ++i)
+      for (int j = i + 1; j < side * side; ++j) x.gravitational(i, j, kClumpG);
+    return x;
+  };
+  p.judge = [] { return std::make_unique<ContactJudge>(); };
+  return p;
+}
+
 }  // namespace
 
 ContactProblem pileInV(int columns, int rows, double duration) {
@@ -333,7 +376,7 @@ ContactProblem pileInV(int columns, int rows, double duration) {
 
 std::vector<ContactProblem> contactProblems(bool quick) {
   return {jointDrop(quick), touchingRack(quick), corridor(quick), slot(quick), cradle(quick),
-          quick ? pileInV(3, 4, 0.6) : pileInV(10, 20, 2.0)};
+          quick ? pileInV(3, 4, 0.6) : pileInV(10, 20, 2.0), clump(quick)};
 }
 
 ContactProblem contactProblem(const std::string& name, bool quick) {

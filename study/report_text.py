@@ -123,6 +123,14 @@ CONTACTS_WORDS = """\
   {pile_frozen_height} m for the column stopped at its first contact (packing
   {pile_default_packing}; {pile_default_flow}). `--compat`'s hybrid {pile_compat_hybrid}; its
   continuous-time {pile_compat_ct}.
+- **Clump** ({clump_disks} disks held together by their own gravitation, no walls): in the
+  default mode momentum and angular momentum stay within {clump_default_momentum} and
+  {clump_default_angular} of their scales, though {clump_zone_mean} of the disks are in failsafe
+  zones on average (continuous-time, hybrid) and a zone moves rigidly in {clump_rigid} of the
+  {clump_steps} steps: a zone's rows are made again at the instant of each solve that changes
+  them, so every impulse acts along the line through its contact then. `--compat`'s
+  continuous-time {clump_compat_ct} (energy measured as 1 + (E - E0) / |E0|, since the
+  gravitational energy makes E0 negative); its hybrid {clump_compat_hybrid}.
 - {contacts_cost}
 """
 

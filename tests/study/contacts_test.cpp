@@ -65,6 +65,20 @@ TEST(StudyContacts, TouchingRackKeepsEnergyAndMomentaInTheDefaultMode) {
   }
 }
 
+// Clump: free disks held together by their own gravitation (central pair forces) and their
+// contacts: momentum and angular momentum are invariants, and the clump's contacts go through the
+// failsafe's zones in most steps (so the zones are what keeps them).
+TEST(StudyContacts, ClumpKeepsMomentumAndAngularMomentumThroughItsZonesInTheDefaultMode) {
+  for (const char* type : kTypes) {
+    const ContactResult r = run("clump", ContactMode::Default, type);
+    const long steps = static_cast<long>(r.series.size()) - 1;
+    EXPECT_LE(r.momentumDrift, 1e-12) << type;
+    EXPECT_LE(r.angularDrift, 1e-9) << type;
+    EXPECT_GE(2 * r.failsafeSteps, steps) << type << ": the zones should run in most steps";
+    EXPECT_LE(r.energyGain, 1 + 1e-3) << type << ": COR 0.5 and symplectic Euler's own error only";
+  }
+}
+
 // Corridor: elastic half-planes reverse the normal velocity only, so the particle keeps its speed
 // and never crosses a wall.
 TEST(StudyContacts, CorridorKeepsTheParticleInsideAtItsSpeed) {
