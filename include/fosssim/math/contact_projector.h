@@ -29,10 +29,12 @@ class ContactProjector {
   /// only if it acts along the line through the contact at the instant it is applied. A row
   /// keeps the normal (and, for an edge, the contact's parameter) of the instant it was set; a
   /// later solve that changes its multiplier would push along a line the bodies have since left
-  /// (an oblique pair in a zone turned its line of centres, and L moved by 1e-7 of its scale in
-  /// packs of disks, by up to 9% with edges). Made again, the row is replaced as setRow replaces
-  /// it (its impulse so far stays applied, from the instant it acted), and what changes now acts
-  /// along the line of now.
+  /// (the line of centres of a pair in a zone turns between instants: free packs of disks moved
+  /// L by up to 1.3e-5 of its scale). Made again, the row is replaced as setRow replaces it (its
+  /// impulse so far stays applied, from the instant it acted), and what changes now acts along
+  /// the line of now. The price: that impulse can no longer be taken back by this row (a solve
+  /// that would have lowered it leaves it); every update is still a projection through v = 0, so
+  /// no energy is added.
   class RowSource {
    public:
     /// Row `index` as of the current instant, in `out` (bodies by id, as addRow takes them);
@@ -86,7 +88,6 @@ class ContactProjector {
   /// Rows set from now on belong to a new instant of the caller's time; those set before are
   /// stale: a solve with a RowSource asks for them again before it changes their multipliers.
   void beginInstant() { ++epoch_; }
-
 
   /// Drops from the queue every row with a movable body b for which dropBody(b) holds (a solve
   /// that spent its budget leaves its rows queued: a caller solving independent problems drops
