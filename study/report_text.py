@@ -72,16 +72,17 @@ ODDITY_PENALTY = """\
 CONTACTS_INTRO = """\
 ## 6. Multi-contact problems: the default mode next to --compat
 
-Six scenes where several contacts meet in one step, each run with the default mode (contacts in
+Seven scenes where several contacts meet in one step, each run with the default mode (contacts in
 time order, sequential impulses, the inelastic-projection failsafe; as its last resort a contact
 still closing after its zone was solved again and again stops its own particles for the rest of
 the step, and a zone touching nothing moves rigidly) and with `--compat` (the course's formulation: impulses of a pass summed, continuous-time
 in one pass, rigid impact zones that freeze against walls), for `continuous-time` and `hybrid`
 (the hybrid without its penalty layer, k = 0, so that only contact handling differs). Symplectic
-Euler throughout. The charts show energy (kinetic plus gravity's potential, over its start),
-|momentum| and angular momentum about the origin over time; the slot's curves add up its shots.
-Only the rack and the cradle are isolated systems, where both momenta must stay flat; elsewhere
-walls, fixed edges and gravity exchange momentum with the particles. \"Escaped\" is a centre that
+Euler throughout. The charts show energy (kinetic plus potential, relative to its start:
+1 + (E - E0) / |E0|, which is E / E0 wherever E0 is positive), |momentum| and angular momentum
+about the origin over time; the slot's curves add up its shots. Only the rack, the cradle and
+the clump are isolated systems, where both momenta must stay flat; elsewhere walls, fixed edges
+and gravity exchange momentum with the particles. \"Escaped\" is a centre that
 crossed a wall's or an edge's line; \"frozen\" is a kinetic energy at or below {stopped_energy} of its peak
 over at least the last {stopped_tail} % of the run (for the pile: while packed looser than {loosest_rest}, since
 frictionless equal disks at rest pack at least as densely as random close packing, about 0.82 in 2D
