@@ -180,5 +180,48 @@ TEST(ContactProjectorInstants, RowsMadeAgainNeverAddEnergyAndEndSatisfied) {
   EXPECT_GE(turnedRows, 300) << "too few rows made again to test anything";
 }
 
+// The energy guard over rows made again: random zones whose second instant warm-starts new rows
+// with random impulses (half of them far too large) and solves on a starved budget with every
+// stale row made again turned. After capEnergy the kinetic energy is no more than at the
+// instant's start (the kicked velocities), and every row's whole impulse stays non-negative.
+TEST(ContactProjectorInstants, StarvedSolvesWithRowsMadeAgainAreCappedWithoutEnergyGain) {
+  std::mt19937 rng(5150);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), impulse(0.0, 4.0);
+  int madeAgain = 0, capped = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    Zone z = randomZone(rng);
+    ContactProjector cp;
+    cp.reset(static_cast<int>(z.v.size()) + 1);
+    cp.beginInstant();
+    addBodies(cp, z);
+    const int old = static_cast<int>(z.rows.size());
+    for (const ConstraintRow& r : z.rows) cp.addRow(r, impulse(rng));
+    cp.solve(speedScale(z.v), kTol, 2);
+    cp.capEnergy();
+    std::vector<int> changed;
+    cp.takeChanged(changed);
+    cp.beginInstant();
+    for (size_t b = 0; b < z.v.size(); ++b) {
+      if (z.invMass[b] == 0.0) continue;
+      const int id = static_cast<int>(b);
+      const Vec2 kicked = cp.velocity(id) + Vec2(u(rng), u(rng));
+      cp.freeze(id, kicked);
+      cp.release(id, z.invMass[b], kicked);
+    }
+    cp.takeChanged(changed);
+    const double start = kinetic(cp, z);
+    for (int k = 0; k < old; ++k) cp.addRow(z.rows[static_cast<size_t>(k)], impulse(rng));  // new rows, warm
+    TurnedRows source(z.rows, rng);
+    const double scale = speedScale(velocities(cp, z.v.size())) + 1.0;
+    cp.solve(&scale, 1.0, kTol, 2, &source);
+    madeAgain += static_cast<int>(source.turned.size());
+    capped += cp.capEnergy() < 1.0;
+    EXPECT_LE(kinetic(cp, z), start * (1 + 1e-12)) << "trial " << trial;
+    for (int k = 0; k < cp.rows(); ++k) EXPECT_GE(cp.totalImpulse(k), -1e-12) << "trial " << trial << " row " << k;
+  }
+  EXPECT_GT(capped, 100);     // the guard had work to do (195 of the 300 when written)
+  EXPECT_GT(madeAgain, 300);  // and rows were made again under it (762)
+}
+
 }  // namespace
 }  // namespace fosssim::math
