@@ -138,13 +138,30 @@ double kinetic(const ContactProjector& cp, const Zone& z) {
   return e;
 }
 
+/// Ends the current instant (the energy guard starts afresh) and begins the next with a kick of
+/// up to 1 m/s each way to every movable body: new closing, the bodies' velocities moved by
+/// freeze-and-release (the projector's only setter).
+void nextInstantWithKick(ContactProjector& cp, const Zone& z, std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<int> changed;
+  cp.takeChanged(changed);
+  cp.beginInstant();
+  for (size_t b = 0; b < z.v.size(); ++b) {
+    if (z.invMass[b] == 0.0) continue;
+    const int id = static_cast<int>(b);
+    const Vec2 kicked = cp.velocity(id) + Vec2(u(rng), u(rng));
+    cp.freeze(id, kicked);
+    cp.release(id, z.invMass[b], kicked);
+  }
+  cp.takeChanged(changed);
+}
+
 // 300 random zones: solved at one instant, then at the next with a kick to every movable body
 // (new closing), their rows made again turned by up to 0.3 rad. The second solve never adds
 // kinetic energy to the kicked velocities (every update is still a projection onto a half-space
 // through v = 0), and each row made again ends satisfied along its turned normal.
 TEST(ContactProjectorInstants, RowsMadeAgainNeverAddEnergyAndEndSatisfied) {
   std::mt19937 rng(4242);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
   int turnedRows = 0;
   for (int trial = 0; trial < 300; ++trial) {
     Zone z = randomZone(rng);
@@ -154,18 +171,7 @@ TEST(ContactProjectorInstants, RowsMadeAgainNeverAddEnergyAndEndSatisfied) {
     addBodies(cp, z);
     for (const ConstraintRow& r : z.rows) cp.addRow(r);
     if (!cp.solve(speedScale(z.v), kTol, kBudget)) continue;
-    std::vector<int> changed;
-    cp.takeChanged(changed);
-    // A kick: the bodies' velocities move by freeze-and-release (the projector's only setter).
-    cp.beginInstant();
-    for (size_t b = 0; b < z.v.size(); ++b) {
-      if (z.invMass[b] == 0.0) continue;
-      const int id = static_cast<int>(b);
-      const Vec2 kicked = cp.velocity(id) + Vec2(u(rng), u(rng));
-      cp.freeze(id, kicked);
-      cp.release(id, z.invMass[b], kicked);
-    }
-    cp.takeChanged(changed);
+    nextInstantWithKick(cp, z, rng);
     const double before = kinetic(cp, z);
     TurnedRows source(z.rows, rng);
     const double scale = speedScale(velocities(cp, z.v.size())) + 1.0;
@@ -186,7 +192,7 @@ TEST(ContactProjectorInstants, RowsMadeAgainNeverAddEnergyAndEndSatisfied) {
 // instant's start (the kicked velocities), and every row's whole impulse stays non-negative.
 TEST(ContactProjectorInstants, StarvedSolvesWithRowsMadeAgainAreCappedWithoutEnergyGain) {
   std::mt19937 rng(5150);
-  std::uniform_real_distribution<double> u(-1.0, 1.0), impulse(0.0, 4.0);
+  std::uniform_real_distribution<double> impulse(0.0, 4.0);
   int madeAgain = 0, capped = 0;
   for (int trial = 0; trial < 300; ++trial) {
     Zone z = randomZone(rng);
@@ -198,17 +204,7 @@ TEST(ContactProjectorInstants, StarvedSolvesWithRowsMadeAgainAreCappedWithoutEne
     for (const ConstraintRow& r : z.rows) cp.addRow(r, impulse(rng));
     cp.solve(speedScale(z.v), kTol, 2);
     cp.capEnergy();
-    std::vector<int> changed;
-    cp.takeChanged(changed);
-    cp.beginInstant();
-    for (size_t b = 0; b < z.v.size(); ++b) {
-      if (z.invMass[b] == 0.0) continue;
-      const int id = static_cast<int>(b);
-      const Vec2 kicked = cp.velocity(id) + Vec2(u(rng), u(rng));
-      cp.freeze(id, kicked);
-      cp.release(id, z.invMass[b], kicked);
-    }
-    cp.takeChanged(changed);
+    nextInstantWithKick(cp, z, rng);
     const double start = kinetic(cp, z);
     for (int k = 0; k < old; ++k) cp.addRow(z.rows[static_cast<size_t>(k)], impulse(rng));  // new rows, warm
     TurnedRows source(z.rows, rng);
