@@ -327,20 +327,14 @@ ContactProblem clump(bool quick) {
   p.isolated = true;
   p.scene = [quick, side](const std::string& collision, int) {
     SceneBuilder x = heading(collision, kClumpCor, quick ? 0.3 : 1.0);
-    // A fixed sequence (a linear congruential one, written out: the problem must not depend on
-    // the standard library's distributions) of numbers in [0, 1).
-    unsigned long long seed = 20261205;
-    auto next = [&seed] {
-      seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
-      return static_cast<double>(seed >> 11) * 0x1.0p-53;
-    };
-    const double r = 0.05, gap = 0.0005 + 0.0095 * next();
+    Lcg rng(20261205u);  // the same clump on every machine
+    const double r = 0.05, gap = rng.uniform(0.0005, 0.01);
     const Vec2 centre((side - 1) * (r + gap / 2), (side - 1) * (r + gap / 2) * 0.87);
     for (int i = 0; i < side; ++i)
       for (int j = 0; j < side; ++j) {
         const Vec2 site((2 * r + gap) * i + (j % 2) * (r + gap / 2), (2 * r + gap) * 0.87 * j);
-        const Vec2 v(2 * next() - 1, 2 * next() - 1);
-        const double m = 0.5 + 1.5 * next(), radius = r * (0.9 + 0.1 * next());
+        const Vec2 v(rng.uniform(-1, 1), rng.uniform(-1, 1));
+        const double m = rng.uniform(0.5, 2.0), radius = r * rng.uniform(0.9, 1.0);
         x.particle(site - centre, v - 2.0 * (site - centre), m, false, radius);
       }
     for (int i = 0; i < side * side; ++i)

@@ -11,11 +11,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <memory>
+#include <random>
 #include <string>
 #include <vector>
 
 namespace fosssim::testing {
+
+using Rng = std::mt19937;
+/// mt19937's output is fixed by the standard (its distributions are not): the same scenes everywhere.
+inline double uniform(Rng& rng, double lo, double hi) { return lo + (hi - lo) * (rng() / 4294967296.0); }
+inline int uniformInt(Rng& rng, int lo, int hi) {
+  return lo + static_cast<int>(rng() % static_cast<uint32_t>(hi - lo + 1));
+}
 
 /// The default mode's two time-ordered collision types.
 inline const char* const kEventTypes[] = {"continuous-time", "hybrid"};

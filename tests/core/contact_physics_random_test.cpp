@@ -12,11 +12,6 @@
 namespace fosssim::testing {
 namespace {
 
-using Rng = std::mt19937;
-// mt19937's output is fixed by the standard (its distributions are not): the same scenes everywhere.
-double uniform(Rng& rng, double lo, double hi) { return lo + (hi - lo) * (rng() / 4294967296.0); }
-int uniformInt(Rng& rng, int lo, int hi) { return lo + static_cast<int>(rng() % static_cast<uint32_t>(hi - lo + 1)); }
-
 // Steps a scene without forces (kinetic energy is its only energy) until `steps` steps or the
 // first failure: a step that leaves a pair colliding (stepClean) or raises the kinetic energy.
 void stepCleanWithoutEnergyGain(Simulator& sim, TestScene& s, int steps) {

@@ -30,7 +30,7 @@ class ContactProjector {
   /// keeps the normal (and, for an edge, the contact's parameter) of the instant it was set; a
   /// later solve that changes its multiplier would push along a line the bodies have since left
   /// (the line of centres of a pair in a zone turns between instants: free packs of disks moved
-  /// L by up to 1.3e-5 of its scale). Made again, the row is replaced as setRow replaces it (its
+  /// L by up to 1.0e-4 of its scale). Made again, the row is replaced as setRow replaces it (its
   /// impulse so far stays applied, from the instant it acted), and what changes now acts along
   /// the line of now. The price: that impulse can no longer be taken back by this row (a solve
   /// that would have lowered it leaves it); every update is still a projection through v = 0, so

@@ -102,7 +102,7 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
   }
   // No warm start inside a rigid zone: its members are frozen in the projector (immovable, at
   // their rigid velocities), so the impulse would act on the pair's other particle alone, which
-  // the next rigid move then carries into the zone's momentum (free packs lost up to 12% of
+  // the next rigid move then carries into the zone's momentum (free packs lost up to 15% of
   // their momentum so: ZoneAngularMomentum). Contacts inside a rigid zone are exempt anyway.
   const double* last = record.rigid ? nullptr : lastImpulse_.find(key);
   rowOf_.insert(key, projector_.addRow(row, last ? *last : 0.0, z));
