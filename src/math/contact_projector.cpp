@@ -11,6 +11,11 @@
 #endif
 
 namespace fosssim::math {
+namespace {
+
+Vec2 perp(const Vec2& a) { return Vec2(-a.y(), a.x()); }
+
+}  // namespace
 
 void ContactProjector::reset(int capacity) {
   if (static_cast<int>(slot_.size()) != capacity) slot_.assign(capacity, -1);
@@ -18,6 +23,7 @@ void ContactProjector::reset(int capacity) {
   body_.clear();
   velocity_.clear();
   inverseMass_.clear();
+  axis_.clear();
   row_.clear();
   replaced_.clear();
   queued_.clear();
@@ -39,6 +45,7 @@ void ContactProjector::addBody(int b, double inverseMass, const Vec2& v) {
   body_.push_back(std::move(body));
   velocity_.push_back(v);
   inverseMass_.push_back(inverseMass);
+  axis_.push_back(Vec2::Zero());
   startVelocity_.push_back(v);
 }
 
@@ -78,6 +85,7 @@ void ContactProjector::setRow(int index, const ConstraintRow& row, int group) {
     k.r.body[m] = s;
     normSquared += row.coef[m].squaredNorm();
   }
+  constrain(k.r);
   k.diag = diagonal(k.r);
   k.norm = std::sqrt(normSquared);
   for (int m = 0; m < row.count; ++m) {
@@ -225,6 +233,115 @@ void ContactProjector::freeze(int b, const Vec2& v) {
   if (!body.changed) body.changed = true, changed_.push_back(s), startVelocity_[s] = v;
 }
 
+void ContactProjector::constrain(ConstraintRow& r) const {
+  bool one = true;
+  Vec2 sum = Vec2::Zero();
+  double size = 0.0;
+  for (int m = 0; m < r.count; ++m) {
+    const Vec2& t = axis_[r.body[m]];
+    if (t != Vec2::Zero()) r.coef[m] = t.dot(r.coef[m]) * t;
+    one = one && r.body[m] == r.body[0];
+    sum += r.coef[m];
+    size += r.coef[m].norm();
+  }
+  // Two particles' opposite normals cancel exactly; a particle against an edge's ends leaves
+  // n (1 - (1 - alpha) - alpha), rounding, which would make a row of a direction chosen by noise.
+  if (one && sum.norm() <= kCancelledFraction * size)
+    for (int m = 0; m < r.count; ++m) r.coef[m] = Vec2::Zero();
+}
+
+Vec2 ContactProjector::coefficientOn(int k, int b) const {
+  const int s = slot_[b];
+  const ConstraintRow& r = row_[k].r;
+  Vec2 g = Vec2::Zero();
+  for (int m = 0; m < r.count; ++m)
+    if (r.body[m] == s) g += r.coef[m];
+  return g;
+}
+
+double ContactProjector::rowVelocity(int k) const {
+  const ConstraintRow& r = row_[k].r;
+  double w = 0.0;
+  for (int m = 0; m < r.count; ++m) w += r.coef[m].dot(velocity_[r.body[m]]);
+  return w;
+}
+
+// The velocity and the guard's start go through the same linear map: the rows' multipliers since
+// the start still account for the change between them (see weld), so capEnergy's line from the
+// start to now stays the line of those multipliers.
+template <class F>
+void ContactProjector::mapVelocity(int s, F&& f) {
+  Body& body = body_[s];
+  if (!body.changed) body.changed = true, changed_.push_back(s), startVelocity_[s] = velocity_[s];
+  startVelocity_[s] = f(startVelocity_[s]);
+  velocity_[s] = f(velocity_[s]);
+}
+
+// Body a's slot is left empty (inverse mass 0, no rows); a, and every body welded to it before,
+// name b's slot from now on. Each of a's rows is re-pointed to b's slot and listed there; a row
+// that named both now names b's slot twice, which diagonal() and apply() treat as one body with
+// the coefficients added (their own contact: -n + n = 0).
+void ContactProjector::weld(int a, int b) {
+  const int sa = slot_[a], sb = slot_[b];
+  if (sa == sb || inverseMass_[sa] == 0.0 || inverseMass_[sb] == 0.0) return;  // both must be movable
+  const double ma = 1.0 / inverseMass_[sa], mb = 1.0 / inverseMass_[sb];
+  const Vec2 va = body_[sa].changed ? startVelocity_[sa] : velocity_[sa];
+  Vec2 now = (ma * velocity_[sa] + mb * velocity_[sb]) / (ma + mb);
+  Vec2 start = (ma * va + mb * (body_[sb].changed ? startVelocity_[sb] : velocity_[sb])) / (ma + mb);
+  if (const Vec2 t = axis_[sb]; t != Vec2::Zero()) {  // b's lock holds for the pair (a's: below)
+    now = t.dot(now) * t;
+    start = t.dot(start) * t;
+  }
+  if (!body_[sb].changed) body_[sb].changed = true, changed_.push_back(sb);
+  startVelocity_[sb] = start;
+  velocity_[sb] = now;
+  inverseMass_[sb] = 1.0 / (ma + mb);
+  const Vec2 lockA = axis_[sa];
+  Body& from = body_[sa];
+  Body& into = body_[sb];
+  into.welded.push_back(from.id);
+  for (int id : from.welded) into.welded.push_back(id);
+  for (int id : into.welded) slot_[id] = sb;
+  from.welded.clear();
+  std::vector<int> rows;
+  from.forEachRow([&](int k) { rows.push_back(k); });
+  from.rowCount = 0;
+  from.moreRows.clear();
+  inverseMass_[sa] = 0.0;
+  axis_[sa] = Vec2::Zero();
+  for (int k : rows) {
+    ConstraintRow& r = row_[k].r;
+    for (int m = 0; m < r.count; ++m)
+      if (r.body[m] == sa) r.body[m] = sb;
+    if (!into.hasRow(k)) into.addRow(k);
+  }
+  if (lockA != Vec2::Zero()) lock(b, perp(lockA));  // a's lock is the pair's now
+  into.forEachRow([&](int k) {
+    constrain(row_[k].r);
+    row_[k].diag = diagonal(row_[k].r);
+    queue(k);
+  });
+}
+
+ContactProjector::Lock ContactProjector::lock(int b, const Vec2& g) {
+  const int s = slot_[b];
+  if (inverseMass_[s] == 0.0 || g == Vec2::Zero()) return Lock::Unchanged;
+  const Vec2 t = perp(g).normalized();
+  if (axis_[s] != Vec2::Zero()) {
+    if (std::fabs(axis_[s].dot(t)) >= 1.0 - kParallelLock) return Lock::Unchanged;  // the freedom it has left
+    freeze(b, Vec2::Zero());
+    return Lock::Frozen;
+  }
+  axis_[s] = t;
+  mapVelocity(s, [&](const Vec2& v) { return Vec2(t.dot(v) * t); });
+  body_[s].forEachRow([&](int k) {
+    constrain(row_[k].r);
+    row_[k].diag = diagonal(row_[k].r);
+    queue(k);
+  });
+  return Lock::Added;
+}
+
 void ContactProjector::setVelocity(int s, const Vec2& v) {
   if (body_[s].changed) startVelocity_[s] += v - velocity_[s];
   velocity_[s] = v;
@@ -258,8 +375,11 @@ void ContactProjector::Body::addRow(int k) {
 
 void ContactProjector::takeChanged(std::vector<int>& out) {
   for (int s : changed_) {
-    body_[s].changed = false;
-    out.push_back(body_[s].id);
+    Body& body = body_[s];
+    body.changed = false;
+    if (slot_[body.id] != s) continue;  // welded into another body, which lists it
+    out.push_back(body.id);
+    out.insert(out.end(), body.welded.begin(), body.welded.end());
   }
   changed_.clear();
   for (int k : touched_) touchedFlag_[k] = 0;

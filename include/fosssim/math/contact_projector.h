@@ -121,12 +121,45 @@ class ContactProjector {
   int queuedRows() const { return static_cast<int>(tail_ - head_); }
 
   const Vec2& velocity(int b) const { return velocity_[slot_[b]]; }
+  /// Whether body b can still move (not immovable, not frozen, not locked in both directions).
+  bool movable(int b) const { return inverseMass_[slot_[b]] != 0.0; }
   /// Makes an immovable body b movable again, with inverse mass w and velocity v, and queues its
   /// rows (a sleeper that met the zones as an obstacle and woke later in the step); no-op for a
   /// movable body.
   void release(int b, double inverseMass, const Vec2& v);
   /// Makes body b immovable from now on, at velocity v (the rigid fallback moves it instead).
   void freeze(int b, const Vec2& v);
+  /// Makes movable bodies a and b one body from now on (the failsafe's answer to a jammed contact
+  /// between them): one velocity, their momentum's (m_a v_a + m_b v_b) / (m_a + m_b), and the sum
+  /// of their masses; each row on either acts on the pair. Momentum is kept and kinetic energy
+  /// can only fall (an inelastic merge); their contact can no longer close. Rows and multipliers
+  /// stay consistent with the velocities: v = v~ + M^-1 G^T lambda holds for the merged body with
+  /// its merged v~ and each row's coefficients on it summed, so the energy guard (capEnergy) and
+  /// later solves go on as before. A lock on either carries over.
+  void weld(int a, int b);
+  /// Takes from movable body b its freedom along g (a jammed contact against immovable bodies at
+  /// rest, g its row's coefficient on b): b moves on only perpendicular to g, so that contact can
+  /// no longer close, and its velocity loses its component along g (in the mass norm: kinetic
+  /// energy can only fall, and momentum changes only along g, as an obstacle's impulse changes
+  /// it). A second lock along another direction leaves b no freedom: it is frozen at rest.
+  /// Returns what it did: Added, Frozen, or Unchanged (b had no freedom along g already, or g = 0,
+  /// or b is immovable).
+  enum class Lock { Added, Frozen, Unchanged };
+  Lock lock(int b, const Vec2& g);
+  /// Whether bodies a and b are one body (welded, or the same).
+  bool sameBody(int a, int b) const { return slot_[a] == slot_[b]; }
+  /// Row k's coefficient on body b: the sum of its entries on b's body (welded bodies share one).
+  Vec2 coefficientOn(int k, int b) const;
+  /// Row k at the current velocities: G_k v (negative: its contact closes), and |G_k|.
+  double rowVelocity(int k) const;
+  double rowNorm(int k) const { return row_[k].norm; }
+  /// Calls f(id) for body b and every body welded to it.
+  template <class F>
+  void forEachWelded(int b, F&& f) const {
+    const Body& body = body_[slot_[b]];
+    f(body.id);
+    for (int id : body.welded) f(id);
+  }
   /// Appends the bodies whose velocity changed since the last call, each once, and starts the
   /// next interval of the energy guard (capEnergy) there.
   void takeChanged(std::vector<int>& out);
@@ -152,6 +185,11 @@ class ContactProjector {
   long updates() const { return updates_; }
 
  private:
+  /// A row all of whose entries are one welded body, with coefficients summing to at most this
+  /// fraction of their sizes, is its pair's own contact (rounding of n - (1 - alpha) n - alpha n).
+  static constexpr double kCancelledFraction = 1e-12;
+  /// A second lock whose direction is within this (1 - |cos|) of the first takes nothing more.
+  static constexpr double kParallelLock = 1e-12;
   /// Rows a body keeps beside it: a disk in a pile touches up to six others and a wall.
   static constexpr int kInlineRows = 7;
   /// A body's bookkeeping; its velocity and inverse mass, which every update reads, are kept
@@ -162,6 +200,7 @@ class ContactProjector {
     int rowCount = 0;       ///< rows it appears in: the first kInlineRows in `rows`, the rest in `moreRows`
     int rows[kInlineRows] = {};
     std::vector<int> moreRows;
+    std::vector<int> welded;  ///< ids of the bodies welded to this one (weld), which share its slot
     bool changed = false;
     bool hasRow(int k) const;
     void addRow(int k);
@@ -200,12 +239,20 @@ class ContactProjector {
   }
   void growRoom(size_t n);
   double diagonal(const ConstraintRow& r) const;  ///< A_kk of a row whose bodies are slots
+  /// Row r (bodies as slots) as the bodies' locks and welds see it: a coefficient on a locked
+  /// body keeps only its part along the body's axis, and a row whose bodies are all one welded
+  /// body, with coefficients that cancel to rounding, gets exact zeros (it can never close).
+  void constrain(ConstraintRow& r) const;
+  /// Moves slot s's velocity, and the energy guard's start, by the linear map f (weld, lock).
+  template <class F>
+  void mapVelocity(int s, F&& f);
   void queueRowsOf(int slot, int except);
 
   std::vector<int> slot_;     ///< per body id: index into body_, -1 when absent
   std::vector<Body> body_;
   std::vector<Vec2> velocity_;       ///< per slot: the body's velocity
   std::vector<double> inverseMass_;  ///< per slot: 0 for an immovable body
+  std::vector<Vec2> axis_;           ///< per slot: the one direction a locked body moves along; 0: free
   std::vector<Row> row_;
   /// Per row: the multipliers of the normals setRow replaced (still applied). Apart from the rows,
   /// which every Gauss-Seidel update reads: this is read once a step (totalImpulse).
