@@ -26,8 +26,9 @@ void ContactZones::reset(int n) {
     nextHoldable_.assign(n, -1);
     rateScale_.assign(n, 0.0);
     stopped_.assign(n, 0);
+    jammed_.assign(n, 0);
   } else {
-    for (int r : roots_) forEachMember(r, [&](int p) { parent_[p] = -1, stopped_[p] = 0; });
+    for (int r : roots_) forEachMember(r, [&](int p) { parent_[p] = -1, stopped_[p] = 0, jammed_[p] = 0; });
   }
   roots_.clear();
   // The impulses of this step's contacts start the next step's (warm start; addRow): each one's
@@ -127,17 +128,17 @@ int ContactZones::absorb(const Scene& scene, const StepMotion& motion, const Pai
   // settling it: that solve counted already.) Its fresh row (normal of now) replaces the old one.
   const int* known = rowOf_.find(key);
   const bool solved = known && *known < solvedRows_;
+  int jammed = -1;       // a movable particle of a jammed contact (weldJammed)
+  bool welded = false;   // whether that jam welded bodies that were apart
   if (solved && !requeried_[*known]) ++record_[root(zone)].metAgain;
   if (solved && record_[root(zone)].metAgain > kMaxZoneProjections && record_[root(zone)].immovable && !rigidOnly_) {
     // A jam against an obstacle: the contact keeps closing although it was solved for again and
-    // again. Its particles stop for the rest of the step (obstacles from now on), not the zone.
-    for (int k = 0; k < pair.count; ++k)
-      if (!isImmobile(scene, pair.p[k])) {
-        stopped_[pair.p[k]] = kJam;
-        projector_.freeze(pair.p[k], Vec2::Zero());
-      }
+    // again. Its particles move as one for the rest of the step, and lose the freedom to close
+    // on the obstacles it has (weldJammed, lockJammed); the rest of the zone goes on.
+    jammed = weldJammed(scene, pair, welded);
   }
   setRow(scene, motion, zone, key, T, deepest);
+  if (const int* row = rowOf_.find(key); jammed >= 0 && row != nullptr) lockJammed(jammed, *row, welded, rateScale_[root(zone)] / h);
   int added = 0;
   return grow(scene, motion, candidates, zone, T, h, added);
 }
@@ -302,35 +303,6 @@ bool ContactZones::solvesNow(uint64_t key) {
   return true;
 }
 
-// The members of a zone against an obstacle that its budget-ended solve has brought to rest stop
-// for the rest of the step (kHeldKickFraction, kHeldStartFraction). Only the members that started
-// the step slow enough are looked at (the zone's holdable list, in the order of its members;
-// empty with holding off or without sleepers), and those that stop leave the list for good: a
-// fed pile's zone ends a hundred solves a step on its budget, and scanning all its members each
-// time took 5% of rain's time at 10^4.
-void ContactZones::holdResting([[maybe_unused]] const Scene& scene, int zone) {
-  ZoneRecord& z = record_[zone];
-  int first = -1, last = -1;  // the list of those that stay holdable, relinked in order
-  for (int p = z.firstHoldable, next; p >= 0; p = next) {
-    next = nextHoldable_[p];
-    // Stopped (held or jammed) for the rest of the step. Of isImmobile's other cases none can
-    // hold for a member here: take() makes fixed and sleeping particles obstacles, not members,
-    // and the zone solves by projection, so it is not rigid. (isImmobile's union-find walk took
-    // two fifths of this scan: holdResting fell from 5.8% to 3.4% of rain 10^5's profile.)
-    if (stopped_[p]) continue;
-    assert(!isImmobile(scene, p));
-    if (projector_.velocity(p).norm() > kHeldKickFraction * sleepers_->kick(p)) {
-      nextHoldable_[p] = -1;
-      splice(first, last, p, p, nextHoldable_);
-      continue;
-    }
-    stopped_[p] = kHeld;
-    projector_.freeze(p, Vec2::Zero());
-  }
-  z.firstHoldable = first;
-  z.lastHoldable = last;
-}
-
 // A zone moving rigidly that meets an obstacle goes back to the projection (see the top of the
 // header): its members leave the projector's frozen set with the rigid velocities they have, and
 // their rows are queued for the zone's next solve. Stopped members (a jam or a hold of the zone
@@ -407,7 +379,7 @@ void ContactZones::sizes(StepStats& stats) const {
     stats.rigidZones += record_[r].rigid;
     stats.zoneParticles += record_[r].size;
     forEachMember(r, [&](int p) {
-      stats.jammedParticles += stopped_[p] == kJam;
+      stats.jammedParticles += jammed_[p];
       stats.heldParticles += stopped_[p] == kHeld;
     });
     stats.largestZone = std::max(stats.largestZone, record_[r].size);

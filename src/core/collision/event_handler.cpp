@@ -47,10 +47,11 @@ Status EventHandler::handle(const Scene& scene, const State& start, State& state
   }
   // Respond, in time order. Every event is dropped (stale, resolved), costs a particle one of its
   // quota of impulses, adds a contact's rows to a zone (bounded by the candidate pairs), or brings
-  // one back; past kMaxZoneProjections of those a jam stops particles or a zone moves rigidly,
-  // which also happens at most once per particle (a rigid zone that meets an obstacle goes back
-  // to the projection, with a fresh count or that of the zone it merged with, and can then only
-  // jam). So the loop ends; the budget below only guards that reasoning.
+  // one back; past kMaxZoneProjections of those a jam welds, locks or stops particles (each jam
+  // takes one of those, at most three per particle: ContactZones::lockJammed) or a zone moves
+  // rigidly, which also happens at most once per particle (a rigid zone that meets an obstacle
+  // goes back to the projection, with a fresh count or that of the zone it merged with, and can
+  // then only jam). So the loop ends; the budget below only guards that reasoning.
   const long budget = static_cast<long>(eventsPerParticle_ + kMaxZoneProjections + 2) * (n + 1) * 4 + 1000;
   long processed = 0;
   changed_.clear();
@@ -252,8 +253,8 @@ void EventHandler::logReferencePolynomials(const Scene& scene, const State& star
   logger_.forEachCollision(scene, start.x, state.x, &ctx.log->polynomials, [](const Collision&) {});
 }
 
-// The contacts here rely on fixed particles at rest: a zone against a fixed particle stops, a
-// jam stops the particles it pins, a held particle waits, each of them at rest. The reference's
+// The contacts here rely on fixed particles at rest: a jam locks what it welds against them or
+// stops it, a held particle waits, each of them at rest or sliding past them. The reference's
 // integrators move a fixed particle at the velocity it starts with (x += h v, its force zeroed),
 // so a scene can give one a velocity; here it would plough through the disks its contacts
 // stopped (a 4 m/s fixed disk pushing two disks into a wall left 14 pairs overlapping in 50

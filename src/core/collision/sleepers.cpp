@@ -11,13 +11,15 @@ void Sleepers::begin(const Scene& scene, const State& start, State& state, doubl
   const int n = scene.numParticles();
   // The kicks, whether sleeping is on or not: the zones' held particles need them too, and end()
   // sums them over still runs.
-  if (static_cast<int>(kick_.size()) != n) kick_.assign(n, 0.0), startSpeed_.assign(n, 0.0);
+  if (static_cast<int>(kick_.size()) != n) kick_.assign(n, 0.0), startSpeed_.assign(n, 0.0), kickVector_.setZero(2 * n);
   // A sleeper's prediction is thrown away below, and its forces may have been left incomplete
   // (restingAtStart): it keeps the kick it had when it fell asleep (read if a hit wakes it).
   const bool sleepers = enabled_ && sleeping_ > 0 && static_cast<int>(asleep_.size()) == n;
   forRowRanges(n, threads_, [&](int, int first, int end) {
     for (int p = first; p < end; ++p) {
-      kick_[p] = sleepers && restsAtStart(start, p) ? restKick_[p] : (at(state.v, p) - at(start.v, p)).norm();
+      const bool rests = sleepers && restsAtStart(start, p);
+      at(kickVector_, p) = rests ? Vec2(at(restKickVector_, p)) : Vec2(at(state.v, p) - at(start.v, p));
+      kick_[p] = rests ? restKick_[p] : at(kickVector_, p).norm();
       startSpeed_[p] = at(start.v, p).norm();
     }
   });
@@ -33,6 +35,7 @@ void Sleepers::begin(const Scene& scene, const State& start, State& state, doubl
     anchorVelocity_ = start.v;
     kicks_.assign(n, 0.0);
     restKick_.assign(n, 0.0);
+    restKickVector_.setZero(2 * n);
     rest_ = start.x;
     sleeping_ = 0;
   }
@@ -214,6 +217,7 @@ void Sleepers::end(const Scene& scene, const State& start, State& state) {
 void Sleepers::fallAsleep(int p, State& state) {
   asleep_[p] = 1;
   restKick_[p] = kick_[p];
+  at(restKickVector_, p) = at(kickVector_, p);
   moved_[p] = 0;
   at(state.v, p).setZero();
   at(rest_, p) = at(state.x, p);

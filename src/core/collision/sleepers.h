@@ -104,6 +104,8 @@ class Sleepers {
   /// from begin() on, whether sleeping is on or not. A sleeper put back at rest keeps the kick
   /// of the step it fell asleep in (its forces may not have been computed whole: restingAtStart).
   double kick(int p) const { return kick_[p]; }
+  /// The same velocity change as a vector (its direction: gravity's, in a pile under gravity).
+  Vec2 kickVector(int p) const { return kickVector_.segment<2>(2 * p); }
   /// Particle p's speed at the step's start (known from begin() on).
   double startSpeed(int p) const { return startSpeed_[p]; }
   /// The sleep speed of particle p: the speed at which it could stay within the sleep distance
@@ -135,6 +137,8 @@ class Sleepers {
   VecX rest_;                    ///< 2N: a sleeper's position (where it fell asleep)
   std::vector<double> kick_;     ///< N: this step's |predicted v - start v|
   std::vector<double> restKick_; ///< N: a sleeper's kick in the step it fell asleep
+  VecX kickVector_;              ///< 2N: this step's predicted v - start v (kick_ is its norm)
+  VecX restKickVector_;          ///< 2N: a sleeper's kick vector in the step it fell asleep
   std::vector<char> resting_;    ///< N: restingAtStart's answer
   int mayRestCount_ = 0;         ///< particles that may sleep (movable, when the forces list their ties)
   std::vector<double> startSpeed_;  ///< N: |start v|

@@ -1,0 +1,141 @@
+// The failsafe's last resorts short of rigid motion (contact_zones.h): particles held at rest
+// after a budget-ended solve, and jammed contacts, whose particles are welded into one body and
+// locked against their obstacles, or stopped at rest.
+#include "contact_zones.h"
+
+#include <cassert>
+#include <cmath>
+
+namespace fosssim {
+namespace {
+
+// Appends p alone to the list [head, tail] linked through next.
+void append(int& head, int& tail, int p, std::vector<int>& next) {
+  next[p] = -1;
+  if (head < 0) head = p;
+  else next[tail] = p;
+  tail = p;
+}
+
+}  // namespace
+
+// The members of a zone against an obstacle that its budget-ended solve has brought to rest stop
+// for the rest of the step (kHeldKickFraction, kHeldStartFraction). Only the members that started
+// the step slow enough are looked at (the zone's holdable list, in the order of its members;
+// empty with holding off or without sleepers), and those that stop leave the list for good: a
+// fed pile's zone ends a hundred solves a step on its budget, and scanning all its members each
+// time took 5% of rain's time at 10^4.
+void ContactZones::holdResting([[maybe_unused]] const Scene& scene, int zone) {
+  ZoneRecord& z = record_[zone];
+  int first = -1, last = -1;  // the list of those that stay holdable, relinked in order
+  for (int p = z.firstHoldable, next; p >= 0; p = next) {
+    next = nextHoldable_[p];
+    // Stopped (held or jammed) for the rest of the step. Of isImmobile's other cases none can
+    // hold for a member here: take() makes fixed and sleeping particles obstacles, not members,
+    // and the zone solves by projection, so it is not rigid. (isImmobile's union-find walk took
+    // two fifths of this scan: holdResting fell from 5.8% to 3.4% of rain 10^5's profile.)
+    if (stopped_[p]) continue;
+    assert(!isImmobile(scene, p));
+    if (projector_.velocity(p).norm() > kHeldKickFraction * sleepers_->kick(p)) {
+      append(first, last, p, nextHoldable_);
+      continue;
+    }
+    projector_.forEachWelded(p, [&](int q) { stopped_[q] = kHeld; });
+    projector_.freeze(p, Vec2::Zero());
+  }
+  z.firstHoldable = first;
+  z.lastHoldable = last;
+}
+
+// Why weld, not stop: a jam used to stop its particles at rest, obstacles for the rest of the
+// step. That took their tangential motion with it: a pile landing on a frictionless floor while
+// sliding along it at 1 m/s (tests/core/jam_momentum_test.cpp) lost 61-68% of its momentum in the
+// step it landed, and the stopped particles were held at rest in the steps after. Stopped at a
+// common moving velocity instead, they were obstacles of infinite mass moving into their
+// neighbours: the same pile's energy grew 30-fold. Welded, they keep their momentum, their
+// contact closes no more, and what they meet is met by their mass: nothing is pushed by an
+// obstacle that does not give way. Returns a movable particle of the weld, or -1 (none: every
+// particle of the contact is an obstacle already).
+int ContactZones::weldJammed(const Scene& scene, const PairParticles& pair, bool& welded) {
+  welded = false;
+  if (stopsAtRest(scene, pair)) {
+    for (int k = 0; k < pair.count; ++k)
+      if (!isImmobile(scene, pair.p[k])) {
+        projector_.freeze(pair.p[k], Vec2::Zero());
+        settleJam(pair.p[k]);  // and the particles welded to it
+      }
+    return -1;
+  }
+  int first = -1;
+  for (int k = 0; k < pair.count; ++k) {
+    const int p = pair.p[k];
+    if (isImmobile(scene, p)) continue;
+    if (first < 0) {
+      first = p;
+    } else if (projector_.movable(first)) {
+      welded = welded || !projector_.sameBody(p, first);
+      projector_.weld(p, first);
+    } else {  // the weld so far was locked in two directions: it is at rest, and p stops with it
+      projector_.freeze(p, Vec2::Zero());
+      settleJam(p);
+    }
+  }
+  if (first >= 0) settleJam(first);
+  return first;
+}
+
+// Stopped at rest, a jam's particles leave the problem, which welded they do not (on the fed rain
+// pile, welding every jam cost half as much again). What stopping takes is their motion. Along
+// their kick (the velocity this step's forces gave them: gravity's, down) that is what their
+// supports would take (a disk landing on a pile); across it, it is what nothing else would (a pile
+// sliding along a floor). So they stop when their common velocity, the weld's, moves across the
+// kick by at most kJamRestKicks kicks: the speed a jam takes from motion across the forces is then
+// bounded as a held particle's is, and vanishes with the step. Without forces (no kick) only
+// particles at rest stop.
+bool ContactZones::stopsAtRest(const Scene& scene, const PairParticles& pair) const {
+  Vec2 momentum = Vec2::Zero(), kick = Vec2::Zero();
+  double mass = 0.0;
+  for (int k = 0; k < pair.count; ++k) {
+    const int p = pair.p[k];
+    if (isImmobile(scene, p)) continue;
+    const double m = scene.massOf(p);
+    momentum += m * projector_.velocity(p);
+    if (sleepers_) kick += m * sleepers_->kickVector(p);
+    mass += m;
+  }
+  if (mass == 0.0) return false;
+  const Vec2 mean = momentum / mass;
+  kick /= mass;
+  const double kickSquared = kick.squaredNorm();
+  const Vec2 across = kickSquared > 0.0 ? Vec2(mean - (mean.dot(kick) / kickSquared) * kick) : mean;
+  return across.norm() <= kJamRestKicks * std::sqrt(kickSquared);
+}
+
+// The weld's coefficient in the jammed contact's row (of now) is what it has against the contact's
+// obstacles, which are at rest (a half-plane, a fixed or sleeping particle, a stopped one): the
+// weld loses its freedom along it, so that contact cannot close again either (between two movable
+// particles the coefficients cancel and nothing is locked). Every jam whose contact still closes
+// takes something: bodies welded, a freedom locked, or, when neither was left to take, the weld's
+// motion: it stops at rest. (Events of one instant come before its zones' solve, so a contact
+// can come back as a jam after an earlier jam of the instant has settled it: nothing is taken
+// then.) So jams end: there are at most three that take something per movable particle and step
+// (EventHandler::handle's bound).
+void ContactZones::lockJammed(int p, int row, bool welded, double speedScale) {
+  if (!projector_.movable(p)) return;
+  const auto lock = projector_.lock(p, projector_.coefficientOn(row, p));
+  const bool closes = projector_.rowVelocity(row) < -kZoneProjectionTolerance * speedScale * projector_.rowNorm(row);
+  if (!welded && lock == math::ContactProjector::Lock::Unchanged && closes) projector_.freeze(p, Vec2::Zero());
+  settleJam(p);
+}
+
+// Every particle of the weld counts as jammed; a weld left without freedom (locked in two
+// directions) is frozen at rest, and its particles are obstacles for the rest of the step.
+void ContactZones::settleJam(int p) {
+  const bool frozen = !projector_.movable(p);
+  projector_.forEachWelded(p, [&](int q) {
+    jammed_[q] = 1;
+    if (frozen) stopped_[q] = kJam;
+  });
+}
+
+}  // namespace fosssim
