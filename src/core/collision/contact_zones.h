@@ -66,9 +66,10 @@ constexpr int kMaxZoneProjections = 8;
 /// A jammed contact's particles stop at rest, as obstacles, instead of being welded, when their
 /// common velocity moves across their kick (the velocity change this step's forces gave them) by
 /// at most this many kicks (ContactZones::stopsAtRest): the speed a jam takes from motion across
-/// the forces is then at most a kick's, as a held particle's. Measured against welding every jam
-/// (least user time of interleaved FOSSSim -d 0 runs): rain 1,000 0.77 against 0.89 s, rain 2,500
-/// 2.10 against 2.55 s (the commit before: 0.60 and 1.52; with 4 kicks, 0.74 and 1.67).
+/// the forces is then at most a kick's, as a held particle's. What welding costs, against the
+/// commit where every jam stopped (least user time of interleaved FOSSSim -d 0 runs): rain 1,000
+/// 1.28-1.33 times, 2,500 1.35-1.38, 10^4 1.87; with the rule on the weld's speed instead of its
+/// motion across the kick, 1.56 and 1.93 at 1,000 and 2,500; with 4 kicks, 1.23, 1.10 and 1.57.
 constexpr double kJamRestKicks = 1.0;
 
 /// The projection's tolerance, relative to the zone's largest speed (the solver's default): what

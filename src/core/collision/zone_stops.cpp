@@ -84,14 +84,15 @@ int ContactZones::weldJammed(const Scene& scene, const PairParticles& pair, bool
   return first;
 }
 
-// Stopped at rest, a jam's particles leave the problem, which welded they do not (on the fed rain
-// pile, welding every jam cost half as much again). What stopping takes is their motion. Along
-// their kick (the velocity this step's forces gave them: gravity's, down) that is what their
-// supports would take (a disk landing on a pile); across it, it is what nothing else would (a pile
-// sliding along a floor). So they stop when their common velocity, the weld's, moves across the
-// kick by at most kJamRestKicks kicks: the speed a jam takes from motion across the forces is then
-// bounded as a held particle's is, and vanishes with the step. Without forces (no kick) only
-// particles at rest stop.
+// Stopped at rest, a jam's particles leave the problem, which welded they do not (rain at 2,500
+// took 1.35-1.38 times as long as with every jam stopped, and 1.93 times with a rest rule on the
+// weld's speed: kJamRestKicks). What stopping takes is their motion. Along their kick (the
+// velocity this step's forces gave them: gravity's, down) that is what their supports would take
+// (a disk landing on a pile); across it, it is what nothing else would (a pile sliding along a
+// floor). So they stop when their common velocity, the weld's, moves across the kick by at most
+// kJamRestKicks kicks: the speed a jam takes from motion across the forces is then bounded as a
+// held particle's is, and vanishes with the step. Without forces (no kick) only particles at
+// rest stop.
 bool ContactZones::stopsAtRest(const Scene& scene, const PairParticles& pair) const {
   Vec2 momentum = Vec2::Zero(), kick = Vec2::Zero();
   double mass = 0.0;
