@@ -245,8 +245,9 @@ def mode_facts(data_dir, f):
                         if found else "")
     f["compat_oddity"] = (
         f"- `--compat` reproduces the course's flaws on purpose ({kinds}: section 6). Its rigid zones hold still "
-        "whatever touches a wall; the default mode stops only a jammed contact's particles, and only for the rest of "
-        "a step.\n" if found else "")
+        "whatever touches a wall; the default mode welds a jammed contact's particles into one body for the rest of "
+        "a step, which slides along the walls it is locked against (it stops them only if they move across their "
+        "kick by at most a kick).\n" if found else "")
 
 
 def pick_facts(f):
