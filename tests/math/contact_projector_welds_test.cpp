@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <random>
 #include <set>
 #include <vector>
@@ -51,9 +52,28 @@ Zone merged(const Zone& z, int a, int b) {
   return m;
 }
 
-void expectSame(const std::vector<Vec2>& got, const std::vector<Vec2>& want, double scale, int trial) {
+// The random-zone tests' count: zones compared with the enumeration, and zones whose solve stalled
+// (like any random zone, a few are over-constrained where Gauss-Seidel stalls: zone_projection.h).
+struct Tally {
+  int compared = 0, stalled = 0;
+  ~Tally() {
+    EXPECT_GE(compared, 150);
+    EXPECT_LE(stalled, 12) << "of 400";
+    std::printf("[ zones    ] %d compared with the enumeration, %d stalled\n", compared, stalled);
+  }
+};
+
+// The projector's velocities against the exact projection of `reference` (if the enumeration
+// finds it); body `alias`, if any, is one body with body `of` (a weld).
+void expectProjection(const ContactProjector& cp, const Zone& reference, double scale, int trial, Tally& tally,
+                      int alias = -1, int of = -1) {
+  std::vector<Vec2> want = reference.v;
+  if (!projectByEnumeration(reference.invMass, reference.rows, want)) return;
+  if (alias >= 0) want[alias] = want[of];
+  ++tally.compared;
+  const std::vector<Vec2> got = velocities(cp, want.size());
   for (size_t k = 0; k < want.size(); ++k)
-    EXPECT_LE((got[k] - want[k]).norm(), 1e-7 * scale) << "trial " << trial << " body " << k;
+    EXPECT_LE((got[k] - want[k]).norm(), 1e-7 * std::max(scale, 1e-300)) << "trial " << trial << " body " << k;
 }
 
 // Welded before the rows come, or after they were added and solved (their multipliers then carry
@@ -62,7 +82,7 @@ void expectSame(const std::vector<Vec2>& got, const std::vector<Vec2>& want, dou
 TEST(ContactProjectorWelds, AWeldedPairSolvesAsOneBodyOfBothMasses) {
   std::mt19937 rng(4242);
   ContactProjector cp;
-  int compared = 0, stalled = 0;
+  Tally tally;
   for (int trial = 0; trial < 400; ++trial) {
     const Zone z = randomZone(rng);
     int a = 0, b = 0;
@@ -76,21 +96,9 @@ TEST(ContactProjectorWelds, AWeldedPairSolvesAsOneBodyOfBothMasses) {
       cp.solve(scale, kTol, kBudget);
       cp.weld(a, b);
     }
-    // Like any random zone, a few are over-constrained where Gauss-Seidel stalls (zone_projection.h).
-    if (!cp.solve(scale, kTol, kBudget)) {
-      ++stalled;
-      continue;
-    }
-    Zone m = merged(z, a, b);
-    std::vector<Vec2> want = m.v;
-    if (!projectByEnumeration(m.invMass, m.rows, want)) continue;
-    want[a] = want[b];
-    ++compared;
-    expectSame(velocities(cp, z.v.size()), want, std::max(scale, 1e-300), trial);
+    if (cp.solve(scale, kTol, kBudget)) expectProjection(cp, merged(z, a, b), scale, trial, tally, a, b);
+    else ++tally.stalled;
   }
-  EXPECT_GE(compared, 150);
-  EXPECT_LE(stalled, 12) << "of 400";
-  std::printf("[ zones    ] %d compared with the enumeration, %d stalled\n", compared, stalled);
 }
 
 // The weld alone: the pair's momentum is kept, its kinetic energy does not grow, their own contact
@@ -137,7 +145,7 @@ TEST(ContactProjectorWelds, ALockedBodyMovesOnlyAcrossItsLock) {
   std::mt19937 rng(2024);
   std::uniform_real_distribution<double> angle(0.0, 6.283185307179586);
   ContactProjector cp;
-  int compared = 0, stalled = 0;
+  Tally tally;
   for (int trial = 0; trial < 400; ++trial) {
     const Zone z = randomZone(rng);
     int b = 0, other = 0;
@@ -153,8 +161,8 @@ TEST(ContactProjectorWelds, ALockedBodyMovesOnlyAcrossItsLock) {
     EXPECT_LE(kineticEnergy(z.invMass, velocities(cp, z.v.size())), before * (1.0 + 1e-14)) << "trial " << trial;
     const bool solved = cp.solve(scale, kTol, kBudget);
     EXPECT_LE(std::abs(cp.velocity(b).dot(g)), 1e-12 * g.norm() * (scale + 1e-300)) << "trial " << trial;
-    if (!solved) {  // over-constrained, as in AWeldedPairSolvesAsOneBodyOfBothMasses
-      ++stalled;
+    if (!solved) {
+      ++tally.stalled;
       continue;
     }
     Zone cut = z;
@@ -162,14 +170,8 @@ TEST(ContactProjectorWelds, ALockedBodyMovesOnlyAcrossItsLock) {
     for (ConstraintRow& r : cut.rows)
       for (int j = 0; j < r.count; ++j)
         if (r.body[j] == b) r.coef[j] = t.dot(r.coef[j]) * t;
-    std::vector<Vec2> want = cut.v;
-    if (!projectByEnumeration(cut.invMass, cut.rows, want)) continue;
-    ++compared;
-    expectSame(velocities(cp, z.v.size()), want, std::max(scale, 1e-300), trial);
+    expectProjection(cp, cut, scale, trial, tally);
   }
-  EXPECT_GE(compared, 150);
-  EXPECT_LE(stalled, 12) << "of 400";
-  std::printf("[ zones    ] %d compared with the enumeration, %d stalled\n", compared, stalled);
 }
 
 // A second lock along the first changes nothing; one across it leaves no freedom: the body is
