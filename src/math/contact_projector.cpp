@@ -267,7 +267,7 @@ double ContactProjector::rowVelocity(int k) const {
 }
 
 // The velocity and the guard's start go through the same linear map: the rows' multipliers since
-// the start still account for the change between them (see weld), so capEnergy's line from the
+// the start still account for the change between them (see lock), so capEnergy's line from the
 // start to now stays the line of those multipliers.
 template <class F>
 void ContactProjector::mapVelocity(int s, F&& f) {

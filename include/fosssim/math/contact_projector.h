@@ -243,7 +243,7 @@ class ContactProjector {
   /// body keeps only its part along the body's axis, and a row whose bodies are all one welded
   /// body, with coefficients that cancel to rounding, gets exact zeros (it can never close).
   void constrain(ConstraintRow& r) const;
-  /// Moves slot s's velocity, and the energy guard's start, by the linear map f (weld, lock).
+  /// Moves slot s's velocity, and the energy guard's start, by the linear map f (a lock).
   template <class F>
   void mapVelocity(int s, F&& f);
   void queueRowsOf(int slot, int except);

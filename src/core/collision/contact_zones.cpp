@@ -138,7 +138,8 @@ int ContactZones::absorb(const Scene& scene, const StepMotion& motion, const Pai
     jammed = weldJammed(scene, pair, welded);
   }
   setRow(scene, motion, zone, key, T, deepest);
-  if (const int* row = rowOf_.find(key); jammed >= 0 && row != nullptr) lockJammed(jammed, *row, welded, rateScale_[root(zone)] / h);
+  if (const int* row = rowOf_.find(key); jammed >= 0 && row != nullptr)
+    lockJammed(jammed, *row, welded, rateScale_[root(zone)] / h);
   int added = 0;
   return grow(scene, motion, candidates, zone, T, h, added);
 }
