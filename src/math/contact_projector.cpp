@@ -108,8 +108,7 @@ FOSSSIM_ALWAYS_INLINE inline void ContactProjector::apply(int k, double lambda) 
   for (int m = 0; m < row.r.count; ++m) {
     const int s = row.r.body[m];
     if (inverseMass_[s] == 0.0) continue;
-    Body& b = body_[s];
-    if (!b.changed) b.changed = true, changed_.push_back(s), startVelocity_[s] = velocity_[s];
+    markChanged(s);
     velocity_[s] += inverseMass_[s] * delta * row.r.coef[m];
   }
   for (int m = 0; m < row.r.count; ++m)
@@ -166,8 +165,7 @@ bool ContactProjector::solve(const double* groupScale, double factor, double tol
     const int k = work_[head_++];
     Row& row = row_[k];
     queued_[k] = 0;
-    double w = 0;
-    for (int m = 0; m < row.r.count; ++m) w += row.r.coef[m].dot(velocity_[row.r.body[m]]);
+    const double w = rowVelocity(k);
     const double threshold = tolerance * row.norm * (factor * groupScale[row.group]);
     if (row.diag <= 0.0) continue;  // every body immovable: nothing to move (a violation stays)
     // fmin and fmax written out (glibc's own definitions, NaN included): the calls were not
@@ -230,7 +228,7 @@ void ContactProjector::freeze(int b, const Vec2& v) {
   body.forEachRow([&](int k) { row_[k].diag = diagonal(row_[k].r); });  // the body no longer takes a share
   if (velocity_[s] == v) return;
   setVelocity(s, v);
-  if (!body.changed) body.changed = true, changed_.push_back(s), startVelocity_[s] = v;
+  markChanged(s);  // what freeze sets is its own, not the rows': the guard starts there
 }
 
 void ContactProjector::constrain(ConstraintRow& r) const {
@@ -259,24 +257,6 @@ Vec2 ContactProjector::coefficientOn(int k, int b) const {
   return g;
 }
 
-double ContactProjector::rowVelocity(int k) const {
-  const ConstraintRow& r = row_[k].r;
-  double w = 0.0;
-  for (int m = 0; m < r.count; ++m) w += r.coef[m].dot(velocity_[r.body[m]]);
-  return w;
-}
-
-// The velocity and the guard's start go through the same linear map: the rows' multipliers since
-// the start still account for the change between them (see lock), so capEnergy's line from the
-// start to now stays the line of those multipliers.
-template <class F>
-void ContactProjector::mapVelocity(int s, F&& f) {
-  Body& body = body_[s];
-  if (!body.changed) body.changed = true, changed_.push_back(s), startVelocity_[s] = velocity_[s];
-  startVelocity_[s] = f(startVelocity_[s]);
-  velocity_[s] = f(velocity_[s]);
-}
-
 // Body a's slot is left empty (inverse mass 0, no rows); a, and every body welded to it before,
 // name b's slot from now on. Each of a's rows is re-pointed to b's slot and listed there; a row
 // that named both now names b's slot twice, which diagonal() and apply() treat as one body with
@@ -284,15 +264,17 @@ void ContactProjector::mapVelocity(int s, F&& f) {
 void ContactProjector::weld(int a, int b) {
   const int sa = slot_[a], sb = slot_[b];
   if (sa == sb || inverseMass_[sa] == 0.0 || inverseMass_[sb] == 0.0) return;  // both must be movable
+  // The velocity and the energy guard's start merge alike: the multipliers since the start still
+  // account for the change between them, so capEnergy's line from start to now stays theirs.
+  markChanged(sa);
+  markChanged(sb);
   const double ma = 1.0 / inverseMass_[sa], mb = 1.0 / inverseMass_[sb];
-  const Vec2 va = body_[sa].changed ? startVelocity_[sa] : velocity_[sa];
   Vec2 now = (ma * velocity_[sa] + mb * velocity_[sb]) / (ma + mb);
-  Vec2 start = (ma * va + mb * (body_[sb].changed ? startVelocity_[sb] : velocity_[sb])) / (ma + mb);
+  Vec2 start = (ma * startVelocity_[sa] + mb * startVelocity_[sb]) / (ma + mb);
   if (const Vec2 t = axis_[sb]; t != Vec2::Zero()) {  // b's lock holds for the pair (a's: below)
     now = t.dot(now) * t;
     start = t.dot(start) * t;
   }
-  if (!body_[sb].changed) body_[sb].changed = true, changed_.push_back(sb);
   startVelocity_[sb] = start;
   velocity_[sb] = now;
   inverseMass_[sb] = 1.0 / (ma + mb);
@@ -303,18 +285,16 @@ void ContactProjector::weld(int a, int b) {
   for (int id : from.welded) into.welded.push_back(id);
   for (int id : into.welded) slot_[id] = sb;
   from.welded.clear();
-  std::vector<int> rows;
-  from.forEachRow([&](int k) { rows.push_back(k); });
-  from.rowCount = 0;
-  from.moreRows.clear();
-  inverseMass_[sa] = 0.0;
-  axis_[sa] = Vec2::Zero();
-  for (int k : rows) {
+  from.forEachRow([&](int k) {
     ConstraintRow& r = row_[k].r;
     for (int m = 0; m < r.count; ++m)
       if (r.body[m] == sa) r.body[m] = sb;
     if (!into.hasRow(k)) into.addRow(k);
-  }
+  });
+  from.rowCount = 0;
+  from.moreRows.clear();
+  inverseMass_[sa] = 0.0;
+  axis_[sa] = Vec2::Zero();
   if (lockA != Vec2::Zero()) lock(b, perp(lockA));  // a's lock is the pair's now
   into.forEachRow([&](int k) {
     constrain(row_[k].r);
@@ -332,8 +312,11 @@ ContactProjector::Lock ContactProjector::lock(int b, const Vec2& g) {
     freeze(b, Vec2::Zero());
     return Lock::Frozen;
   }
+  // The velocity and the energy guard's start are cut alike (as weld merges them).
   axis_[s] = t;
-  mapVelocity(s, [&](const Vec2& v) { return Vec2(t.dot(v) * t); });
+  markChanged(s);
+  startVelocity_[s] = t.dot(startVelocity_[s]) * t;
+  velocity_[s] = t.dot(velocity_[s]) * t;
   body_[s].forEachRow([&](int k) {
     constrain(row_[k].r);
     row_[k].diag = diagonal(row_[k].r);

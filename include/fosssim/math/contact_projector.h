@@ -151,7 +151,12 @@ class ContactProjector {
   /// Row k's coefficient on body b: the sum of its entries on b's body (welded bodies share one).
   Vec2 coefficientOn(int k, int b) const;
   /// Row k at the current velocities: G_k v (negative: its contact closes), and |G_k|.
-  double rowVelocity(int k) const;
+  double rowVelocity(int k) const {
+    const ConstraintRow& r = row_[k].r;
+    double w = 0.0;
+    for (int m = 0; m < r.count; ++m) w += r.coef[m].dot(velocity_[r.body[m]]);
+    return w;
+  }
   double rowNorm(int k) const { return row_[k].norm; }
   /// Calls f(id) for body b and every body welded to it.
   template <class F>
@@ -243,9 +248,14 @@ class ContactProjector {
   /// body keeps only its part along the body's axis, and a row whose bodies are all one welded
   /// body, with coefficients that cancel to rounding, gets exact zeros (it can never close).
   void constrain(ConstraintRow& r) const;
-  /// Moves slot s's velocity, and the energy guard's start, by the linear map f (a lock).
-  template <class F>
-  void mapVelocity(int s, F&& f);
+  /// Body slot s's velocity is about to change: the energy guard starts it where it is now (once
+  /// per interval, see takeChanged), and it is listed as changed.
+  void markChanged(int s) {
+    if (body_[s].changed) return;
+    body_[s].changed = true;
+    changed_.push_back(s);
+    startVelocity_[s] = velocity_[s];
+  }
   void queueRowsOf(int slot, int except);
 
   std::vector<int> slot_;     ///< per body id: index into body_, -1 when absent

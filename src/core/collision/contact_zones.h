@@ -280,6 +280,8 @@ class ContactZones {
   bool stopsAtRest(const Scene& scene, const PairParticles& pair) const;
   /// Marks the particles welded to p jammed, and stopped if the weld has no freedom left.
   void settleJam(int p);
+  /// Stops p, and every particle welded to it, at rest for the rest of the step (a jam).
+  void stopJammed(int p);
 
   static constexpr char kJam = 1, kHeld = 2;  ///< why a particle stopped (stopped_)
   bool rigidOnly_ = false;

@@ -11,7 +11,7 @@ void Sleepers::begin(const Scene& scene, const State& start, State& state, doubl
   const int n = scene.numParticles();
   // The kicks, whether sleeping is on or not: the zones' held particles need them too, and end()
   // sums them over still runs.
-  if (static_cast<int>(kick_.size()) != n) kick_.assign(n, 0.0), startSpeed_.assign(n, 0.0), kickVector_.setZero(2 * n);
+  if (static_cast<int>(startSpeed_.size()) != n) startSpeed_.assign(n, 0.0), kickVector_.setZero(2 * n);
   // A sleeper's prediction is thrown away below, and its forces may have been left incomplete
   // (restingAtStart): it keeps the kick it had when it fell asleep (read if a hit wakes it).
   const bool sleepers = enabled_ && sleeping_ > 0 && static_cast<int>(asleep_.size()) == n;
@@ -19,7 +19,6 @@ void Sleepers::begin(const Scene& scene, const State& start, State& state, doubl
     for (int p = first; p < end; ++p) {
       const bool rests = sleepers && restsAtStart(start, p);
       at(kickVector_, p) = rests ? Vec2(at(restKickVector_, p)) : Vec2(at(state.v, p) - at(start.v, p));
-      kick_[p] = rests ? restKick_[p] : at(kickVector_, p).norm();
       startSpeed_[p] = at(start.v, p).norm();
     }
   });
@@ -34,7 +33,6 @@ void Sleepers::begin(const Scene& scene, const State& start, State& state, doubl
     anchor_ = start.x;
     anchorVelocity_ = start.v;
     kicks_.assign(n, 0.0);
-    restKick_.assign(n, 0.0);
     restKickVector_.setZero(2 * n);
     rest_ = start.x;
     sleeping_ = 0;
@@ -174,14 +172,14 @@ void Sleepers::end(const Scene& scene, const State& start, State& state) {
       if (asleep_[p] || !mayRest_[p]) continue;
       const double reach = kSleepFraction * scene.radius[p];
       const bool still = (at(state.x, p) - at(start.x, p)).norm() <= reach && h_ * at(state.v, p).norm() <= reach &&
-                         at(state.v, p).norm() <= kWakeKickFactor * kick_[p];
+                         at(state.v, p).norm() <= kWakeKickFactor * kick(p);
       moved_[p] = !still;
       if (!still) {
         still_[p] = 0;
         continue;
       }
       if (still_[p]++ == 0) at(anchor_, p) = at(start.x, p), at(anchorVelocity_, p) = at(start.v, p), kicks_[p] = 0;
-      kicks_[p] += kick_[p];
+      kicks_[p] += kick(p);
       if (still_[p] < kStepsToSleep) continue;
       if ((at(state.x, p) - at(anchor_, p)).norm() > reach) {
         still_[p] = 0;  // creeping: start a new run from here
@@ -216,7 +214,6 @@ void Sleepers::end(const Scene& scene, const State& start, State& state) {
 // speed: dropping it is what sleeping means).
 void Sleepers::fallAsleep(int p, State& state) {
   asleep_[p] = 1;
-  restKick_[p] = kick_[p];
   at(restKickVector_, p) = at(kickVector_, p);
   moved_[p] = 0;
   at(state.v, p).setZero();

@@ -103,7 +103,7 @@ class Sleepers {
   /// The velocity change this step's forces gave particle p (|predicted v - start v|); known
   /// from begin() on, whether sleeping is on or not. A sleeper put back at rest keeps the kick
   /// of the step it fell asleep in (its forces may not have been computed whole: restingAtStart).
-  double kick(int p) const { return kick_[p]; }
+  double kick(int p) const { return kickVector(p).norm(); }
   /// The same velocity change as a vector (its direction: gravity's, in a pile under gravity).
   Vec2 kickVector(int p) const { return kickVector_.segment<2>(2 * p); }
   /// Particle p's speed at the step's start (known from begin() on).
@@ -133,11 +133,9 @@ class Sleepers {
   std::vector<char> moved_;      ///< N: was not still in its last step awake (a woken sleeper has not moved)
   VecX anchor_;                  ///< 2N: position when the particle's still run began
   VecX anchorVelocity_;          ///< 2N: velocity when the particle's still run began
-  std::vector<double> kicks_;    ///< N: sum of kick_ over the particle's still run
+  std::vector<double> kicks_;    ///< N: sum of kick() over the particle's still run
   VecX rest_;                    ///< 2N: a sleeper's position (where it fell asleep)
-  std::vector<double> kick_;     ///< N: this step's |predicted v - start v|
-  std::vector<double> restKick_; ///< N: a sleeper's kick in the step it fell asleep
-  VecX kickVector_;              ///< 2N: this step's predicted v - start v (kick_ is its norm)
+  VecX kickVector_;              ///< 2N: this step's predicted v - start v (kick() is its norm)
   VecX restKickVector_;          ///< 2N: a sleeper's kick vector in the step it fell asleep
   std::vector<char> resting_;    ///< N: restingAtStart's answer
   int mayRestCount_ = 0;         ///< particles that may sleep (movable, when the forces list their ties)

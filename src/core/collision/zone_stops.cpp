@@ -60,10 +60,7 @@ int ContactZones::weldJammed(const Scene& scene, const PairParticles& pair, bool
   welded = false;
   if (stopsAtRest(scene, pair)) {
     for (int k = 0; k < pair.count; ++k)
-      if (!isImmobile(scene, pair.p[k])) {
-        projector_.freeze(pair.p[k], Vec2::Zero());
-        settleJam(pair.p[k]);  // and the particles welded to it
-      }
+      if (!isImmobile(scene, pair.p[k])) stopJammed(pair.p[k]);
     return -1;
   }
   int first = -1;
@@ -76,8 +73,7 @@ int ContactZones::weldJammed(const Scene& scene, const PairParticles& pair, bool
       welded = welded || !projector_.sameBody(p, first);
       projector_.weld(p, first);
     } else {  // the weld so far was locked in two directions: it is at rest, and p stops with it
-      projector_.freeze(p, Vec2::Zero());
-      settleJam(p);
+      stopJammed(p);
     }
   }
   if (first >= 0) settleJam(first);
@@ -125,8 +121,13 @@ void ContactZones::lockJammed(int p, int row, bool welded, double speedScale) {
   if (!projector_.movable(p)) return;
   const auto lock = projector_.lock(p, projector_.coefficientOn(row, p));
   const bool closes = projector_.rowVelocity(row) < -kZoneProjectionTolerance * speedScale * projector_.rowNorm(row);
-  if (!welded && lock == math::ContactProjector::Lock::Unchanged && closes) projector_.freeze(p, Vec2::Zero());
-  settleJam(p);
+  if (!welded && lock == math::ContactProjector::Lock::Unchanged && closes) stopJammed(p);
+  else settleJam(p);
+}
+
+void ContactZones::stopJammed(int p) {
+  projector_.freeze(p, Vec2::Zero());
+  settleJam(p);  // p and the particles welded to it stop
 }
 
 // Every particle of the weld counts as jammed; a weld left without freedom (locked in two
