@@ -21,6 +21,8 @@ void ContactProjector::reset(int capacity) {
   if (static_cast<int>(slot_.size()) != capacity) slot_.assign(capacity, -1);
   for (const Body& b : body_) slot_[b.id] = -1;
   body_.clear();
+  welded_.clear();
+  changedFlag_.clear();
   velocity_.clear();
   inverseMass_.clear();
   axis_.clear();
@@ -43,6 +45,8 @@ void ContactProjector::addBody(int b, double inverseMass, const Vec2& v) {
   Body body;
   body.id = b;
   body_.push_back(std::move(body));
+  welded_.emplace_back();
+  changedFlag_.push_back(0);
   velocity_.push_back(v);
   inverseMass_.push_back(inverseMass);
   axis_.push_back(Vec2::Zero());
@@ -281,10 +285,11 @@ void ContactProjector::weld(int a, int b) {
   const Vec2 lockA = axis_[sa];
   Body& from = body_[sa];
   Body& into = body_[sb];
-  into.welded.push_back(from.id);
-  for (int id : from.welded) into.welded.push_back(id);
-  for (int id : into.welded) slot_[id] = sb;
-  from.welded.clear();
+  std::vector<int>& intoWelded = welded_[sb];
+  intoWelded.push_back(from.id);
+  for (int id : welded_[sa]) intoWelded.push_back(id);
+  for (int id : intoWelded) slot_[id] = sb;
+  welded_[sa].clear();
   from.forEachRow([&](int k) {
     ConstraintRow& r = row_[k].r;
     for (int m = 0; m < r.count; ++m)
@@ -326,7 +331,7 @@ ContactProjector::Lock ContactProjector::lock(int b, const Vec2& g) {
 }
 
 void ContactProjector::setVelocity(int s, const Vec2& v) {
-  if (body_[s].changed) startVelocity_[s] += v - velocity_[s];
+  if (changedFlag_[s]) startVelocity_[s] += v - velocity_[s];
   velocity_[s] = v;
 }
 
@@ -359,10 +364,10 @@ void ContactProjector::Body::addRow(int k) {
 void ContactProjector::takeChanged(std::vector<int>& out) {
   for (int s : changed_) {
     Body& body = body_[s];
-    body.changed = false;
+    changedFlag_[s] = 0;
     if (slot_[body.id] != s) continue;  // welded into another body, which lists it
     out.push_back(body.id);
-    out.insert(out.end(), body.welded.begin(), body.welded.end());
+    out.insert(out.end(), welded_[s].begin(), welded_[s].end());
   }
   changed_.clear();
   for (int k : touched_) touchedFlag_[k] = 0;
