@@ -46,7 +46,8 @@ constexpr int kContinuousEventsPerParticle = 32;
 /// is in one that they are not settling: a ball pinned between two fixed disks at COR 1 bounces
 /// between them for ever at one instant, and with hybrid's quota of maxiters = 10,000 took
 /// 10,000 impulses a step (28 ms a step for 8 particles, fuzz_scene_steps). A Newton's cradle's
-/// ball takes two, a touching rack's a handful; the projection settles the rest.
+/// ball takes two; no particle of `rain` 2,500, `chains` 1,000 or the oracle scenes reaches it
+/// (their runs are the same to the bit with and without). The projection settles the rest.
 constexpr int kEventsPerInstant = 32;
 
 class EventHandler final : public CollisionHandler {
