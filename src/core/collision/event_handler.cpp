@@ -31,8 +31,7 @@ Status EventHandler::handle(const Scene& scene, const State& start, State& state
   sleepers_.begin(scene, start, state, ctx.dt);  // sleepers back where they rest
   motion_.begin(start.x, state.x, threads_);
   events_.assign(n, 0);
-  instantOf_.assign(n, -1.0);
-  atInstant_.assign(n, 0);
+  atInstant_.assign(n, InstantEvents{});
   zones_.reset(n);
   heap_.clear();
   // With every movable particle asleep no pair is queried (none has a particle that moves): a
@@ -196,7 +195,7 @@ void EventHandler::respond(const Scene& scene, const Event& e, State& state, Ste
     rigidZone = z;
     if (scene.isFixed(p) || zones_.isImmobile(scene, p)) continue;
     toZones = toZones || z >= 0 || events_[p] >= eventsPerParticle_ ||
-              (instantOf_[p] == e.t && atInstant_[p] >= kEventsPerInstant);
+              (atInstant_[p].t == e.t && atInstant_[p].count >= kEventsPerInstant);
     sameZone = sameZone && z >= 0 && (zone == -2 || zone == z);
     zone = z;
   }
@@ -245,8 +244,9 @@ void EventHandler::respond(const Scene& scene, const Event& e, State& state, Ste
     at(state.v, p) += change.dv[k];
     motion_.setRate(p, e.t, motion_.rate(p) + h * change.dv[k]);
     ++events_[p];
-    atInstant_[p] = instantOf_[p] == e.t ? atInstant_[p] + 1 : 1;
-    instantOf_[p] = e.t;
+    InstantEvents& now = atInstant_[p];
+    now.count = now.t == e.t ? now.count + 1 : 1;
+    now.t = e.t;
     changed_.push_back(p);
   }
 }

@@ -132,8 +132,12 @@ class EventHandler final : public CollisionHandler {
   std::vector<int> pendingZones_;  ///< zones contacts joined at the current instant, not solved yet
   std::vector<Event> found_;      ///< scratch: detectChanged's events before they join the heap
   std::vector<int> events_;       ///< N: impulse events taken by each particle in this step
-  std::vector<double> instantOf_;  ///< N: the time of each particle's last impulse event in this step (-1: none)
-  std::vector<int> atInstant_;     ///< N: impulse events each particle took at that time
+  /// A particle's impulse events at the instant of its last one (kEventsPerInstant).
+  struct InstantEvents {
+    double t = -1.0;  ///< the time of its last impulse event in this step (-1: none yet)
+    int count = 0;    ///< impulse events it took at t
+  };
+  std::vector<InstantEvents> atInstant_;  ///< N
   std::vector<int> changed_;      ///< particles whose path the last response bent
   std::vector<int> wakeFrom_;     ///< scratch: the sleepers or the movers wakeNearMoving searches from
   std::vector<uint64_t> keys_;    ///< scratch: pairs to query

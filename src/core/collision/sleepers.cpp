@@ -170,16 +170,16 @@ void Sleepers::end(const Scene& scene, const State& start, State& state) {
     for (int p = first; p < end; ++p) {
       if (!islandOf_.empty()) ready_[p] = 0;
       if (asleep_[p] || !mayRest_[p]) continue;
-      const double reach = kSleepFraction * scene.radius[p];
+      const double reach = kSleepFraction * scene.radius[p], kicked = kick(p);  // a norm: taken once
       const bool still = (at(state.x, p) - at(start.x, p)).norm() <= reach && h_ * at(state.v, p).norm() <= reach &&
-                         at(state.v, p).norm() <= kWakeKickFactor * kick(p);
+                         at(state.v, p).norm() <= kWakeKickFactor * kicked;
       moved_[p] = !still;
       if (!still) {
         still_[p] = 0;
         continue;
       }
       if (still_[p]++ == 0) at(anchor_, p) = at(start.x, p), at(anchorVelocity_, p) = at(start.v, p), kicks_[p] = 0;
-      kicks_[p] += kick(p);
+      kicks_[p] += kicked;
       if (still_[p] < kStepsToSleep) continue;
       if ((at(state.x, p) - at(anchor_, p)).norm() > reach) {
         still_[p] = 0;  // creeping: start a new run from here
