@@ -344,6 +344,35 @@ TEST(Sleep, ADiskHittingAnIslandWakesAllOfIt) {
   }
 }
 
+// A mover near a sleeper wakes it only if their boxes over the step meet, as the broad phase
+// finds them: a disk set down beside a sleeper, 0.05 apart, and leaving it at 10 m/s (0.1 a
+// step: within a disk's reach of the sleeper at the step's start, but never nearer) leaves it
+// asleep, with the broad phase and with every pair as candidates alike (the reach alone woke it
+// with every pair and not with the broad phase, so the two runs parted). Disk 1 falls freely,
+// far away, until it is set down: it moved in the last step.
+TEST(Sleep, AMoverLeavingASleeperBehindDoesNotWakeItWhateverTheCandidates) {
+  for (const char* type : kEventTypes) {
+    for (bool allPairs : {false, true}) {
+      SCOPED_TRACE(std::string(type) + (allPairs ? ", every pair" : ", broad phase"));
+      TestScene s = floorScene(type, {{0.0, 0.0}});
+      addBody(s, 1.0, Vec2(50.0, 1000.0), Vec2::Zero(), kR);
+      SimulatorOptions options;
+      options.handler.compat = false;
+      options.handler.allPairs = allPairs;
+      std::unique_ptr<Simulator> sim;
+      ASSERT_TRUE(Simulator::create(s.scene, options, sim).isOk());
+      for (int k = 0; k < 2 * kStepsToSleep; ++k) ASSERT_TRUE(stepClean(*sim, s));
+      ASSERT_EQ(sim->stats().asleep, 1);
+      at(s.state.x, 1) = Vec2(2 * kR + 0.05, kR + 0.01);  // off the floor for the step
+      at(s.state.v, 1) = Vec2(10.0, 0.0);
+      ASSERT_TRUE(stepClean(*sim, s));
+      EXPECT_EQ(sim->stats().woken, 0);
+      EXPECT_EQ(sim->stats().asleep, 1);
+      EXPECT_EQ(at(s.state.x, 0), Vec2(0.0, kR));
+    }
+  }
+}
+
 TEST(Sleep, ARunInWhichNothingSleepsIsTheSameBitForBitWithSleepingOff) {
   for (const char* type : kEventTypes) {
     SCOPED_TRACE(type);

@@ -148,10 +148,27 @@ void EventHandler::wakeNearMoving(const Scene& scene, StepStats& stats) {
       // A neighbour: touching now, or within what a mover moves in this step.
       const double depth = pairDepth(scene, key, [&](int q) { return motion_.at(q, 0.0); });
       if (depth < -reach) return;
+      // ... and whose boxes over the step meet: what the broad phase compares, with the least
+      // margins (boxes inside its own), so that the sleepers woken are the same with the broad
+      // phase and with every pair as candidates. The reach above is a disk's; a mover leaving a
+      // sleeper behind stays within it, yet its box never meets the sleeper's.
+      if (!stepBoxesMeet(scene, key)) return;
       for (int k = 0; k < pair.count; ++k)
         stats.woken += sleepers_.wake(pair.p[k]);  // 0 when awake
     });
   }
+}
+
+bool EventHandler::stepBoxesMeet(const Scene& scene, uint64_t key) const {
+  const VecX &from = motion_.from(), &end = motion_.end();
+  const int i = keyParticle(key), other = keyOther(key);
+  const Box a = particleBox(scene, from, end, i, 0.0, 0.0);
+  switch (keyKind(key)) {
+    case PairKind::ParticleParticle: return overlap(a, particleBox(scene, from, end, other, 0.0, 0.0));
+    case PairKind::ParticleEdge: return overlap(a, edgeBox(scene, from, end, other, 0.0, 0.0));
+    case PairKind::ParticleHalfPlane: return nearHalfPlane(scene, from, end, i, other, 0.0, 0.0);
+  }
+  return true;
 }
 
 bool EventHandler::stale(const Scene& scene, const Event& e) const {

@@ -15,7 +15,9 @@
 //     sleep) plus the sleep speed (sleepSpeed: the sleep distance over a still run). It wakes
 //     in the same step, before the response, which then moves it as any other particle;
 //   * a neighbour that moves: at the start of a step, every sleeper among the broad phase's
-//     candidates of an awake particle that was not still in the last step wakes. This is what
+//     candidates of an awake particle that was not still in the last step wakes, if the mover
+//     touches it or could reach it in this step (within its step's motion, and their boxes over
+//     the step meet: the same sleepers with any broad phase or none). This is what
 //     keeps a sleeper from floating when the particle under it is knocked away (one step late
 //     at most: the step in which the support left).
 // "Still" is measured in the scene's own scales, never in absolute units: over a step, a
