@@ -46,7 +46,10 @@ def generic(sc, tr, notes):
 #   - a step is "explained by its impulses" when replaying the logged impulses in time order (each
 #     against the current velocities, the standard impulse for the logged normal and the scene's
 #     COR, the path bending at the logged time) reproduces the end record; otherwise the failsafe
-#     acted in that step;
+#     acted in that step. Resting contact does not bounce: below COR 1, an impulse whose contact
+#     closes no faster than twice the step's kicks along its normal (each side's |kick . n|
+#     summed, a kick being the velocity change the integrator's prediction made, 0 for a fixed
+#     particle) takes COR 0;
 #   - contacts are time-ordered, nothing ends a step deeper than it began, no response adds kinetic
 #     energy, momentum and angular momentum are kept for free scenes, and along every replayed path
 #     no pair passes into another (no tunnelling).
@@ -148,6 +151,10 @@ def replay_step(sc, start, end, pred_x, pred_v):
     rate = [sub(pred_x[i], start.pos(i)) for i in range(sc.n)]
     v = list(pred_v)
     inv = lambda p: 0.0 if sc.fixed[p] else 1.0 / sc.m[p]
+    kick = [(0.0, 0.0) if sc.fixed[p] else sub(pred_v[p], start.vel(p)) for p in range(sc.n)]
+    along = lambda p, nh: abs(dot(kick[p], nh))
+    # COR 0 for resting contact (see the section comment): closing (m/s) against the kicks.
+    cor = lambda closing, kicks: 0.0 if e < 1 and closing <= 2.0 * kicks else e
     t, pieces = 0.0, []
     for (kind, i, j, n, tau) in end.impulses:
         if tau > t:
@@ -158,18 +165,21 @@ def replay_step(sc, start, end, pred_x, pred_v):
         u = lambda p: mul(1.0 / h, rate[p])   # the velocity the path moves with
         if kind == PP:
             w = inv(i) + inv(j)
-            N = (1 + e) * dot(sub(u(j), u(i)), nh)
+            c = dot(sub(u(j), u(i)), nh)
+            N = (1 + cor(-c, along(i, nh) + along(j, nh))) * c
             dv = [(i, mul(N * inv(i) / w, nh)), (j, mul(-N * inv(j) / w, nh))]
         elif kind == PE:
             a, b, _ = sc.edges[j]
             al = _closest_param(x[i], x[a], x[b])
             w = inv(i) + (1 - al) ** 2 * inv(a) + al ** 2 * inv(b)
             ve = add(mul(1 - al, u(a)), mul(al, u(b)))
-            N = (1 + e) * dot(sub(ve, u(i)), nh)
+            c = dot(sub(ve, u(i)), nh)
+            N = (1 + cor(-c, along(i, nh) + (1 - al) * along(a, nh) + al * along(b, nh))) * c
             dv = [(i, mul(N * inv(i) / w, nh)), (a, mul(-(1 - al) * N * inv(a) / w, nh)),
                   (b, mul(-al * N * inv(b) / w, nh))]
         else:
-            dv = [(i, mul(-(1 + e) * dot(u(i), nh), nh))]
+            c = dot(u(i), nh)
+            dv = [(i, mul(-(1 + cor(c, along(i, nh))) * c, nh))]
         for p, d in dv:
             if not sc.fixed[p]:
                 v[p] = add(v[p], d)

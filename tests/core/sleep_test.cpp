@@ -15,8 +15,8 @@ constexpr double kG = 9.81;
 constexpr double kR = 0.1;  // every disk's radius
 
 /// Disks of radius kR on the floor y = 0 under gravity (symplectic Euler, dt 0.01), each at
-/// (x, kR) with horizontal velocity vx. COR 0 by default: with COR > 0 a disk on the floor
-/// bounces off it by about h g in every step, forever, and rightly never sleeps.
+/// (x, kR) with horizontal velocity vx. COR 0 by default (resting contact does not bounce at any
+/// COR below 1: resting_contact_test.cpp).
 TestScene floorScene(const std::string& type, const std::vector<std::pair<double, double>>& disks,
                      double cor = 0.0) {
   TestScene s = contactScene(type, cor);
