@@ -7,6 +7,8 @@
 #include "pair_query.h"
 
 #include <algorithm>
+#include <cmath>
+#include <initializer_list>
 #include <sstream>
 
 namespace fosssim {
@@ -159,14 +161,30 @@ void EventHandler::wakeNearMoving(const Scene& scene, StepStats& stats) {
   }
 }
 
+// Boxes grown by the radius and kTouchingSlack of it only: scale-free (no absolute margin), and
+// inside the broad phase's boxes, whose margins are at least kRelativeMargin (> kTouchingSlack)
+// of the radius on top of it (pair_bounds.h).
 bool EventHandler::stepBoxesMeet(const Scene& scene, uint64_t key) const {
   const VecX &from = motion_.from(), &end = motion_.end();
+  const auto box = [&](std::initializer_list<int> particles, double radius) {
+    const double grow = radius * (1.0 + kTouchingSlack);
+    Box b{INFINITY, INFINITY, -INFINITY, -INFINITY};
+    for (int p : particles)
+      for (const VecX* x : {&from, &end}) {
+        const Vec2 q = at(*x, p);
+        b = Box{std::min(b.x0, q.x() - grow), std::min(b.y0, q.y() - grow), std::max(b.x1, q.x() + grow),
+                std::max(b.y1, q.y() + grow)};
+      }
+    return b;
+  };
   const int i = keyParticle(key), other = keyOther(key);
-  const Box a = particleBox(scene, from, end, i, 0.0, 0.0);
   switch (keyKind(key)) {
-    case PairKind::ParticleParticle: return overlap(a, particleBox(scene, from, end, other, 0.0, 0.0));
-    case PairKind::ParticleEdge: return overlap(a, edgeBox(scene, from, end, other, 0.0, 0.0));
-    case PairKind::ParticleHalfPlane: return nearHalfPlane(scene, from, end, i, other, 0.0, 0.0);
+    case PairKind::ParticleParticle: return overlap(box({i}, scene.radius[i]), box({other}, scene.radius[other]));
+    case PairKind::ParticleEdge: {
+      const Edge& edge = scene.edges[other];
+      return overlap(box({i}, scene.radius[i]), box({edge.i, edge.j}, edge.radius));
+    }
+    case PairKind::ParticleHalfPlane: return true;  // one particle: never a sleeper with a mover
   }
   return true;
 }

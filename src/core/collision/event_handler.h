@@ -105,8 +105,8 @@ class EventHandler final : public CollisionHandler {
   /// Wakes the sleepers of the event's pair if it closes harder than resting contact (sleepers.h);
   /// closing: its closing speed (m/s, as the kicks and the sleep speed it is compared with).
   void wakeIfHit(const Scene& scene, uint64_t key, double closing, StepStats& stats);
-  /// Whether the pair's boxes over the step (motion_'s start to end, radii and the least
-  /// margins of pair_bounds.h) meet: a test the broad phase's candidates always pass.
+  /// Whether the pair's boxes over the step (motion_'s start to end, grown by the radii and
+  /// kTouchingSlack of them) meet: a test the broad phase's candidates always pass.
   bool stepBoxesMeet(const Scene& scene, uint64_t key) const;
   /// Wakes every sleeper among the candidates of a particle that moved in the last step.
   void wakeNearMoving(const Scene& scene, StepStats& stats);
