@@ -7,7 +7,8 @@
 //            impulse against their current velocities (so simultaneous impacts are resolved one
 //            after another, Gauss-Seidel, never summed from stale velocities), bend their paths
 //            there, and query again only the pairs of the particles that changed, over the rest
-//            of the step; stale events (a particle changed since) are dropped;
+//            of the step; stale events (a particle changed since) are dropped; resting contact
+//            (closing at about the step's kick) takes COR 0 (kRestingBounceKicks);
 //   failsafe a particle that has taken its quota of impulse events in this step (a resting pile,
 //            a ball in a wedge: the Zeno cascades of event-driven methods) hands its contacts to
 //            the impact zones of contact_zones.h, which stop them approaching without a loop;
