@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <initializer_list>
 #include <sstream>
 
 namespace fosssim {
@@ -150,10 +149,10 @@ void EventHandler::wakeNearMoving(const Scene& scene, StepStats& stats) {
       // A neighbour: touching now, or within what a mover moves in this step.
       const double depth = pairDepth(scene, key, [&](int q) { return motion_.at(q, 0.0); });
       if (depth < -reach) return;
-      // ... and whose boxes over the step meet: what the broad phase compares, with the least
-      // margins (boxes inside its own), so that the sleepers woken are the same with the broad
-      // phase and with every pair as candidates. The reach above is a disk's; a mover leaving a
-      // sleeper behind stays within it, yet its box never meets the sleeper's.
+      // ... and whose boxes over the step meet (stepBoxesMeet: boxes inside the broad phase's),
+      // so that the sleepers woken are the same with the broad phase and with every pair as
+      // candidates. The reach above is a disk's; a mover leaving a sleeper behind stays within
+      // it, yet its box never meets the sleeper's.
       if (!stepBoxesMeet(scene, key)) return;
       for (int k = 0; k < pair.count; ++k)
         stats.woken += sleepers_.wake(pair.p[k]);  // 0 when awake
@@ -166,24 +165,13 @@ void EventHandler::wakeNearMoving(const Scene& scene, StepStats& stats) {
 // of the radius on top of it (pair_bounds.h).
 bool EventHandler::stepBoxesMeet(const Scene& scene, uint64_t key) const {
   const VecX &from = motion_.from(), &end = motion_.end();
-  const auto box = [&](std::initializer_list<int> particles, double radius) {
-    const double grow = radius * (1.0 + kTouchingSlack);
-    Box b{INFINITY, INFINITY, -INFINITY, -INFINITY};
-    for (int p : particles)
-      for (const VecX* x : {&from, &end}) {
-        const Vec2 q = at(*x, p);
-        b = Box{std::min(b.x0, q.x() - grow), std::min(b.y0, q.y() - grow), std::max(b.x1, q.x() + grow),
-                std::max(b.y1, q.y() + grow)};
-      }
-    return b;
-  };
+  const auto grown = [](double radius) { return radius * (1.0 + kTouchingSlack); };
   const int i = keyParticle(key), other = keyOther(key);
+  const Box a = sweptPointBox(from, end, i, grown(scene.radius[i]));
   switch (keyKind(key)) {
-    case PairKind::ParticleParticle: return overlap(box({i}, scene.radius[i]), box({other}, scene.radius[other]));
-    case PairKind::ParticleEdge: {
-      const Edge& edge = scene.edges[other];
-      return overlap(box({i}, scene.radius[i]), box({edge.i, edge.j}, edge.radius));
-    }
+    case PairKind::ParticleParticle: return overlap(a, sweptPointBox(from, end, other, grown(scene.radius[other])));
+    case PairKind::ParticleEdge:
+      return overlap(a, sweptEdgeBox(scene, from, end, other, grown(scene.edges[other].radius)));
     case PairKind::ParticleHalfPlane: return true;  // one particle: never a sleeper with a mover
   }
   return true;

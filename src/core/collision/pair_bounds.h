@@ -57,19 +57,22 @@ double coordinateScale(const Scene& scene, const VecX& a, const VecX& b, int thr
 
 inline double margin(double scale, double radius) { return kRelativeMargin * (scale + radius) + kAbsoluteMargin; }
 
-/// Particle p moving from qs to qe, as a disk of its radius plus `extra`.
-inline Box particleBox(const Scene& scene, const VecX& qs, const VecX& qe, int p, double scale, double extra) {
-  const double r = scene.radius[p];
-  const double grow = r + extra + margin(scale, r);
+/// The box of particle p's centre moving from qs to qe, grown by `grow` on every side.
+inline Box sweptPointBox(const VecX& qs, const VecX& qe, int p, double grow) {
   const double xs = qs[2 * p], ys = qs[2 * p + 1], xe = qe[2 * p], ye = qe[2 * p + 1];
   return Box{(xs < xe ? xs : xe) - grow, (ys < ye ? ys : ye) - grow, (xs > xe ? xs : xe) + grow,
              (ys > ye ? ys : ye) + grow};
 }
 
-/// Edge e with both endpoints moving from qs to qe, as a capsule of its radius plus `extra`.
-inline Box edgeBox(const Scene& scene, const VecX& qs, const VecX& qe, int e, double scale, double extra) {
+/// Particle p moving from qs to qe, as a disk of its radius plus `extra`.
+inline Box particleBox(const Scene& scene, const VecX& qs, const VecX& qe, int p, double scale, double extra) {
+  const double r = scene.radius[p];
+  return sweptPointBox(qs, qe, p, r + extra + margin(scale, r));
+}
+
+/// The box of edge e's segment with both endpoints moving from qs to qe, grown by `grow`.
+inline Box sweptEdgeBox(const Scene& scene, const VecX& qs, const VecX& qe, int e, double grow) {
   const Edge& edge = scene.edges[e];
-  const double grow = edge.radius + extra + margin(scale, edge.radius);
   const double xs[4] = {qs[2 * edge.i], qs[2 * edge.j], qe[2 * edge.i], qe[2 * edge.j]};
   const double ys[4] = {qs[2 * edge.i + 1], qs[2 * edge.j + 1], qe[2 * edge.i + 1], qe[2 * edge.j + 1]};
   Box b{xs[0], ys[0], xs[0], ys[0]};
@@ -80,6 +83,12 @@ inline Box edgeBox(const Scene& scene, const VecX& qs, const VecX& qe, int e, do
     b.y1 = ys[k] > b.y1 ? ys[k] : b.y1;
   }
   return Box{b.x0 - grow, b.y0 - grow, b.x1 + grow, b.y1 + grow};
+}
+
+/// Edge e with both endpoints moving from qs to qe, as a capsule of its radius plus `extra`.
+inline Box edgeBox(const Scene& scene, const VecX& qs, const VecX& qe, int e, double scale, double extra) {
+  const double r = scene.edges[e].radius;
+  return sweptEdgeBox(scene, qs, qe, e, r + extra + margin(scale, r));
 }
 
 /// False when particle p, moving from qs to qe, certainly stays farther than its radius plus
