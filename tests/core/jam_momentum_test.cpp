@@ -32,8 +32,7 @@ TestScene slidingPile(const char* type, double cor, int nx, int ny, double gap, 
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx - j % 2; ++i)
       addBody(s, 1.0, Vec2(i * d + (j % 2) * d / 2, r + j * d * std::sqrt(3.0) / 2), Vec2(vx, 0.0), r);
-  s.scene.halfplanes.push_back(HalfPlane{Vec2(0, 0), Vec2(0, 1)});
-  s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, -10)));
+  addFloorAndGravity(s, 10);
   return s;
 }
 

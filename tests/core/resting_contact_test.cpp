@@ -21,8 +21,7 @@ constexpr double kH = 0.01;  // contactScene's step
 
 TestScene floorScene(const std::string& type, double cor) {
   TestScene s = contactScene(type, cor, kH);
-  s.scene.halfplanes.push_back(HalfPlane{Vec2(0, 0), Vec2(0, 1)});
-  s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, -kG)));
+  addFloorAndGravity(s, kG);
   return s;
 }
 

@@ -91,10 +91,9 @@ void runBothWays(TestScene& a, TestScene& b, int steps, int& mostAsleep, int& wo
 /// and one disk high above them that lands on the pile at about step 200.
 TestScene pileAndDrop(const char* type) {
   TestScene s = contactScene(type, 0.0);
-  s.scene.halfplanes.push_back(HalfPlane{Vec2(0, 0), Vec2(0, 1)});
+  addFloorAndGravity(s);
   s.scene.halfplanes.push_back(HalfPlane{Vec2(-0.1, 0), Vec2(1, 0)});
   s.scene.halfplanes.push_back(HalfPlane{Vec2(2.4, 0), Vec2(-1, 0)});
-  s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, -9.81)));
   s.scene.forces.push_back(std::make_unique<PenaltyForce>(10.0, 0.01));
   for (int row = 0; row < 3; ++row)
     for (int k = 0; k < 12; ++k) addBody(s, 1.0, Vec2(0.2 * k + 0.1 * (row % 2), 0.1 + 0.18 * row), Vec2::Zero(), 0.1);
@@ -130,10 +129,9 @@ TestScene randomHeap(const char* type, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   TestScene s = contactScene(type, 0.2 * u(rng));
-  s.scene.halfplanes.push_back(HalfPlane{Vec2(0, 0), Vec2(0, 1)});
+  addFloorAndGravity(s);
   s.scene.halfplanes.push_back(HalfPlane{Vec2(-1, 0), Vec2(1, 0)});
   s.scene.halfplanes.push_back(HalfPlane{Vec2(1, 0), Vec2(-1, 0)});
-  s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, -9.81)));
   s.scene.forces.push_back(std::make_unique<PenaltyForce>(5.0 + 20.0 * u(rng), 0.005 + 0.01 * u(rng)));
   addBody(s, 1.0, Vec2(0.3, 0.05), Vec2::Zero(), 0.05, true);
   for (int k = 0; k < 30; ++k)

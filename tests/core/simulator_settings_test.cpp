@@ -26,8 +26,7 @@ TestScene penaltyPile(int side) {
   for (int row = 0; row < side; ++row)
     for (int col = 0; col < side; ++col)
       addBody(s, 1.0, Vec2(0.19 * col + 0.01 * (row % 2), 0.1 + 0.19 * row), Vec2(0.1 * (col % 3) - 0.1, 0), 0.1);
-  s.scene.halfplanes.push_back(HalfPlane{Vec2(0, 0), Vec2(0, 1)});
-  s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, -9.81)));
+  addFloorAndGravity(s);
   finalizeScene(s.scene);
   return s;
 }

@@ -20,8 +20,7 @@ constexpr double kR = 0.1;  // every disk's radius
 TestScene floorScene(const std::string& type, const std::vector<std::pair<double, double>>& disks,
                      double cor = 0.0) {
   TestScene s = contactScene(type, cor);
-  s.scene.halfplanes.push_back(HalfPlane{Vec2(0, 0), Vec2(0, 1)});
-  s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, -kG)));
+  addFloorAndGravity(s, kG);
   for (const auto& [x, vx] : disks) addBody(s, 1.0, Vec2(x, kR), Vec2(vx, 0), kR);
   return s;
 }

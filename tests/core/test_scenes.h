@@ -24,6 +24,13 @@ inline int addBody(TestScene& s, double m, Vec2 x, Vec2 v, double radius = 0.1, 
   return static_cast<int>(n / 2);
 }
 
+/// The ground most contact tests stand on: the floor y = 0 (a half-plane facing up) and gravity
+/// of g pointing down.
+inline void addFloorAndGravity(TestScene& s, double g = 9.81) {
+  s.scene.halfplanes.push_back(HalfPlane{Vec2(0, 0), Vec2(0, 1)});
+  s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, -g)));
+}
+
 inline TestScene projectile(const std::string& integrator, double dt, Vec2 v0, Vec2 g) {
   TestScene s;
   addBody(s, 2.0, Vec2(0, 0), v0);
