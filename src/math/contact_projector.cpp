@@ -390,6 +390,13 @@ double ContactProjector::capEnergy() {
   }
   if (!(b + c > kEnergyRoundingFraction * (start + c))) return 1.0;
   const double f = b < 0.0 ? -b / c : 0.0;
+  moveBack(f);
+  return f;
+}
+
+void ContactProjector::rollBack() { moveBack(0.0); }
+
+void ContactProjector::moveBack(double f) {
   for (int s : changed_)
     if (inverseMass_[s] != 0.0) velocity_[s] = startVelocity_[s] + f * (velocity_[s] - startVelocity_[s]);
   for (int k : touched_) {
@@ -397,7 +404,6 @@ double ContactProjector::capEnergy() {
     replaced_[k] -= (1.0 - f) * startReplaced_[k];
     queue(k);  // settled or not, it may close again
   }
-  return f;
 }
 
 }  // namespace fosssim::math

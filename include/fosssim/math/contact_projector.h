@@ -158,6 +158,20 @@ class ContactProjector {
     return w;
   }
   double rowNorm(int k) const { return row_[k].norm; }
+  /// Row k's A_kk = G_k M^-1 G_k^T: the row's velocity change per unit of its impulse.
+  double rowDiagonal(int k) const { return row_[k].diag; }
+  /// Calls f(id, v0, m) for every movable body whose velocity changed since the last takeChanged:
+  /// its id, its velocity before those changes, its mass (a weld's: all its bodies').
+  template <class F>
+  void forEachChangedBody(F&& f) const {
+    for (int s : changed_)
+      if (inverseMass_[s] != 0.0 && slot_[body_[s].id] == s) f(body_[s].id, startVelocity_[s], 1.0 / inverseMass_[s]);
+  }
+  /// Calls f(k) for every row whose multiplier changed since the last takeChanged.
+  template <class F>
+  void forEachTouchedRow(F&& f) const {
+    for (int k : touched_) f(k);
+  }
   /// Calls f(id) for body b and every body welded to it.
   template <class F>
   void forEachWelded(int b, F&& f) const {
@@ -183,6 +197,10 @@ class ContactProjector {
   /// freeze or release gave them. Every row moved back is queued (it may close again). Returns
   /// f (1: nothing scaled).
   double capEnergy();
+  /// Takes back every change the rows made since the last takeChanged, as capEnergy does with
+  /// f = 0 (velocities and multipliers where they were, the rows queued): for a caller that
+  /// changes the problem (a body released) and solves again.
+  void rollBack();
   /// Kinetic energy gains up to this fraction of the changed bodies' energy are rounding.
   static constexpr double kEnergyRoundingFraction = 1e-13;
   int rows() const { return static_cast<int>(row_.size()); }
@@ -229,6 +247,8 @@ class ContactProjector {
     long epoch = 0;         ///< the instant (beginInstant's count) it was set at
   };
   void apply(int k, double lambda);
+  /// Moves velocities and multipliers back to lambda0 + f (lambda - lambda0) (see capEnergy).
+  void moveBack(double f);
   /// Row k's multiplier is about to change: remembers where it started (capEnergy).
   void touch(int k) {
     if (touchedFlag_[k]) return;

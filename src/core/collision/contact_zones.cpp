@@ -211,6 +211,16 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
       const long before = projector_.updates();
       const bool solved = projector_.solve(rateScale_.data(), 1.0 / h, kZoneProjectionTolerance, budget, &rowsNow);
       stats.zoneUpdates += projector_.updates() - before;
+      // A solve that stopped the zone against a sleeper it hits is taken back, and the zone is
+      // solved again with the sleeper woken as a member (wakeHitSleepers).
+      if (wakeHitSleepers(scene, zone, stats)) {
+        projector_.rollBack();
+        queue_.clear();
+        for (int p : hitSleepers_) zone = take(scene, motion, p, zone, h);
+        int added = 0;
+        zone = grow(scene, motion, candidates, zone, T, h, added);
+        continue;
+      }
       // No energy from the zones: the warm starts applied since the last solve (and the rows'
       // changes to other zones' bodies waiting at this instant) are taken back as far as this
       // solve did not (ContactProjector::capEnergy). What that leaves closing comes back as

@@ -191,8 +191,9 @@ class ContactZones {
   void setUpdatesPerRow(long updates) { updatesPerRow_ = updates; }
   /// Whether budget-ended solves hold the particles they brought to rest (on unless a test says).
   void setHold(bool hold) { hold_ = hold; }
-  /// The handler's sleepers: obstacles, as fixed particles are.
-  void setSleepers(const Sleepers* sleepers) { sleepers_ = sleepers; }
+  /// The handler's sleepers: obstacles, as fixed particles are, until a zone hits one
+  /// (wakeHitSleepers).
+  void setSleepers(Sleepers* sleepers) { sleepers_ = sleepers; }
 
   /// Whether the contact of pair `key`, found closing at a later time of the step, is to be
   /// solved at the current instant too (its event also stays at its own time, for a contact that
@@ -269,6 +270,9 @@ class ContactZones {
   /// Zone `zone` (a root) moved rigidly and has met an obstacle: its members go back to the
   /// projection with their rigid velocities.
   void resumeProjection(const Scene& scene, int zone, int metAgain);
+  /// Wakes the sleepers that zone `zone`'s last solve pushed harder than resting contact does,
+  /// listed in hitSleepers_; returns whether any woke (resolve then solves again).
+  bool wakeHitSleepers(const Scene& scene, int zone, StepStats& stats);
   /// Stops the members of zone `zone` (a root) held at rest (see the top of this file).
   void holdResting(const Scene& scene, int zone);
   /// A jammed contact: welds its movable particles into one body of the projector (returns one of
@@ -287,7 +291,8 @@ class ContactZones {
   bool rigidOnly_ = false;
   long updatesPerRow_ = kZoneUpdatesPerRow;
   bool hold_ = true;
-  const Sleepers* sleepers_ = nullptr;
+  Sleepers* sleepers_ = nullptr;
+  std::vector<int> hitSleepers_;  ///< wakeHitSleepers' obstacles to wake (scratch)
   std::vector<int> parent_;  ///< N: union-find parent, -1 when in no zone
   /// What is known of one zone, kept at its root: a particle that joins writes this record and
   /// its own links, not a dozen arrays (and no list of its own on the heap: with one vector of

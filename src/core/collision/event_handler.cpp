@@ -106,14 +106,7 @@ bool EventHandler::sleepingPair(const Scene& scene, uint64_t key) const {
 
 void EventHandler::wakeIfHit(const Scene& scene, uint64_t key, double closing, StepStats& stats) {
   const PairParticles pair = pairParticles(scene, key);
-  double kicks = 0, sleepSpeed = 0;
-  bool asleep = false;
-  for (int k = 0; k < pair.count; ++k) {
-    const int p = pair.p[k];
-    if (sleepers_.asleep(p)) asleep = true, sleepSpeed = std::max(sleepSpeed, sleepers_.sleepSpeed(scene, p));
-    else if (!scene.isFixed(p)) kicks += sleepers_.kick(p);
-  }
-  if (!asleep || closing <= kWakeKickFactor * kicks + sleepSpeed) return;
+  if (closing <= sleepers_.wakeSpeed(scene, pair.p, pair.count)) return;  // infinite without a sleeper
   for (int k = 0; k < pair.count; ++k)
     stats.woken += sleepers_.wake(pair.p[k]);  // 0 when awake
 }

@@ -3,6 +3,7 @@
 #include "parallel_rows.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace fosssim {
 
@@ -96,6 +97,17 @@ int Sleepers::wake(int p) {
   if (k >= 0) return wakeIsland(k);
   asleep_[p] = 0, still_[p] = 0, --sleeping_;
   return 1;
+}
+
+double Sleepers::wakeSpeed(const Scene& scene, const int* particles, int count) const {
+  double kicks = 0, sleepSpeed = 0;
+  bool sleeper = false;
+  for (int k = 0; k < count; ++k) {
+    const int p = particles[k];
+    if (asleep(p)) sleeper = true, sleepSpeed = std::max(sleepSpeed, this->sleepSpeed(scene, p));
+    else if (!scene.isFixed(p)) kicks += kick(p);
+  }
+  return sleeper ? kWakeKickFactor * kicks + sleepSpeed : std::numeric_limits<double>::infinity();
 }
 
 // Every member of island k that sleeps wakes (some may be awake already: a member a caller moved).

@@ -100,6 +100,11 @@ class Sleepers {
   /// Wakes p and the rest of its island (no-op if awake): they count as moving again from now
   /// on. Returns how many woke.
   int wake(int p);
+  /// The speed above which a contact of particles[0..count) hits its sleepers harder than
+  /// resting contact does: kWakeKickFactor times the kicks of its awake movable particles, plus
+  /// the largest sleep speed of its sleepers. Infinite when none of them sleeps. Events compare
+  /// their closing speed with it, the zones what a row's impulse stopped (ContactZones).
+  double wakeSpeed(const Scene& scene, const int* particles, int count) const;
   /// Whether p did not stay still in the last step (a neighbour that moves wakes sleepers).
   bool movedLastStep(int p) const { return moved_.empty() || moved_[p] != 0; }
   /// The velocity change this step's forces gave particle p (|predicted v - start v|); known
