@@ -27,11 +27,25 @@ class Integrator {
   /// linearized implicit Euler (one Newton step by definition), 0 for methods that solve nothing.
   /// Simulator::step copies it into StepStats::newtonIterations.
   virtual int newtonIterations() const { return 0; }
+  /// Whether iterative solves stop on the reference's absolute tolerances (--compat: the course's
+  /// iterates, bit for bit) or on tolerances relative to the scene's own scales (the default
+  /// mode, which the Simulator sets). Methods that iterate nothing ignore it.
+  virtual void setCourseTolerances(bool /*course*/) {}
 };
 
-/// Implicit Euler's Newton iteration stops when the update's Euclidean norm falls below this
-/// (the reference's criterion)...
+/// Implicit Euler's Newton iteration stops, under --compat, when the update's Euclidean norm falls
+/// below this (the reference's criterion, in the scene's units)...
 constexpr double kNewtonTolerance = 1e-9;
+/// ...and in the default mode when it falls to this fraction of the velocity scale: units-free.
+/// The absolute 1e-9 m/s stopped a spring pendulum scaled by 10^6 (its updates stalled at
+/// 2.4e-9 m/s, rounding for velocities of 10^6 m/s: "did not converge"), and accepted a first
+/// update as the answer at the 10^-6 scale.
+constexpr double kNewtonRelativeTolerance = 1e-9;
+/// The velocity scale is the norm of the step's new velocities (every particle's), but at least
+/// this fraction of the positions' norm over the step. A particle resting where its forces
+/// balance has no velocity to measure against, and Newton's updates stall at the rounding of its
+/// forces, at most about eps |x| / h; this floor puts the tolerance some 45 times above that.
+constexpr double kNewtonRestingFraction = 1e-5;
 /// ...and a step that has not converged after this many iterations fails with a message instead
 /// of looping forever (the reference had no limit).
 constexpr int kMaxNewtonIterations = 100;

@@ -4,11 +4,14 @@
 // Implicit Euler solves M dv = h F(x + h (v + dv), v + dv). Newton on dv, starting from dv = 0,
 // linearises F around the current guess (x + dx, v + dv) with dx = h (v + dv):
 //   (M - h dF/dv - h^2 dF/dx) delta = h F(x + dx, v + dv) - M dv,   dv += delta
-// until |delta| < kNewtonTolerance (at least one iteration, as the reference does).
+// until |delta| < kNewtonTolerance (at least one iteration, as the reference does); in the
+// default mode until |delta| <= kNewtonRelativeTolerance max(|v + dv|, kNewtonRestingFraction
+// |x| / h), the scene's own scales.
 // Linearized implicit Euler takes exactly one such step from the guess dv = 0, i.e. with forces
 // and Jacobians at (x + h v, v); then v += dv and x += h v (with the new v).
 #include "implicit_system.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -131,6 +134,7 @@ Status ImplicitEuler::step(const Scene& scene, State& state, double dt, ForceCon
   if (state.x.size() == 0) return Status::ok();  // nothing to solve (and no empty factorisation)
   dv_.setZero(state.v.size());
   dx_ = dt * state.v;
+  const double restingScale = kNewtonRestingFraction * state.x.norm() / dt;
   for (int iteration = 1;; ++iteration) {
     iterations_ = iteration;
     xTrial_ = state.x + dx_;
@@ -142,11 +146,13 @@ Status ImplicitEuler::step(const Scene& scene, State& state, double dt, ForceCon
     const double size = delta.norm();
     if (!std::isfinite(size))
       return Status::error("implicit Euler: the Newton update became non-finite");
-    if (size < kNewtonTolerance) break;
+    const double tolerance =
+        course_ ? kNewtonTolerance : kNewtonRelativeTolerance * std::max((state.v + dv_).norm(), restingScale);
+    if (course_ ? size < tolerance : size <= tolerance) break;
     if (iteration == kMaxNewtonIterations)
       return Status::error("implicit Euler: Newton's method did not converge in " +
                            std::to_string(kMaxNewtonIterations) + " iterations (last update " + shortNumber(size) +
-                           ", tolerance " + shortNumber(kNewtonTolerance) + "); a smaller dt helps");
+                           ", tolerance " + shortNumber(tolerance) + "); a smaller dt helps");
   }
   state.x += dx_;
   state.v += dv_;

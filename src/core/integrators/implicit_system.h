@@ -67,11 +67,13 @@ class ImplicitEuler final : public Integrator {
   using Integrator::step;
   Status step(const Scene& scene, State& state, double dt, ForceContext& forces) override;
   int newtonIterations() const override { return iterations_; }
+  void setCourseTolerances(bool course) override { course_ = course; }
 
  private:
   ImplicitSystem system_;
   VecX dx_, dv_, xTrial_, vTrial_;
   int iterations_ = 0;
+  bool course_ = true;  ///< kNewtonTolerance (absolute) or kNewtonRelativeTolerance
 };
 
 class LinearizedImplicitEuler final : public Integrator {
