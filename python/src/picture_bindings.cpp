@@ -3,6 +3,7 @@
 #include "arrays.h"
 #include "bindings.h"
 #include "py_simulator.h"
+#include "simulator_lock.h"
 
 #include "fosssim/render/picture.h"
 #include "fosssim/render/svg_writer.h"
@@ -30,6 +31,7 @@ void checkSize(int width, int height) {
 /// initial state's particles, so that successive frames share one camera.
 render::Picture picture(const PySimulator& s, int width, int height) {
   checkSize(width, height);
+  SimulatorLock lock(s);  // the state and trails, which another thread's step may change
   render::View view;
   view.width = width;
   view.height = height;
@@ -95,6 +97,7 @@ void bindPictures(nb::module_& m) {
         if (every < 1) throw SimulationError("every must be >= 1");
         if (!(fps > 0)) throw SimulationError("fps must be > 0");
         checkSize(width, height);
+        SimulatorLock lock(s);  // the movie's steps and frames follow one another, no other thread's between
         std::unique_ptr<render::MovieWriter> movie;
         check<FileError>(render::MovieWriter::open(path, width, height, fps, movie));
         check<FileError>(movie->write(frame(s, width, height)));

@@ -2,6 +2,7 @@
 #include "arrays.h"
 #include "bindings.h"
 #include "py_simulator.h"
+#include "simulator_lock.h"
 
 #include <nanobind/stl/optional.h>
 #include <nanobind/stl/shared_ptr.h>
@@ -18,8 +19,10 @@ nb::object view(const PySimulator& s, const VecX& data) {
 }
 
 /// Steps until `steps` more are taken or the callback returns False; the GIL is released while
-/// C++ steps, taken back for the callback.
+/// C++ steps, taken back for the callback. The lock is held throughout, so another thread's
+/// steps do not interleave with the run's.
 long run(PySimulator& s, std::optional<long> steps, long every, nb::object callback) {
+  SimulatorLock lock(s);
   if (every < 1) throw SimulationError("every must be >= 1, got " + std::to_string(every));
   const long total = steps ? *steps : std::max(0L, s.numSteps() - s.stepsTaken());
   if (total < 0) throw SimulationError("steps must be >= 0, got " + std::to_string(total));
@@ -40,6 +43,7 @@ long run(PySimulator& s, std::optional<long> steps, long every, nb::object callb
 }
 
 nb::dict diagnostics(const PySimulator& s) {
+  SimulatorLock lock(s);  // another thread's step may grow the table
   if (!s.recordsDiagnostics()) throw SimulationError("this simulator records no diagnostics (diagnostics=False)");
   const auto& columns = s.columns();
   const auto& table = s.table();
@@ -65,24 +69,33 @@ void bindSimulator(nb::module_& m) {
            "results for any count); diagnostics: record a row of diagnostics per step (and time the phases); "
            "sleep: resting particles sleep in the default mode (False: as FOSSSim --no-sleep).")
       .def("step", [](PySimulator& s, long count) {
+             SimulatorLock lock(s);
              nb::gil_scoped_release release;
              for (long k = 0; k < count; ++k) s.step();
            }, nb::arg("count") = 1, "Takes `count` steps; raises SimulationError if a step fails.")
       .def("run", &run, nb::arg("steps") = nb::none(), nb::arg("every") = 1, nb::arg("callback") = nb::none(),
            "Takes `steps` steps (default: the rest of the scene's duration), calling callback(simulator) "
            "every `every` steps; a callback returning False stops the run. Returns the steps taken.")
-      .def_prop_ro("time", &PySimulator::time)
-      .def_prop_ro("steps_taken", &PySimulator::stepsTaken)
+      .def_prop_ro("time", [](const PySimulator& s) {
+             SimulatorLock lock(s);
+             return s.time();
+           })
+      .def_prop_ro("steps_taken", [](const PySimulator& s) {
+             SimulatorLock lock(s);
+             return s.stepsTaken();
+           })
       .def_prop_ro("num_steps", &PySimulator::numSteps, "Steps of the scene's full duration.")
       .def_prop_ro("num_particles", &PySimulator::numParticles)
       .def_prop_ro("compat", &PySimulator::compat)
       .def_prop_ro("scene", [](const PySimulator& s) { return s.scene().copy(); }, "A copy of the simulated scene.")
       .def_prop_rw("positions", [](const PySimulator& s) { return view(s, s.positions()); },
                    [](PySimulator& s, const Input& a) {
+                     SimulatorLock lock(s);
                      s.setPositions(pairsOf(a, s.numParticles(), "positions"), 2L * s.numParticles());
                    })
       .def_prop_rw("velocities", [](const PySimulator& s) { return view(s, s.velocities()); },
                    [](PySimulator& s, const Input& a) {
+                     SimulatorLock lock(s);
                      s.setVelocities(pairsOf(a, s.numParticles(), "velocities"), 2L * s.numParticles());
                    })
       .def_prop_ro("masses", [](const PySimulator& s) {
@@ -99,6 +112,7 @@ void bindSimulator(nb::module_& m) {
              return pandas.attr("DataFrame")(diagnostics(s));
            }, "The diagnostics as a pandas DataFrame.")
       .def("__repr__", [](const PySimulator& s) {
+        SimulatorLock lock(s);
         return "<fosssim.Simulator step " + std::to_string(s.stepsTaken()) + " of " + std::to_string(s.numSteps()) +
                ", t = " + std::to_string(s.time()) + (s.compat() ? ", compat" : "") + ">";
       });
