@@ -18,7 +18,7 @@ nb::object view(const PySimulator& s, const VecX& data) {
   return toPython(View2(data.data(), 2, shape, nb::find(&s)));
 }
 
-/// Steps until `steps` more are taken or the callback returns False; the GIL is released while
+/// Steps until `steps` more are taken or the callback returns a false value; the GIL is released while
 /// C++ steps, taken back for the callback. The lock is held throughout, so another thread's
 /// steps do not interleave with the run's.
 long run(PySimulator& s, std::optional<long> steps, long every, nb::object callback) {
@@ -34,9 +34,12 @@ long run(PySimulator& s, std::optional<long> steps, long every, nb::object callb
       for (long k = 0; k < chunk; ++k) s.step();
     }
     done += chunk;
-    if (!callback.is_none() && (s.stepsTaken() % every == 0 || done == total)) {
+    if (!callback.is_none()) {  // after every `every` steps of this run, and after its last
       nb::object r = callback(nb::find(&s));
-      if (r.is(nb::bool_(false))) break;
+      // Python's truth, so that np.False_ or 0 stop too; None, a callback's usual return, goes on.
+      const int go = r.is_none() ? 1 : PyObject_IsTrue(r.ptr());
+      if (go < 0) throw nb::python_error();
+      if (go == 0) break;
     }
   }
   return done;
@@ -75,7 +78,8 @@ void bindSimulator(nb::module_& m) {
            }, nb::arg("count") = 1, "Takes `count` steps; raises SimulationError if a step fails.")
       .def("run", &run, nb::arg("steps") = nb::none(), nb::arg("every") = 1, nb::arg("callback") = nb::none(),
            "Takes `steps` steps (default: the rest of the scene's duration), calling callback(simulator) "
-           "every `every` steps; a callback returning False stops the run. Returns the steps taken.")
+           "after every `every` steps of this run and after its last step; a callback returning a false value "
+           "(False, 0, np.False_; not None) stops the run. Returns the steps taken.")
       .def_prop_ro("time", [](const PySimulator& s) {
              SimulatorLock lock(s);
              return s.time();

@@ -56,6 +56,23 @@ def test_run_every_and_callback_and_stop():
     assert sim2.run(callback=lambda s: s.steps_taken < 30, every=10) == 30
 
 
+def test_run_counts_every_from_its_own_start():
+    sim = fosssim.Simulator(free_fall(100))
+    sim.step(3)
+    seen = []
+    assert sim.run(25, every=10, callback=lambda s: seen.append(s.steps_taken)) == 25
+    assert seen == [3 + 10, 3 + 20, 3 + 25]  # 10 and 20 steps into the run, then its last step
+
+
+def test_any_false_value_from_the_callback_stops_the_run():
+    for stop in (False, np.False_, 0, 0.0, ""):
+        sim = fosssim.Simulator(free_fall(100))
+        assert sim.run(every=5, callback=lambda s, stop=stop: stop if s.steps_taken >= 15 else True) == 15, stop
+        assert sim.steps_taken == 15
+    # None (a callback that returns nothing) goes on.
+    assert fosssim.Simulator(free_fall(100)).run(every=5, callback=lambda s: None) == 100
+
+
 def test_diagnostics_columns_and_physics():
     sim = fosssim.Simulator(free_fall(20))
     sim.run()
