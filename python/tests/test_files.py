@@ -1,4 +1,5 @@
 """Pictures and trajectory files."""
+import re
 import shutil
 
 import numpy as np
@@ -51,9 +52,29 @@ def test_trajectory_written_then_graded(assets, tmp_path):
     assert not passed and "Overall success: Failed." in report
 
 
-def test_missing_trajectory_is_reported(billiards, tmp_path):
-    passed, report = fosssim.grade_trajectory(billiards, str(tmp_path / "none.bin"))
-    assert not passed
+def test_unreadable_trajectory_raises_file_error(billiards, tmp_path):
+    # No grade of nothing: the command line's error for -i, as the module's FileError.
+    missing = str(tmp_path / "none.bin")
+    with pytest.raises(fosssim.FileError, match="^" + re.escape(missing) + ": cannot open the trajectory file") as info:
+        fosssim.grade_trajectory(billiards, missing)
+    assert isinstance(info.value, OSError)
+    with pytest.raises(fosssim.FileError, match="directory"):
+        fosssim.grade_trajectory(billiards, str(tmp_path))
+
+
+def test_grade_in_the_wrong_mode_says_which_mode_passes(assets, tmp_path):
+    # Continuous-time handling differs with and without compat, and so do its files.
+    scene = fosssim.Scene.load(str(assets / "t2m2" / "ContinuousTimeTests" / "halfplane_cor05.xml"))
+    path = str(tmp_path / "run.bin")
+    fosssim.write_trajectory(scene, path, compat=False)
+    passed, report = fosssim.grade_trajectory(scene, path, compat=True)
+    assert not passed and "this file looks made without --compat" in report
+    fosssim.write_trajectory(scene, path, compat=True)
+    passed, report = fosssim.grade_trajectory(scene, path, compat=False)
+    assert not passed and "this file looks made with --compat" in report
+    # A file that passes needs no hint.
+    passed, report = fosssim.grade_trajectory(scene, path, compat=True)
+    assert passed and "looks made" not in report
 
 
 @pytest.mark.skipif(not fosssim.has_renderer or shutil.which("ffmpeg") is None, reason="needs the renderer and ffmpeg")
