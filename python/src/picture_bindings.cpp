@@ -5,6 +5,7 @@
 #include "py_simulator.h"
 #include "simulator_lock.h"
 
+#include "fosssim/io/scene_writer.h"
 #include "fosssim/render/picture.h"
 #include "fosssim/render/svg_writer.h"
 #ifdef FOSSSIM_HAVE_RENDER
@@ -94,8 +95,9 @@ void bindPictures(nb::module_& m) {
   cls.def("record_movie", [](PySimulator& s, const std::string& path, std::optional<long> steps, long every, double fps,
                              int width, int height) {
 #ifdef FOSSSIM_HAVE_RENDER
-        if (every < 1) throw SimulationError("every must be >= 1");
-        if (!(fps > 0)) throw SimulationError("fps must be > 0");
+        checkArgument(every >= 1, "every must be >= 1, got " + std::to_string(every));
+        checkArgument(fps > 0, "fps must be > 0, got " + formatNumber(fps));
+        if (steps) checkSteps(*steps);  // before the movie's file is made
         checkSize(width, height);
         SimulatorLock lock(s);  // the movie's steps and frames follow one another, no other thread's between
         std::unique_ptr<render::MovieWriter> movie;

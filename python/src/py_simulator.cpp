@@ -9,7 +9,7 @@ namespace fosssim::py {
 
 PySimulator::PySimulator(const PyScene& scene, bool compat, int threads, bool diagnostics, bool sleep)
     : scene_(scene.copy()), compat_(compat), diagnostics_(diagnostics) {
-  if (threads < 1) throw SimulationError("threads must be >= 1, got " + std::to_string(threads));
+  checkArgument(threads >= 1, "threads must be >= 1, got " + std::to_string(threads));
   SimulatorOptions options;
   options.handler.compat = compat;
   options.handler.threads = threads;

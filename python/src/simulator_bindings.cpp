@@ -23,9 +23,9 @@ nb::object view(const PySimulator& s, const VecX& data) {
 /// steps do not interleave with the run's.
 long run(PySimulator& s, std::optional<long> steps, long every, nb::object callback) {
   SimulatorLock lock(s);
-  if (every < 1) throw SimulationError("every must be >= 1, got " + std::to_string(every));
+  checkArgument(every >= 1, "every must be >= 1, got " + std::to_string(every));
+  if (steps) checkSteps(*steps);
   const long total = steps ? *steps : std::max(0L, s.numSteps() - s.stepsTaken());
-  if (total < 0) throw SimulationError("steps must be >= 0, got " + std::to_string(total));
   long done = 0;
   while (done < total) {
     const long chunk = callback.is_none() ? total - done : std::min(every, total - done);
@@ -72,10 +72,11 @@ void bindSimulator(nb::module_& m) {
            "results for any count); diagnostics: record a row of diagnostics per step (and time the phases); "
            "sleep: resting particles sleep in the default mode (False: as FOSSSim --no-sleep).")
       .def("step", [](PySimulator& s, long count) {
+             checkSteps(count, "count");
              SimulatorLock lock(s);
              nb::gil_scoped_release release;
              for (long k = 0; k < count; ++k) s.step();
-           }, nb::arg("count") = 1, "Takes `count` steps; raises SimulationError if a step fails.")
+           }, nb::arg("count") = 1, "Takes `count` steps; raises SimulationError if a step fails (ValueError for a negative count).")
       .def("run", &run, nb::arg("steps") = nb::none(), nb::arg("every") = 1, nb::arg("callback") = nb::none(),
            "Takes `steps` steps (default: the rest of the scene's duration), calling callback(simulator) "
            "after every `every` steps of this run and after its last step; a callback returning a false value "

@@ -34,6 +34,7 @@ std::unique_ptr<Simulator> simulatorFor(const PyScene& scene, const SimulatorOpt
 
 /// Writes the records of a run of `steps` steps (default: the whole scene), as FOSSSim -o does.
 long writeTrajectory(const PyScene& scene, const std::string& path, bool compat, std::optional<long> steps) {
+  if (steps) checkSteps(*steps);  // before the file is made
   auto sim = simulatorFor(scene, optionsFor(compat));
   std::unique_ptr<TrajectoryWriter> writer;
   check<FileError>(TrajectoryWriter::open(path, sim->layout(), writer));

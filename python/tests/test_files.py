@@ -52,6 +52,22 @@ def test_trajectory_written_then_graded(assets, tmp_path):
     assert not passed and "Overall success: Failed." in report
 
 
+def test_negative_step_counts_raise_value_error(billiards, tmp_path):
+    # write_trajectory(steps=-4) returned -4 and record_movie(steps=-3) wrote one frame: now
+    # ValueError, before any file is made.
+    with pytest.raises(ValueError, match="steps must be >= 0, got -4"):
+        fosssim.write_trajectory(billiards, str(tmp_path / "run.bin"), steps=-4)
+    if fosssim.has_renderer:  # without it, any movie raises SimulationError (no raster frames)
+        sim = fosssim.Simulator(billiards)
+        with pytest.raises(ValueError, match="steps must be >= 0, got -3"):
+            sim.record_movie(str(tmp_path / "run.mp4"), steps=-3, width=32, height=32)
+        with pytest.raises(ValueError, match="every must be >= 1, got 0"):
+            sim.record_movie(str(tmp_path / "run.mp4"), steps=3, every=0, width=32, height=32)
+        assert sim.steps_taken == 0
+    assert list(tmp_path.iterdir()) == []
+    assert fosssim.write_trajectory(billiards, str(tmp_path / "run.bin"), steps=0) == 0
+
+
 def test_unreadable_trajectory_raises_file_error(billiards, tmp_path):
     # No grade of nothing: the command line's error for -i, as the module's FileError.
     missing = str(tmp_path / "none.bin")

@@ -73,6 +73,23 @@ def test_any_false_value_from_the_callback_stops_the_run():
     assert fosssim.Simulator(free_fall(100)).run(every=5, callback=lambda s: None) == 100
 
 
+def test_negative_counts_raise_value_error():
+    # step(-5) did nothing and run(-1) raised a SimulationError: an argument out of range is a
+    # ValueError for every call that takes a number of steps, and nothing is stepped.
+    sim = fosssim.Simulator(free_fall())
+    for call, message in ((lambda: sim.step(-5), "count must be >= 0, got -5"),
+                          (lambda: sim.run(-1), "steps must be >= 0, got -1"),
+                          (lambda: sim.run(10, every=0), "every must be >= 1, got 0")):
+        with pytest.raises(ValueError, match=message) as info:
+            call()
+        assert not isinstance(info.value, fosssim.SimulationError)
+    with pytest.raises(ValueError, match="threads must be >= 1, got 0"):
+        fosssim.Simulator(free_fall(), threads=0)
+    assert sim.steps_taken == 0
+    sim.step(0)
+    assert sim.run(0) == 0 and sim.steps_taken == 0
+
+
 def test_diagnostics_columns_and_physics():
     sim = fosssim.Simulator(free_fall(20))
     sim.run()
