@@ -26,8 +26,13 @@ class PySimulator {
  public:
   PySimulator(const PyScene& scene, bool compat, int threads, bool diagnostics, bool sleep = true);
 
-  /// One step; throws SimulationError with the step's message.
+  /// One step; throws SimulationError with the step's message. A failed step leaves the state
+  /// the step started from (positions, velocities, time, steps, diagnostics, trails), and every
+  /// later step throws: the failed step's state is half made and the C++ simulator's own state
+  /// (sleepers, zones, the energy watch) is mid-step, so there is nothing to go on from.
   void step();
+  /// The failed step's message, empty while every step succeeded.
+  const std::string& failure() const { return failure_; }
   long stepsTaken() const { return state_.step; }
   double time() const { return state_.time; }
   /// Steps of a full run of the scene (ceil(duration / dt)).
@@ -67,6 +72,7 @@ class PySimulator {
   std::vector<double> table_, row_;
   StepDiagnostics measured_;
   render::PathTrails trails_;
+  std::string failure_;
   mutable std::recursive_mutex mutex_;
 };
 

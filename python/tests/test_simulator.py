@@ -116,6 +116,37 @@ def test_failed_step_raises_with_the_step():
         sim.run()
 
 
+def test_a_failed_step_leaves_the_last_good_state_and_stops_the_simulator():
+    # Explicit Euler on a spring too stiff for dt: the velocities grow until they are not finite.
+    s = fosssim.Scene()
+    s.set_integrator("explicit-euler", 0.01)
+    s.duration = 1.0
+    a = s.add_particle((0, 0), mass=1)
+    b = s.add_particle((1, 0), mass=1)
+    s.add_spring(s.add_edge(a, b), k=1e4, l0=0.5)
+    sim = fosssim.Simulator(s)
+    good = None
+    with pytest.raises(fosssim.SimulationError, match="non-finite") as info:
+        for _ in range(100):
+            sim.step()
+            good = (sim.steps_taken, sim.time, sim.positions.copy(), sim.velocities.copy())
+    assert good is not None and np.isfinite(good[3]).all()
+    failed_step = good[0] + 1
+    assert str(info.value).startswith(f"step {failed_step} ")
+    # Positions, velocities, time, steps and diagnostics are all the last good step's (the
+    # steps and time used to count the failed step while the views did not show it).
+    steps, time, x, v = good
+    assert (sim.steps_taken, sim.time) == (steps, time)
+    np.testing.assert_array_equal(sim.positions, x)
+    np.testing.assert_array_equal(sim.velocities, v)
+    np.testing.assert_array_equal(sim.diagnostics()["step"], np.arange(steps + 1))
+    # And it goes no further: the next step used to go on from the failed step's hidden state.
+    for call in (sim.step, sim.run):
+        with pytest.raises(fosssim.SimulationError, match=f"cannot go on after its failed step {failed_step} "):
+            call()
+    assert sim.steps_taken == steps
+
+
 def test_compat_is_an_option(assets):
     scene = fosssim.Scene.load(str(assets / "t2m2" / "ContinuousTimeTests" / "head_on_swap.xml"))
     a = fosssim.Simulator(scene, compat=True)
