@@ -2,6 +2,7 @@
 // when FOSSSim was built with its renderer), SVG (always), and movies through ffmpeg.
 #include "arrays.h"
 #include "bindings.h"
+#include "interrupt_check.h"
 #include "py_simulator.h"
 #include "simulator_lock.h"
 
@@ -109,6 +110,9 @@ void bindPictures(nb::module_& m) {
             nb::gil_scoped_release release;
             s.step();
           }
+          // The GIL is back between steps here: Ctrl-C's KeyboardInterrupt now, not at the end
+          // (MovieWriter's destructor ends the movie so far).
+          if (PyErr_CheckSignals() != 0) throw nb::python_error();
           if (k % every == 0) check<FileError>(movie->write(frame(s, width, height)));
         }
         check<FileError>(movie->close());

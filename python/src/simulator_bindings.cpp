@@ -1,6 +1,7 @@
 // fosssim.Simulator: stepping, the state as NumPy arrays, the diagnostics table.
 #include "arrays.h"
 #include "bindings.h"
+#include "interrupt_check.h"
 #include "py_simulator.h"
 #include "simulator_lock.h"
 
@@ -27,13 +28,16 @@ long run(PySimulator& s, std::optional<long> steps, long every, nb::object callb
   if (steps) checkSteps(*steps);
   const long total = steps ? *steps : std::max(0L, s.numSteps() - s.stepsTaken());
   long done = 0;
+  InterruptCheck interrupted;
   while (done < total) {
     const long chunk = callback.is_none() ? total - done : std::min(every, total - done);
     {
       nb::gil_scoped_release release;
-      for (long k = 0; k < chunk; ++k) s.step();
+      for (long k = 0; k < chunk; ++k, ++done) {
+        s.step();
+        interrupted();
+      }
     }
-    done += chunk;
     if (!callback.is_none()) {  // after every `every` steps of this run, and after its last
       nb::object r = callback(nb::find(&s));
       // Python's truth, so that np.False_ or 0 stop too; None, a callback's usual return, goes on.
@@ -74,8 +78,12 @@ void bindSimulator(nb::module_& m) {
       .def("step", [](PySimulator& s, long count) {
              checkSteps(count, "count");
              SimulatorLock lock(s);
+             InterruptCheck interrupted;
              nb::gil_scoped_release release;
-             for (long k = 0; k < count; ++k) s.step();
+             for (long k = 0; k < count; ++k) {
+               s.step();
+               interrupted();
+             }
            }, nb::arg("count") = 1, "Takes `count` steps; raises SimulationError if a step fails (ValueError for a negative count).")
       .def("run", &run, nb::arg("steps") = nb::none(), nb::arg("every") = 1, nb::arg("callback") = nb::none(),
            "Takes `steps` steps (default: the rest of the scene's duration), calling callback(simulator) "

@@ -1,6 +1,7 @@
 // Trajectory files in the course's binary format: write a run's, grade a file against a scene.
 #include "bindings.h"
 #include "errors.h"
+#include "interrupt_check.h"
 #include "py_scene.h"
 
 #include "fosssim/core/simulator.h"
@@ -49,6 +50,7 @@ long writeTrajectory(const PyScene& scene, const std::string& path, bool compat,
   } observer;
   observer.writer = writer.get();
   State state = scene.file.initial;
+  InterruptCheck interrupted;
   nb::gil_scoped_release release;
   check<FileError>(writer->write(state, CollisionLog{}));
   const long total = steps ? *steps : scene.file.scene.numSteps();
@@ -56,6 +58,7 @@ long writeTrajectory(const PyScene& scene, const std::string& path, bool compat,
     check<SimulationError>(sim->step(scene.file.scene, state, sim->layout().midStep ? &observer : nullptr));
     check<FileError>(observer.status);
     check<FileError>(writer->write(state, sim->log()));
+    interrupted();  // the file so far is left as it is, cut short
   }
   check<FileError>(writer->close());
   return total;
