@@ -34,8 +34,12 @@ std::unique_ptr<Simulator> simulatorFor(const PyScene& scene, const SimulatorOpt
 }
 
 /// Writes the records of a run of `steps` steps (default: the whole scene), as FOSSSim -o does.
-long writeTrajectory(const PyScene& scene, const std::string& path, bool compat, std::optional<long> steps) {
+long writeTrajectory(const PyScene& given, const std::string& path, bool compat, std::optional<long> steps) {
   if (steps) checkSteps(*steps);  // before the file is made
+  // The run goes without the GIL, while another Python thread may change the Scene (add a
+  // particle, and its vectors move): it runs a copy, taken here with the GIL.
+  const auto copy = given.copy();
+  const PyScene& scene = *copy;
   auto sim = simulatorFor(scene, optionsFor(compat));
   std::unique_ptr<TrajectoryWriter> writer;
   check<FileError>(TrajectoryWriter::open(path, sim->layout(), writer));
@@ -67,7 +71,9 @@ long writeTrajectory(const PyScene& scene, const std::string& path, bool compat,
 /// Grades `path` against the scene: (passed, the grader's report text). gradeFile, as -i: a
 /// failing file that passes in the other mode gets -i's hint to grade it with (or without)
 /// --compat.
-std::tuple<bool, std::string> gradeTrajectoryFile(const PyScene& scene, const std::string& path, bool compat) {
+std::tuple<bool, std::string> gradeTrajectoryFile(const PyScene& given, const std::string& path, bool compat) {
+  const auto copy = given.copy();  // as in writeTrajectory: graded without the GIL
+  const PyScene& scene = *copy;
   const SimulatorOptions options = optionsFor(compat);
   auto sim = simulatorFor(scene, options);
   std::ostringstream report;

@@ -1,6 +1,8 @@
 """Pictures and trajectory files."""
 import re
 import shutil
+import threading
+import time
 
 import numpy as np
 import pytest
@@ -66,6 +68,25 @@ def test_negative_step_counts_raise_value_error(billiards, tmp_path):
         assert sim.steps_taken == 0
     assert list(tmp_path.iterdir()) == []
     assert fosssim.write_trajectory(billiards, str(tmp_path / "run.bin"), steps=0) == 0
+
+
+def test_trajectory_of_a_scene_another_thread_changes(assets, tmp_path):
+    # write_trajectory runs without the GIL: it read the Scene while this thread added particles
+    # to it (and moved its vectors), and crashed. It runs a copy now: the file is the run of the
+    # scene as it was at one moment, so exactly one of the scene's states grades it as passed.
+    scene = fosssim.Scene.load(str(assets / "t2m2" / "HolisticTests" / "mixed_sizes.xml"))
+    scene.duration = 10 * scene.duration
+    path = str(tmp_path / "run.bin")
+    states = [scene.copy()]
+    writer = threading.Thread(target=fosssim.write_trajectory, args=(scene, path))
+    writer.start()
+    for k in range(20):
+        scene.add_particle((100.0 + k, 100.0))
+        states.append(scene.copy())
+        time.sleep(0.005)
+    writer.join()
+    passed = [fosssim.grade_trajectory(state, path)[0] for state in states]
+    assert passed.count(True) == 1
 
 
 def test_unreadable_trajectory_raises_file_error(billiards, tmp_path):
