@@ -19,8 +19,8 @@ nb::object view(const PySimulator& s, const VecX& data) {
   return toPython(View2(data.data(), 2, shape, nb::find(&s)));
 }
 
-/// Steps until `steps` more are taken or the callback returns a false value; the GIL is released while
-/// C++ steps, taken back for the callback. The lock is held throughout, so another thread's
+/// Steps until `steps` more are taken or the callback returns a false value; the GIL is released
+/// while C++ steps, taken back for the callback. The lock is held throughout, so another thread's
 /// steps do not interleave with the run's.
 long run(PySimulator& s, std::optional<long> steps, long every, nb::object callback) {
   SimulatorLock lock(s);
@@ -84,7 +84,8 @@ void bindSimulator(nb::module_& m) {
                s.step();
                interrupted();
              }
-           }, nb::arg("count") = 1, "Takes `count` steps; raises SimulationError if a step fails (ValueError for a negative count).")
+           }, nb::arg("count") = 1,
+           "Takes `count` steps; raises SimulationError if a step fails (ValueError for a negative count).")
       .def("run", &run, nb::arg("steps") = nb::none(), nb::arg("every") = 1, nb::arg("callback") = nb::none(),
            "Takes `steps` steps (default: the rest of the scene's duration), calling callback(simulator) "
            "after every `every` steps of this run and after its last step; a callback returning a false value "
