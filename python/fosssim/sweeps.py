@@ -24,8 +24,10 @@ failed).
 import argparse
 import itertools
 import math
+import numbers
 import os
 import sys
+from collections.abc import Iterable
 
 import numpy as np
 
@@ -39,9 +41,33 @@ TIMING_COLUMNS = ("wall_per_sim_second",)
 PARAMETERS = ("cor", "maxiters", "k", "thickness", "integrator", "failsafe", "duration")
 
 
+def _value(name, value):
+    """A parameter's value as the scene's setters take it. A value of the wrong type is the case's
+    error (SceneError, its row's `error`), not a TypeError from a setter that ends the sweep."""
+    import fosssim
+
+    if name in ("integrator", "failsafe"):
+        if isinstance(value, str):
+            return value
+        kind = "a name"
+    elif isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_)):
+        if name != "maxiters":
+            return float(value)
+        if float(value).is_integer():  # 20.0 is 20 (a CSV's integers may come back as floats)
+            return int(value)
+        kind = "an integer"
+    else:
+        kind = "an integer" if name == "maxiters" else "a number"
+    raise fosssim.SceneError(f"sweep: parameter {name}: expected {kind}, got {value!r}")
+
+
 def _apply(scene, method, dt, params):
     import fosssim
 
+    unknown = set(params) - set(PARAMETERS)
+    if unknown:
+        raise fosssim.SceneError(f"sweep: unknown parameter(s) {sorted(unknown)} (valid: {', '.join(PARAMETERS)})")
+    params = {name: _value(name, value) for name, value in params.items()}
     c = scene.collision
     settings = dict(cor=c["cor"], maxiters=c["maxiters"], failsafe=c["failsafe"])
     # k and thickness: the scene's own when it has the same kind of penalty force, else the method's defaults.
@@ -54,9 +80,6 @@ def _apply(scene, method, dt, params):
     scene.set_integrator(params.get("integrator", scene.integrator), dt)
     if "duration" in params:
         scene.duration = params["duration"]
-    unknown = set(params) - set(PARAMETERS)
-    if unknown:
-        raise fosssim.SceneError(f"sweep: unknown parameter(s) {sorted(unknown)} (valid: {', '.join(PARAMETERS)})")
     return scene
 
 
@@ -158,24 +181,40 @@ def _cases(scenes, methods, dts, params, compat):
     return cases
 
 
+def _listed(values):
+    """values as a list; a single value (a str, which would otherwise be split into its
+    characters, or a number) is a list of one."""
+    if isinstance(values, (str, bytes, os.PathLike)) or not isinstance(values, Iterable):
+        return [values]
+    return list(values)
+
+
 def sweep(scenes, methods=METHODS, dts=None, params=None, compat=False, scheduler=None, workers=None,
           serial=False, client=None):
     """Runs every scene x method x dt x parameter combination; returns a pandas DataFrame.
 
     scenes: paths or fosssim.Scene objects. dts: time steps (default: each scene's own).
-    params: {name: [values]} for name in PARAMETERS. serial: run here, one after the other.
+    params: {name: [values]} for name in PARAMETERS. A single scene, method, dt or parameter value
+    needs no list ("hybrid" is one method, not six). serial: run here, one after the other.
     Otherwise on Dask: `client` if given, else the scheduler at `scheduler` ("tcp://host:8786"),
-    else a LocalCluster of `workers` processes (default: every core), closed afterwards.
+    else a LocalCluster of `workers` processes (a positive integer; default: every core), closed
+    afterwards.
     """
     import pandas as pd
 
-    scenes = [scenes] if isinstance(scenes, (str, os.PathLike)) else list(scenes)
-    params = dict(params or {})
+    if workers is not None and (isinstance(workers, bool) or not isinstance(workers, numbers.Integral) or workers < 1):
+        # LocalCluster(n_workers=-1) waits forever for workers it never starts.
+        raise ValueError(f"sweep: workers must be a positive integer (None: one per core), got {workers!r}")
+    scenes = _listed(scenes)
+    methods = _listed(methods)
+    if dts is not None:
+        dts = _listed(dts)
+    params = {name: _listed(values) for name, values in (params or {}).items()}
     if dts is None:
         import fosssim
 
         dts = sorted({(s if isinstance(s, fosssim.Scene) else fosssim.Scene.load(str(s))).dt for s in scenes})
-    cases = _cases(scenes, list(methods), list(dts), params, compat)
+    cases = _cases(scenes, methods, dts, params, compat)
     if serial:
         rows = [run_case(c) for c in cases]
     else:
@@ -232,12 +271,24 @@ def chart(table, path, metrics=("energy_drift", "max_interpenetration", "wall_pe
     plt.close(fig)
 
 
+def _positive(text):
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}")
+    return value
+
+
 def _parse_params(items):
     params = {}
     for item in items or []:
         name, _, values = item.partition("=")
         if not values:
             raise SystemExit(f"fosssim-sweep: --param {item}: expected NAME=V1,V2,...")
+        if name not in PARAMETERS:
+            raise SystemExit(f"fosssim-sweep: --param {name}: unknown parameter (valid: {', '.join(PARAMETERS)})")
         parsed = []
         for v in values.split(","):
             try:
@@ -249,7 +300,11 @@ def _parse_params(items):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(prog="fosssim-sweep", description=__doc__.split("\n\n")[0])
+    parser = argparse.ArgumentParser(
+        prog="fosssim-sweep", description=__doc__.split("\n\n")[0],
+        epilog="Exit status: 0 when at least one run was measured (the failed ones are the table's error column, "
+               "and are printed), 1 when every run failed, the scenes do not load or a --param is wrong, 2 a bad "
+               "command line.")
     parser.add_argument("scenes", nargs="+", help="scene files")
     parser.add_argument("--methods", default=",".join(METHODS), help="collision methods, comma separated")
     parser.add_argument("--dt", default=None, help="time steps, comma separated (default: each scene's)")
@@ -257,7 +312,7 @@ def main(argv=None):
                         help="a parameter to vary: " + ", ".join(PARAMETERS))
     parser.add_argument("--compat", action="store_true", help="the course's formulas (FOSSSim --compat)")
     parser.add_argument("--scheduler", metavar="ADDRESS", help="an existing Dask scheduler (tcp://host:8786)")
-    parser.add_argument("--workers", type=int, help="local worker processes (default: every core)")
+    parser.add_argument("--workers", type=_positive, help="local worker processes (default: every core)")
     parser.add_argument("--serial", action="store_true", help="no Dask: run the tasks here, one by one")
     parser.add_argument("--csv", default="sweep.csv", help="the table (default sweep.csv)")
     parser.add_argument("--chart", default=None, help="a PNG chart of the table")
@@ -285,6 +340,11 @@ def main(argv=None):
     failed = table[table["error"] != ""]
     for _, row in failed.iterrows():
         print(f"fosssim-sweep: {row['scene']} {row['method']} dt={row['dt']}: {row['error']}", file=sys.stderr)
+    # Some runs failing is a result (an integrator that blows up at large dt); all of them failing
+    # is a sweep that measured nothing, which a script must not take for success.
+    if len(failed) == len(table):
+        print(f"fosssim-sweep: error: no run was measured ({len(failed)} failed)", file=sys.stderr)
+        return 1
     return 0
 
 

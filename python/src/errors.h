@@ -5,6 +5,7 @@
 #include "fosssim/core/status.h"
 
 #include <stdexcept>
+#include <string>
 
 namespace fosssim::py {
 
@@ -24,6 +25,17 @@ struct FileError : std::runtime_error {
 template <class Error>
 void check(const Status& status) {
   if (!status) throw Error(status.message());
+}
+
+/// An argument out of its range (a negative number of steps, every < 1) raises ValueError, which
+/// nanobind makes of std::invalid_argument: nothing was simulated, so it is no SimulationError.
+inline void checkArgument(bool ok, const std::string& message) {
+  if (!ok) throw std::invalid_argument(message);
+}
+
+/// A number of steps to take: 0 or more.
+inline void checkSteps(long steps, const char* name = "steps") {
+  checkArgument(steps >= 0, std::string(name) + " must be >= 0, got " + std::to_string(steps));
 }
 
 }  // namespace fosssim::py

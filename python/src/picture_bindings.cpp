@@ -2,8 +2,11 @@
 // when FOSSSim was built with its renderer), SVG (always), and movies through ffmpeg.
 #include "arrays.h"
 #include "bindings.h"
+#include "interrupt_check.h"
 #include "py_simulator.h"
+#include "simulator_lock.h"
 
+#include "fosssim/io/scene_writer.h"
 #include "fosssim/render/picture.h"
 #include "fosssim/render/svg_writer.h"
 #ifdef FOSSSIM_HAVE_RENDER
@@ -30,6 +33,7 @@ void checkSize(int width, int height) {
 /// initial state's particles, so that successive frames share one camera.
 render::Picture picture(const PySimulator& s, int width, int height) {
   checkSize(width, height);
+  SimulatorLock lock(s);  // the state and trails, which another thread's step may change
   render::View view;
   view.width = width;
   view.height = height;
@@ -92,9 +96,11 @@ void bindPictures(nb::module_& m) {
   cls.def("record_movie", [](PySimulator& s, const std::string& path, std::optional<long> steps, long every, double fps,
                              int width, int height) {
 #ifdef FOSSSIM_HAVE_RENDER
-        if (every < 1) throw SimulationError("every must be >= 1");
-        if (!(fps > 0)) throw SimulationError("fps must be > 0");
+        checkArgument(every >= 1, "every must be >= 1, got " + std::to_string(every));
+        checkArgument(fps > 0, "fps must be > 0, got " + formatNumber(fps));
+        if (steps) checkSteps(*steps);  // before the movie's file is made
         checkSize(width, height);
+        SimulatorLock lock(s);  // the movie's steps and frames follow one another, no other thread's between
         std::unique_ptr<render::MovieWriter> movie;
         check<FileError>(render::MovieWriter::open(path, width, height, fps, movie));
         check<FileError>(movie->write(frame(s, width, height)));
@@ -104,6 +110,9 @@ void bindPictures(nb::module_& m) {
             nb::gil_scoped_release release;
             s.step();
           }
+          // The GIL is back between steps here: Ctrl-C's KeyboardInterrupt now, not at the end
+          // (MovieWriter's destructor ends the movie so far).
+          if (PyErr_CheckSignals() != 0) throw nb::python_error();
           if (k % every == 0) check<FileError>(movie->write(frame(s, width, height)));
         }
         check<FileError>(movie->close());

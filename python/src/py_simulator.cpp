@@ -9,7 +9,7 @@ namespace fosssim::py {
 
 PySimulator::PySimulator(const PyScene& scene, bool compat, int threads, bool diagnostics, bool sleep)
     : scene_(scene.copy()), compat_(compat), diagnostics_(diagnostics) {
-  if (threads < 1) throw SimulationError("threads must be >= 1, got " + std::to_string(threads));
+  checkArgument(threads >= 1, "threads must be >= 1, got " + std::to_string(threads));
   SimulatorOptions options;
   options.handler.compat = compat;
   options.handler.threads = threads;
@@ -30,7 +30,21 @@ PySimulator::PySimulator(const PyScene& scene, bool compat, int threads, bool di
 }
 
 void PySimulator::step() {
-  check<SimulationError>(simulator_->step(scene_->file.scene, state_));
+  if (!failure_.empty())
+    throw SimulationError("this simulator cannot go on after its failed " + failure_ +
+                          "; make a new Simulator (its positions and velocities are the last good state's)");
+  const double time = state_.time;
+  const long steps = state_.step;
+  if (const Status s = simulator_->step(scene_->file.scene, state_); !s) {
+    // Back to the step's start, which x_ and v_ still hold, so that everything Python sees is one
+    // state; the command line stops at a failure too.
+    state_.x = x_;
+    state_.v = v_;
+    state_.time = time;
+    state_.step = steps;
+    failure_ = s.message();
+    throw SimulationError(s.message());
+  }
   // Copies into the pinned buffers (sizes never change, so no reallocation): 2 x 16 N bytes,
   // nothing next to a step's cost.
   x_ = state_.x;

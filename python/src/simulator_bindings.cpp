@@ -1,7 +1,9 @@
 // fosssim.Simulator: stepping, the state as NumPy arrays, the diagnostics table.
 #include "arrays.h"
 #include "bindings.h"
+#include "interrupt_check.h"
 #include "py_simulator.h"
+#include "simulator_lock.h"
 
 #include <nanobind/stl/optional.h>
 #include <nanobind/stl/shared_ptr.h>
@@ -17,29 +19,38 @@ nb::object view(const PySimulator& s, const VecX& data) {
   return toPython(View2(data.data(), 2, shape, nb::find(&s)));
 }
 
-/// Steps until `steps` more are taken or the callback returns False; the GIL is released while
-/// C++ steps, taken back for the callback.
+/// Steps until `steps` more are taken or the callback returns a false value; the GIL is released
+/// while C++ steps, taken back for the callback. The lock is held throughout, so another thread's
+/// steps do not interleave with the run's.
 long run(PySimulator& s, std::optional<long> steps, long every, nb::object callback) {
-  if (every < 1) throw SimulationError("every must be >= 1, got " + std::to_string(every));
+  SimulatorLock lock(s);
+  checkArgument(every >= 1, "every must be >= 1, got " + std::to_string(every));
+  if (steps) checkSteps(*steps);
   const long total = steps ? *steps : std::max(0L, s.numSteps() - s.stepsTaken());
-  if (total < 0) throw SimulationError("steps must be >= 0, got " + std::to_string(total));
   long done = 0;
+  InterruptCheck interrupted;
   while (done < total) {
     const long chunk = callback.is_none() ? total - done : std::min(every, total - done);
     {
       nb::gil_scoped_release release;
-      for (long k = 0; k < chunk; ++k) s.step();
+      for (long k = 0; k < chunk; ++k, ++done) {
+        s.step();
+        interrupted();
+      }
     }
-    done += chunk;
-    if (!callback.is_none() && (s.stepsTaken() % every == 0 || done == total)) {
+    if (!callback.is_none()) {  // after every `every` steps of this run, and after its last
       nb::object r = callback(nb::find(&s));
-      if (r.is(nb::bool_(false))) break;
+      // Python's truth, so that np.False_ or 0 stop too; None, a callback's usual return, goes on.
+      const int go = r.is_none() ? 1 : PyObject_IsTrue(r.ptr());
+      if (go < 0) throw nb::python_error();
+      if (go == 0) break;
     }
   }
   return done;
 }
 
 nb::dict diagnostics(const PySimulator& s) {
+  SimulatorLock lock(s);  // another thread's step may grow the table
   if (!s.recordsDiagnostics()) throw SimulationError("this simulator records no diagnostics (diagnostics=False)");
   const auto& columns = s.columns();
   const auto& table = s.table();
@@ -65,24 +76,40 @@ void bindSimulator(nb::module_& m) {
            "results for any count); diagnostics: record a row of diagnostics per step (and time the phases); "
            "sleep: resting particles sleep in the default mode (False: as FOSSSim --no-sleep).")
       .def("step", [](PySimulator& s, long count) {
+             checkSteps(count, "count");
+             SimulatorLock lock(s);
+             InterruptCheck interrupted;
              nb::gil_scoped_release release;
-             for (long k = 0; k < count; ++k) s.step();
-           }, nb::arg("count") = 1, "Takes `count` steps; raises SimulationError if a step fails.")
+             for (long k = 0; k < count; ++k) {
+               s.step();
+               interrupted();
+             }
+           }, nb::arg("count") = 1,
+           "Takes `count` steps; raises SimulationError if a step fails (ValueError for a negative count).")
       .def("run", &run, nb::arg("steps") = nb::none(), nb::arg("every") = 1, nb::arg("callback") = nb::none(),
            "Takes `steps` steps (default: the rest of the scene's duration), calling callback(simulator) "
-           "every `every` steps; a callback returning False stops the run. Returns the steps taken.")
-      .def_prop_ro("time", &PySimulator::time)
-      .def_prop_ro("steps_taken", &PySimulator::stepsTaken)
+           "after every `every` steps of this run and after its last step; a callback returning a false value "
+           "(False, 0, np.False_; not None) stops the run. Returns the steps taken.")
+      .def_prop_ro("time", [](const PySimulator& s) {
+             SimulatorLock lock(s);
+             return s.time();
+           })
+      .def_prop_ro("steps_taken", [](const PySimulator& s) {
+             SimulatorLock lock(s);
+             return s.stepsTaken();
+           })
       .def_prop_ro("num_steps", &PySimulator::numSteps, "Steps of the scene's full duration.")
       .def_prop_ro("num_particles", &PySimulator::numParticles)
       .def_prop_ro("compat", &PySimulator::compat)
       .def_prop_ro("scene", [](const PySimulator& s) { return s.scene().copy(); }, "A copy of the simulated scene.")
       .def_prop_rw("positions", [](const PySimulator& s) { return view(s, s.positions()); },
                    [](PySimulator& s, const Input& a) {
+                     SimulatorLock lock(s);
                      s.setPositions(pairsOf(a, s.numParticles(), "positions"), 2L * s.numParticles());
                    })
       .def_prop_rw("velocities", [](const PySimulator& s) { return view(s, s.velocities()); },
                    [](PySimulator& s, const Input& a) {
+                     SimulatorLock lock(s);
                      s.setVelocities(pairsOf(a, s.numParticles(), "velocities"), 2L * s.numParticles());
                    })
       .def_prop_ro("masses", [](const PySimulator& s) {
@@ -99,6 +126,7 @@ void bindSimulator(nb::module_& m) {
              return pandas.attr("DataFrame")(diagnostics(s));
            }, "The diagnostics as a pandas DataFrame.")
       .def("__repr__", [](const PySimulator& s) {
+        SimulatorLock lock(s);
         return "<fosssim.Simulator step " + std::to_string(s.stepsTaken()) + " of " + std::to_string(s.numSteps()) +
                ", t = " + std::to_string(s.time()) + (s.compat() ? ", compat" : "") + ">";
       });

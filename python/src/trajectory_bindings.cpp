@@ -1,6 +1,7 @@
 // Trajectory files in the course's binary format: write a run's, grade a file against a scene.
 #include "bindings.h"
 #include "errors.h"
+#include "interrupt_check.h"
 #include "py_scene.h"
 
 #include "fosssim/core/simulator.h"
@@ -19,18 +20,27 @@ namespace nb = nanobind;
 
 namespace {
 
-std::unique_ptr<Simulator> simulatorFor(const PyScene& scene, bool compat) {
+SimulatorOptions optionsFor(bool compat) {
   SimulatorOptions options;
   options.handler.compat = compat;
   options.logPolynomials = true;  // the records hold every pair's polynomials (reference layout)
+  return options;
+}
+
+std::unique_ptr<Simulator> simulatorFor(const PyScene& scene, const SimulatorOptions& options) {
   std::unique_ptr<Simulator> sim;
   check<SimulationError>(Simulator::create(scene.file.scene, options, sim));
   return sim;
 }
 
 /// Writes the records of a run of `steps` steps (default: the whole scene), as FOSSSim -o does.
-long writeTrajectory(const PyScene& scene, const std::string& path, bool compat, std::optional<long> steps) {
-  auto sim = simulatorFor(scene, compat);
+long writeTrajectory(const PyScene& given, const std::string& path, bool compat, std::optional<long> steps) {
+  if (steps) checkSteps(*steps);  // before the file is made
+  // The run goes without the GIL, while another Python thread may change the Scene (add a
+  // particle, and its vectors move): it runs a copy, taken here with the GIL.
+  const auto copy = given.copy();
+  const PyScene& scene = *copy;
+  auto sim = simulatorFor(scene, optionsFor(compat));
   std::unique_ptr<TrajectoryWriter> writer;
   check<FileError>(TrajectoryWriter::open(path, sim->layout(), writer));
   // A mid-step record (continuous-time, hybrid) comes from inside collision handling.
@@ -44,6 +54,7 @@ long writeTrajectory(const PyScene& scene, const std::string& path, bool compat,
   } observer;
   observer.writer = writer.get();
   State state = scene.file.initial;
+  InterruptCheck interrupted;
   nb::gil_scoped_release release;
   check<FileError>(writer->write(state, CollisionLog{}));
   const long total = steps ? *steps : scene.file.scene.numSteps();
@@ -51,20 +62,28 @@ long writeTrajectory(const PyScene& scene, const std::string& path, bool compat,
     check<SimulationError>(sim->step(scene.file.scene, state, sim->layout().midStep ? &observer : nullptr));
     check<FileError>(observer.status);
     check<FileError>(writer->write(state, sim->log()));
+    interrupted();  // the file so far is left as it is, cut short
   }
   check<FileError>(writer->close());
   return total;
 }
 
-/// Grades `path` against the scene: (passed, the grader's report text).
-std::tuple<bool, std::string> gradeTrajectoryFile(const PyScene& scene, const std::string& path, bool compat) {
-  auto sim = simulatorFor(scene, compat);
+/// Grades `path` against the scene: (passed, the grader's report text). gradeFile, as -i: a
+/// failing file that passes in the other mode gets -i's hint to grade it with (or without)
+/// --compat.
+std::tuple<bool, std::string> gradeTrajectoryFile(const PyScene& given, const std::string& path, bool compat) {
+  const auto copy = given.copy();  // as in writeTrajectory: graded without the GIL
+  const PyScene& scene = *copy;
+  const SimulatorOptions options = optionsFor(compat);
+  auto sim = simulatorFor(scene, options);
   std::ostringstream report;
   GradeReport result;
   {
     nb::gil_scoped_release release;
-    result = gradeTrajectory(scene.file.scene, scene.file.initial, *sim, path, report);
+    result = gradeFile(scene.file.scene, scene.file.initial, *sim, options, path, report);
   }
+  // Nothing was read, so there is no grade (and no report text): -i's error, as an exception.
+  if (result.unreadable) throw FileError(result.structuralError);
   return {result.passed(GradeTolerances{}), report.str()};
 }
 
@@ -76,7 +95,8 @@ void bindTrajectories(nb::module_& m) {
         "Runs the scene from its initial state and writes the trajectory file FOSSSim -o writes "
         "(compat: as --compat). Returns the steps written.");
   m.def("grade_trajectory", &gradeTrajectoryFile, nb::arg("scene"), nb::arg("path"), nb::arg("compat") = false,
-        "Grades a trajectory file against the scene as FOSSSim -i does: (passed, report text).");
+        "Grades a trajectory file against the scene as FOSSSim -i does: (passed, report text), the report "
+        "saying when the file passes in the other mode (compat). A file that cannot be read raises FileError.");
 }
 
 }  // namespace fosssim::py

@@ -1,5 +1,8 @@
 """Pictures and trajectory files."""
+import re
 import shutil
+import threading
+import time
 
 import numpy as np
 import pytest
@@ -51,9 +54,64 @@ def test_trajectory_written_then_graded(assets, tmp_path):
     assert not passed and "Overall success: Failed." in report
 
 
-def test_missing_trajectory_is_reported(billiards, tmp_path):
-    passed, report = fosssim.grade_trajectory(billiards, str(tmp_path / "none.bin"))
-    assert not passed
+def test_negative_step_counts_raise_value_error(billiards, tmp_path):
+    # write_trajectory(steps=-4) returned -4 and record_movie(steps=-3) wrote one frame: now
+    # ValueError, before any file is made.
+    with pytest.raises(ValueError, match="steps must be >= 0, got -4"):
+        fosssim.write_trajectory(billiards, str(tmp_path / "run.bin"), steps=-4)
+    if fosssim.has_renderer:  # without it, any movie raises SimulationError (no raster frames)
+        sim = fosssim.Simulator(billiards)
+        with pytest.raises(ValueError, match="steps must be >= 0, got -3"):
+            sim.record_movie(str(tmp_path / "run.mp4"), steps=-3, width=32, height=32)
+        with pytest.raises(ValueError, match="every must be >= 1, got 0"):
+            sim.record_movie(str(tmp_path / "run.mp4"), steps=3, every=0, width=32, height=32)
+        assert sim.steps_taken == 0
+    assert list(tmp_path.iterdir()) == []
+    assert fosssim.write_trajectory(billiards, str(tmp_path / "run.bin"), steps=0) == 0
+
+
+def test_trajectory_of_a_scene_another_thread_changes(assets, tmp_path):
+    # write_trajectory runs without the GIL: it read the Scene while this thread added particles
+    # to it (and moved its vectors), and crashed. It runs a copy now: the file is the run of the
+    # scene as it was at one moment, so exactly one of the scene's states grades it as passed.
+    scene = fosssim.Scene.load(str(assets / "t2m2" / "HolisticTests" / "mixed_sizes.xml"))
+    scene.duration = 10 * scene.duration
+    path = str(tmp_path / "run.bin")
+    states = [scene.copy()]
+    writer = threading.Thread(target=fosssim.write_trajectory, args=(scene, path))
+    writer.start()
+    for k in range(20):
+        scene.add_particle((100.0 + k, 100.0))
+        states.append(scene.copy())
+        time.sleep(0.005)
+    writer.join()
+    passed = [fosssim.grade_trajectory(state, path)[0] for state in states]
+    assert passed.count(True) == 1
+
+
+def test_unreadable_trajectory_raises_file_error(billiards, tmp_path):
+    # No grade of nothing: the command line's error for -i, as the module's FileError.
+    missing = str(tmp_path / "none.bin")
+    with pytest.raises(fosssim.FileError, match="^" + re.escape(missing) + ": cannot open the trajectory file") as info:
+        fosssim.grade_trajectory(billiards, missing)
+    assert isinstance(info.value, OSError)
+    with pytest.raises(fosssim.FileError, match="directory"):
+        fosssim.grade_trajectory(billiards, str(tmp_path))
+
+
+def test_grade_in_the_wrong_mode_says_which_mode_passes(assets, tmp_path):
+    # Continuous-time handling differs with and without compat, and so do its files.
+    scene = fosssim.Scene.load(str(assets / "t2m2" / "ContinuousTimeTests" / "halfplane_cor05.xml"))
+    path = str(tmp_path / "run.bin")
+    fosssim.write_trajectory(scene, path, compat=False)
+    passed, report = fosssim.grade_trajectory(scene, path, compat=True)
+    assert not passed and "this file looks made without --compat" in report
+    fosssim.write_trajectory(scene, path, compat=True)
+    passed, report = fosssim.grade_trajectory(scene, path, compat=False)
+    assert not passed and "this file looks made with --compat" in report
+    # A file that passes needs no hint.
+    passed, report = fosssim.grade_trajectory(scene, path, compat=True)
+    assert passed and "looks made" not in report
 
 
 @pytest.mark.skipif(not fosssim.has_renderer or shutil.which("ffmpeg") is None, reason="needs the renderer and ffmpeg")

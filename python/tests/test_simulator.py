@@ -1,4 +1,7 @@
 """Simulators: stepping, NumPy views and setters, diagnostics, compat."""
+import _thread
+import threading
+
 import numpy as np
 import pytest
 
@@ -54,6 +57,57 @@ def test_run_every_and_callback_and_stop():
     assert sim2.run(callback=lambda s: s.steps_taken < 30, every=10) == 30
 
 
+def test_run_counts_every_from_its_own_start():
+    sim = fosssim.Simulator(free_fall(100))
+    sim.step(3)
+    seen = []
+    assert sim.run(25, every=10, callback=lambda s: seen.append(s.steps_taken)) == 25
+    assert seen == [3 + 10, 3 + 20, 3 + 25]  # 10 and 20 steps into the run, then its last step
+
+
+def test_any_false_value_from_the_callback_stops_the_run():
+    for stop in (False, np.False_, 0, 0.0, ""):
+        sim = fosssim.Simulator(free_fall(100))
+        assert sim.run(every=5, callback=lambda s, stop=stop: stop if s.steps_taken >= 15 else True) == 15, stop
+        assert sim.steps_taken == 15
+    # None (a callback that returns nothing) goes on.
+    assert fosssim.Simulator(free_fall(100)).run(every=5, callback=lambda s: None) == 100
+
+
+def test_negative_counts_raise_value_error():
+    # step(-5) did nothing and run(-1) raised a SimulationError: an argument out of range is a
+    # ValueError for every call that takes a number of steps, and nothing is stepped.
+    sim = fosssim.Simulator(free_fall())
+    for call, message in ((lambda: sim.step(-5), "count must be >= 0, got -5"),
+                          (lambda: sim.run(-1), "steps must be >= 0, got -1"),
+                          (lambda: sim.run(10, every=0), "every must be >= 1, got 0")):
+        with pytest.raises(ValueError, match=message) as info:
+            call()
+        assert not isinstance(info.value, fosssim.SimulationError)
+    with pytest.raises(ValueError, match="threads must be >= 1, got 0"):
+        fosssim.Simulator(free_fall(), threads=0)
+    assert sim.steps_taken == 0
+    sim.step(0)
+    assert sim.run(0) == 0 and sim.steps_taken == 0
+
+
+def test_ctrl_c_interrupts_a_long_step_or_run():
+    # Python's SIGINT handler only notes the signal: with nothing checking for it between steps,
+    # the KeyboardInterrupt came after the whole call (here about ten seconds of steps).
+    total = 50_000_000
+    for call in (lambda sim: sim.step(total), lambda sim: sim.run(total)):
+        sim = fosssim.Simulator(free_fall(100, 1e-6), diagnostics=False)
+        ctrl_c = threading.Timer(0.2, _thread.interrupt_main)  # as Ctrl-C does to the main thread
+        ctrl_c.start()
+        try:
+            with pytest.raises(KeyboardInterrupt):
+                call(sim)
+        finally:
+            ctrl_c.cancel()
+        assert 0 < sim.steps_taken < total
+        sim.step()  # the steps before the interrupt stand, and stepping goes on
+
+
 def test_diagnostics_columns_and_physics():
     sim = fosssim.Simulator(free_fall(20))
     sim.run()
@@ -78,6 +132,37 @@ def test_failed_step_raises_with_the_step():
     sim = fosssim.Simulator(s)
     with pytest.raises(fosssim.SimulationError, match="step"):
         sim.run()
+
+
+def test_a_failed_step_leaves_the_last_good_state_and_stops_the_simulator():
+    # Explicit Euler on a spring too stiff for dt: the velocities grow until they are not finite.
+    s = fosssim.Scene()
+    s.set_integrator("explicit-euler", 0.01)
+    s.duration = 1.0
+    a = s.add_particle((0, 0), mass=1)
+    b = s.add_particle((1, 0), mass=1)
+    s.add_spring(s.add_edge(a, b), k=1e4, l0=0.5)
+    sim = fosssim.Simulator(s)
+    good = None
+    with pytest.raises(fosssim.SimulationError, match="non-finite") as info:
+        for _ in range(100):
+            sim.step()
+            good = (sim.steps_taken, sim.time, sim.positions.copy(), sim.velocities.copy())
+    assert good is not None and np.isfinite(good[3]).all()
+    failed_step = good[0] + 1
+    assert str(info.value).startswith(f"step {failed_step} ")
+    # Positions, velocities, time, steps and diagnostics are all the last good step's (the
+    # steps and time used to count the failed step while the views did not show it).
+    steps, time, x, v = good
+    assert (sim.steps_taken, sim.time) == (steps, time)
+    np.testing.assert_array_equal(sim.positions, x)
+    np.testing.assert_array_equal(sim.velocities, v)
+    np.testing.assert_array_equal(sim.diagnostics()["step"], np.arange(steps + 1))
+    # And it goes no further: the next step used to go on from the failed step's hidden state.
+    for call in (sim.step, sim.run):
+        with pytest.raises(fosssim.SimulationError, match=f"cannot go on after its failed step {failed_step} "):
+            call()
+    assert sim.steps_taken == steps
 
 
 def test_compat_is_an_option(assets):
@@ -120,3 +205,45 @@ def test_a_resting_disk_sleeps_and_assigning_its_velocity_wakes_it():
         sim.step()
         # Frictionless floor, no horizontal force: one step of 0.01 s at 1 m/s.
         assert sim.positions[0, 0] == pytest.approx(rest[0, 0] + 0.01, abs=1e-12)
+
+
+
+def test_threads_stepping_one_simulator_take_turns(assets):
+    # step() releases the GIL: without the simulator's own lock two threads stepped one state at
+    # once and the interpreter crashed (in about half of these ten rounds). With it every step is
+    # whole: the state is the one a single thread reaches in as many steps, and the diagnostics
+    # have a row per step.
+    scene = fosssim.Scene.load(str(assets / "t2m2" / "HolisticTests" / "mixed_sizes.xml"))
+    alone = fosssim.Simulator(scene)
+    alone.step(400)
+    for _ in range(10):
+        sim = fosssim.Simulator(scene)
+        errors = []
+
+        def stepper():
+            try:
+                for _ in range(200):
+                    sim.step()
+            except Exception as e:  # noqa: BLE001 (reported in the test's thread)
+                errors.append(e)
+
+        def reader():
+            try:
+                while any(t.is_alive() for t in steppers):
+                    d = sim.diagnostics()
+                    assert len(d["step"]) == d["step"][-1] + 1
+                    sim.svg(32, 32)
+            except Exception as e:  # noqa: BLE001
+                errors.append(e)
+
+        steppers = [threading.Thread(target=stepper) for _ in range(2)]
+        threads = steppers + [threading.Thread(target=reader)]
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+        assert errors == []
+        assert sim.steps_taken == 400
+        np.testing.assert_array_equal(sim.diagnostics()["step"], np.arange(401))
+        np.testing.assert_array_equal(sim.positions, alone.positions)
+        np.testing.assert_array_equal(sim.velocities, alone.velocities)

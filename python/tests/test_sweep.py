@@ -40,6 +40,36 @@ def test_bad_parameter_is_a_row_error(assets):
     assert "cor must lie in [0, 1]" in table["error"][0]
 
 
+def test_values_of_the_wrong_type_are_row_errors(assets):
+    # A setter's TypeError used to end the whole sweep; now only the cases with the bad value fail.
+    table = fosssim.sweep([str(assets / SCENE)], methods=["hybrid"], dts=[0.01],
+                          params={"maxiters": [1.5, 20], "cor": ["abc", 0.5]}, serial=True)
+    assert len(table) == 4
+    errors = {(row.maxiters, row.cor): row.error for row in table.itertuples()}
+    assert errors[(20, 0.5)] == ""
+    assert errors[(1.5, 0.5)] == "sweep: parameter maxiters: expected an integer, got 1.5"
+    assert errors[(20, "abc")] == "sweep: parameter cor: expected a number, got 'abc'"
+    assert errors[(1.5, "abc")].startswith("sweep: parameter ")
+    assert (table.loc[table["error"] != "", "steps"] == 0).all()
+    assert table.loc[table["error"] == "", "steps"].item() == math.ceil(0.25 / 0.01)
+
+
+def test_a_single_string_is_one_value(assets):
+    # "hybrid" is one method, not six one-letter ones; so is a single parameter value or dt.
+    table = fosssim.sweep(str(assets / SCENE), methods="hybrid", dts=0.01, params={"failsafe": "rigid", "cor": 0.5},
+                          serial=True)
+    assert len(table) == 1
+    row = table.iloc[0]
+    assert (row["method"], row["dt"], row["failsafe"], row["cor"], row["error"]) == ("hybrid", 0.01, "rigid", 0.5, "")
+
+
+def test_workers_must_be_positive(assets):
+    # workers=-1 made a LocalCluster that waited forever for workers it never started.
+    for workers in (-1, 0, 1.5, True):
+        with pytest.raises(ValueError, match="workers must be a positive integer"):
+            fosssim.sweep(str(assets / SCENE), methods="none", dts=0.01, workers=workers)
+
+
 def test_local_cluster_gives_the_serial_table(assets):
     pytest.importorskip("dask.distributed")
     scenes = [str(assets / SCENE), str(assets / "t2m2/GeometricTests/stack.xml")]
@@ -61,3 +91,24 @@ def test_command_line(assets, tmp_path):
     assert png.read_bytes()[:4] == b"\x89PNG"
     with pytest.raises(SystemExit):
         sweeps.main([str(assets / SCENE), "--methods", "bogus"])
+
+
+def test_command_line_fails_when_no_run_was_measured(assets, tmp_path, capsys):
+    csv = tmp_path / "s.csv"
+    # Every run fails (cor out of range): the table is written, the exit status says so.
+    code = sweeps.main([str(assets / SCENE), "--methods", "simple,hybrid", "--param", "cor=2", "--serial",
+                        "--csv", str(csv)])
+    assert code == 1
+    assert "no run was measured (2 failed)" in capsys.readouterr().err
+    assert (pd.read_csv(csv, keep_default_na=False)["error"] != "").all()
+    # One run measured of two: success, the failed one printed.
+    code = sweeps.main([str(assets / SCENE), "--methods", "hybrid", "--param", "cor=2,1", "--serial",
+                        "--csv", str(csv)])
+    assert code == 0
+    assert "cor must lie in [0, 1]" in capsys.readouterr().err
+    # An unknown parameter, or a worker count that is not positive, is refused before any run.
+    with pytest.raises(SystemExit, match="--param foo: unknown parameter"):
+        sweeps.main([str(assets / SCENE), "--param", "foo=1", "--serial", "--csv", str(csv)])
+    with pytest.raises(SystemExit) as info:
+        sweeps.main([str(assets / SCENE), "--workers", "0", "--csv", str(csv)])
+    assert info.value.code == 2
