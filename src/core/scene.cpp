@@ -5,6 +5,7 @@
 #include "fosssim/core/forces.h"
 
 #include <cmath>
+#include <string>
 
 namespace fosssim {
 
@@ -28,6 +29,35 @@ void addParticles(Scene& scene, const std::vector<ParticleSpec>& particles) {
 
 void addParticle(Scene& scene, double mass, bool fixed, double radius) {
   addParticles(scene, {ParticleSpec{mass, fixed, radius}});
+}
+
+Status checkSceneShape(const Scene& scene, const State* state) {
+  const size_t n = scene.fixed.size();
+  const auto count = [](size_t size) { return std::to_string(size); };
+  if (scene.radius.size() != n || static_cast<size_t>(scene.mass.size()) != 2 * n)
+    return Status::error("the scene's particle arrays disagree: " + count(n) + " fixed flags, " +
+                         count(scene.radius.size()) + " radii and " + count(static_cast<size_t>(scene.mass.size())) +
+                         " mass entries (2 per particle)");
+  const auto outside = [&](int i) { return i < 0 || static_cast<size_t>(i) >= n; };
+  for (size_t e = 0; e < scene.edges.size(); ++e)
+    if (outside(scene.edges[e].i) || outside(scene.edges[e].j))
+      return Status::error("edge " + count(e) + " joins particles " + std::to_string(scene.edges[e].i) + " and " +
+                           std::to_string(scene.edges[e].j) + ", but the scene has " + count(n) + " particles");
+  std::vector<std::pair<int, int>> pairs;
+  for (size_t f = 0; f < scene.forces.size(); ++f) {
+    pairs.clear();
+    scene.forces[f]->couples(pairs);
+    for (const auto& [i, j] : pairs)
+      if (outside(i) || outside(j))
+        return Status::error("force " + count(f) + " ('" + scene.forces[f]->keyword() + "') acts on particles " +
+                             std::to_string(i) + " and " + std::to_string(j) + ", but the scene has " + count(n) +
+                             " particles");
+  }
+  if (state && (static_cast<size_t>(state->x.size()) != 2 * n || static_cast<size_t>(state->v.size()) != 2 * n))
+    return Status::error("the state has " + count(static_cast<size_t>(state->x.size())) + " position and " +
+                         count(static_cast<size_t>(state->v.size())) + " velocity entries; the scene's " + count(n) +
+                         " particles need " + count(2 * n) + " of each");
+  return Status::ok();
 }
 
 void finalizeScene(Scene& scene) {

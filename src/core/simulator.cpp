@@ -11,6 +11,17 @@
 
 namespace fosssim {
 
+namespace {
+
+/// %g: no 300-digit times in messages.
+std::string shortNumber(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", value);
+  return buffer;
+}
+
+}  // namespace
+
 Simulator::Simulator() = default;
 Simulator::~Simulator() = default;
 
@@ -18,6 +29,11 @@ Status Simulator::create(const Scene& scene, const SimulatorOptions& options,
                          std::unique_ptr<Simulator>& out) {
   const IntegratorEntry* integrator = findIntegrator(scene.integrator);
   if (!integrator) return Status::error("unknown integrator '" + scene.integrator + "'");
+  if (!(scene.dt > 0.0) || !std::isfinite(scene.dt))
+    return Status::error("the time step must be positive and finite, got " + shortNumber(scene.dt));
+  if (options.handler.threads < 1)
+    return Status::error("threads must be at least 1, got " + std::to_string(options.handler.threads));
+  if (Status s = checkSceneShape(scene); !s) return s;
   const CollisionEntry* collision = &collisionEntry(scene.collision.type);
   std::unique_ptr<Simulator> sim(new Simulator());
   sim->collision_ = collision;
@@ -36,13 +52,6 @@ Status Simulator::create(const Scene& scene, const SimulatorOptions& options,
 }
 
 namespace {
-
-/// %g: no 300-digit times in messages.
-std::string shortNumber(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", value);
-  return buffer;
-}
 
 /// What made the first non-finite particle of `end` so: when the integrator's prediction was
 /// already non-finite, the forces on it at the step's start (one that is non-finite there, else
@@ -106,6 +115,14 @@ Status Simulator::step(const Scene& scene, State& state, StepObserver* observer)
   if (!same(scene.dt, dt_) || scene.integrator != integratorKeyword_ || !sameSettings(scene.collision, settings_))
     return failure("the scene's settings (integrator, dt or collision) changed since the simulator was created; "
                    "create a new simulator for the new settings");
+  // A scene built in code can change between steps: its shape is checked again when it grew.
+  const size_t n = scene.fixed.size();
+  if (static_cast<size_t>(scene.mass.size()) != 2 * n || scene.radius.size() != n ||
+      static_cast<size_t>(state.x.size()) != 2 * n || static_cast<size_t>(state.v.size()) != 2 * n ||
+      n != checkedParticles_ || scene.edges.size() != checkedEdges_ || scene.forces.size() != checkedForces_) {
+    if (Status s = checkSceneShape(scene, &state); !s) return failure(s.message());
+    checkedParticles_ = n, checkedEdges_ = scene.edges.size(), checkedForces_ = scene.forces.size();
+  }
 
   stats_.clear();
   const StepTimer stepTimer(timing_, stats_.total);

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <thread>
 
 namespace fosssim {
@@ -112,6 +113,68 @@ TEST(SimulatorSettings, SimulatorsOnDifferentThreadsShareNothing) {
   EXPECT_EQ(second.x, alone.x) << "all pairs and the broad phase find the same pairs";
   EXPECT_EQ(second.v, alone.v);
   EXPECT_NE(alone.x, penaltyPile(12).state.x) << "the pile moved";
+}
+
+// A scene built in code that does not hold together is refused with a message, at creation or at
+// the step that finds it, instead of a step that reads out of bounds (each case below crashed or
+// ran on garbage before: an edge to particle 7 of one, a state of the wrong size, an empty mass).
+TEST(SimulatorSettings, AMisshapenSceneOrStateIsAnErrorNotACrash) {
+  const auto base = [] {
+    TestScene s;
+    s.scene.integrator = "symplectic-euler";
+    s.scene.dt = 0.01;
+    s.scene.collision.type = CollisionType::ContinuousTime;
+    addBody(s, 1.0, Vec2(0, 0), Vec2(1, 0));
+    addBody(s, 1.0, Vec2(1, 0), Vec2(0, 0));
+    return s;
+  };
+  const auto refusedAtCreate = [](TestScene& s, const SimulatorOptions& options, const std::string& says) {
+    std::unique_ptr<Simulator> sim;
+    const Status status = Simulator::create(s.scene, options, sim);
+    EXPECT_FALSE(status.isOk());
+    EXPECT_NE(status.message().find(says), std::string::npos) << status.message();
+  };
+  {
+    TestScene s = base();
+    s.scene.edges.push_back(Edge{0, 7, 0.01});
+    refusedAtCreate(s, {}, "edge 0 joins particles 0 and 7");
+  }
+  {
+    TestScene s = base();
+    s.scene.forces.push_back(std::make_unique<SpringForce>(0, 5, 1.0, 1.0, 0.0));
+    refusedAtCreate(s, {}, "acts on particles 0 and 5");
+  }
+  {
+    TestScene s = base();
+    s.scene.mass.resize(0);
+    refusedAtCreate(s, {}, "particle arrays disagree");
+  }
+  for (double dt : {-1.0, 0.0, std::nan("")}) {
+    TestScene s = base();
+    s.scene.dt = dt;
+    refusedAtCreate(s, {}, "time step must be positive");
+  }
+  {
+    TestScene s = base();
+    SimulatorOptions options;
+    options.handler.threads = -3;
+    refusedAtCreate(s, options, "threads must be at least 1");
+  }
+  // At the step: a state that does not fit, and an edge added after creation.
+  TestScene s = base();
+  std::unique_ptr<Simulator> sim;
+  ASSERT_TRUE(Simulator::create(s.scene, {}, sim).isOk());
+  ASSERT_TRUE(sim->step(s.scene, s.state).isOk());
+  State empty;
+  const Status wrongState = sim->step(s.scene, empty);
+  EXPECT_FALSE(wrongState.isOk());
+  EXPECT_NE(wrongState.message().find("the state has 0 position"), std::string::npos) << wrongState.message();
+  s.scene.edges.push_back(Edge{1, 2, 0.01});
+  const Status badEdge = sim->step(s.scene, s.state);
+  EXPECT_FALSE(badEdge.isOk());
+  EXPECT_NE(badEdge.message().find("step 2"), std::string::npos) << badEdge.message();
+  s.scene.edges.back().j = 0;
+  EXPECT_TRUE(sim->step(s.scene, s.state).isOk()) << "a mended scene steps on";
 }
 
 }  // namespace

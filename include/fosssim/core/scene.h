@@ -4,6 +4,8 @@
 #pragma once
 
 #include "fosssim/core/force.h"
+#include "fosssim/core/state.h"
+#include "fosssim/core/status.h"
 #include "fosssim/core/types.h"
 
 #include <memory>
@@ -102,6 +104,12 @@ void addParticle(Scene& scene, double mass, bool fixed, double radius);
 /// settings' k and thickness, last in the summation order, unless the scene has one already.
 /// The loader calls it; so should any code that builds a scene with such a collision type.
 void finalizeScene(Scene& scene);
+
+/// Whether a scene built in code holds together: per-particle arrays of one length N (mass 2N,
+/// fixed and radius N), every edge's and pair force's particles in [0, N), and `state` (if
+/// given) of 2N positions and velocities. The loader's scenes always do; a library caller's may
+/// not, and a step over them would read out of bounds. Simulator::create and step check it.
+Status checkSceneShape(const Scene& scene, const State* state = nullptr);
 
 /// Sum of the gradients of all the scene's forces at (x, v): minus the total force (size 2N).
 /// `context`: the caller's options and storage for forces that search pairs (force.h); the

@@ -85,6 +85,9 @@ class Simulator {
   bool timing_ = false;
   ForceContext forces_;  ///< the forces' pair search (allPairs, threads) and storage
   State start_;  ///< the state at the beginning of the current step (scratch)
+  /// The scene's particles, edges and forces when step last checked its shape (checkSceneShape):
+  /// checked again, in full, only when one of these counts changes.
+  size_t checkedParticles_ = ~size_t{0}, checkedEdges_ = 0, checkedForces_ = 0;
   std::unique_ptr<EnergyWatch> energyWatch_;  ///< part of the verify phase
 };
 
