@@ -67,6 +67,8 @@ struct ElementSpec {
 /// Every element of the scene format, in the docs' order.
 const std::vector<ElementSpec>& elementTable();
 const ElementSpec* findElement(const std::string& name);
+/// The most attributes an element of the table declares (messages and docs about kMaxAttributes).
+size_t mostAttributes();
 
 /// An index read from the file, checked once the counts are known (-1: already reported).
 struct IndexRef {

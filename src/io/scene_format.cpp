@@ -6,6 +6,7 @@
 #include "fosssim/core/collision_handler.h"
 #include "fosssim/core/integrator.h"
 #include "scene_elements.h"
+#include "xml_syntax.h"
 
 #include <sstream>
 
@@ -91,6 +92,9 @@ std::string sceneFormatMarkdown() {
         "  `<scene>`, ignored repeats. Repeats of one kind are shown three times and then counted.\n"
         "  `--strict` makes warnings errors; `-q` shows a one-line count instead.\n"
         "- `FOSSSim -s scene.xml --check` checks a scene without running it.\n"
+        "- An element may have at most "
+     << io::withThousands(io::kMaxAttributes) << " attributes (the elements below take at most " << io::mostAttributes()
+     << "): parsing\n  more takes time growing with the square of their number, so a file with more is refused unparsed.\n"
         "- A run may take at most "
      << io::shortNumber(io::kMaxSteps) << " steps (ceil(duration / dt)); all `<particlepath>` trails together keep at most "
      << io::withThousands(static_cast<long>(io::kMaxTrailPoints)) << " positions.\n\n";
