@@ -95,7 +95,10 @@ bool ElementReader::parseNumber(const tinyxml2::XMLAttribute& attribute, double&
 
 double ElementReader::checked(const AttributeSpec& spec, const tinyxml2::XMLAttribute& attribute) {
   double value = 0;
-  if (!parseNumber(attribute, value)) return 1.0;  // a placeholder that upsets no later check
+  // A placeholder that upsets no later check, as after the range checks below: an index of -1 is
+  // one already reported (the element's and the assembly's checks skip it; 1 made
+  // <edge i="O" j="1"/> "i = j = 1"), a flag 0 (1 warned of a moving fixed particle).
+  if (!parseNumber(attribute, value)) return spec.kind == Kind::Index ? -1.0 : spec.kind == Kind::Flag ? 0.0 : 1.0;
   const std::string got = ", got " + quoted(attribute.Value());
   switch (spec.kind) {
     case Kind::Positive:

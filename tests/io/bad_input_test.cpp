@@ -180,5 +180,37 @@ TEST(BadInput, IndicesMustBeNonNegativeIntegers) {
   }
 }
 
+// A value that is no number is one error, and nothing follows from it: the failed read's
+// placeholder must not trip the element's own checks (an edge's i = j, a fixed particle with a
+// velocity) or the assembly's (an index naming nothing). The base scene has particles 0 and 1
+// and edge 0, so a placeholder index of 1 would do both.
+TEST(BadInput, AValueThatIsNoNumberIsOneMessage) {
+  const std::vector<RangeCase> cases = {
+      {"edge", "i", "  <edge i=\"O\" j=\"1\"/>", 6, ""},
+      {"edge", "j", "  <edge i=\"1\" j=\"I\"/>", 6, ""},
+      {"gravitationalforce", "i", "  <gravitationalforce i=\"O\" j=\"1\" G=\"1\"/>", 0, ""},
+      {"vortexforce", "j", "  <vortexforce i=\"1\" j=\"one\" kbs=\"1\" kvc=\"1\"/>", 0, ""},
+      {"springforce", "edge", "  <springforce edge=\"first\" k=\"1\" l0=\"1\"/>", 0, ""},
+      {"edgecolor", "i", "  <edgecolor i=\"O\" r=\"0\" g=\"0\" b=\"0\"/>", 0, ""},
+      {"particlecolor", "i", "  <particlecolor i=\"x\" r=\"0\" g=\"0\" b=\"0\"/>", 0, ""},
+      {"particlepath", "i", "  <particlepath i=\"x\" duration=\"1\" r=\"0\" g=\"0\" b=\"0\"/>", 0, ""},
+      {"particle", "fixed", "  <particle m=\"1\" px=\"0\" py=\"0\" vx=\"1\" vy=\"0\" fixed=\"yes\"/>", 4, ""},
+  };
+  for (const RangeCase& c : cases) {
+    SCOPED_TRACE(c.text);
+    SceneFile file;
+    const Status s = parseScene(c.line ? replaced(c.line, c.text) : extra(c.text), kFile, file);
+    ASSERT_FALSE(s.isOk());
+    EXPECT_EQ(file.errorCount, 1) << s.message();
+    EXPECT_EQ(file.warningCount, 0) << s.message();
+    EXPECT_EQ(file.messages.size(), 1u) << s.message();
+    if (file.messages.empty()) continue;
+    EXPECT_EQ(file.messages[0].line, c.line ? c.line : kExtraLine);
+    EXPECT_EQ(file.messages[0].text.rfind(located(c.line ? c.line : kExtraLine, c.element, c.attribute) +
+                                          ": expected a number", 0), 0u)
+        << file.messages[0].text;
+  }
+}
+
 }  // namespace
 }  // namespace fosssim::testing
