@@ -21,7 +21,7 @@ class ElementReader;
 /// How an attribute's text is read and checked.
 enum class Kind {
   Number,       ///< any finite number
-  Positive,     ///< a finite number > 0
+  Positive,     ///< a finite number > 0 with a finite reciprocal (it is divided by)
   NonNegative,  ///< a finite number >= 0
   Fraction,     ///< a number in [0, 1]
   Index,        ///< an integer >= 0 naming an element by its position (from 0, in file order)

@@ -103,6 +103,11 @@ double ElementReader::checked(const AttributeSpec& spec, const tinyxml2::XMLAttr
   switch (spec.kind) {
     case Kind::Positive:
       if (!(value > 0)) return fail(spec.name, "must be > 0" + got), 1.0;
+      // Masses, time steps, radii and sizes are divided by: a subnormal such as 1e-320 is > 0,
+      // yet its reciprocal is infinite.
+      if (!std::isfinite(1 / value))
+        return fail(spec.name, "too small: 1/" + std::string(spec.name) + " is not finite (at least about 5.6e-309)" + got),
+               1.0;
       break;
     case Kind::NonNegative:
       if (value < 0) return fail(spec.name, "must be >= 0" + got), 1.0;

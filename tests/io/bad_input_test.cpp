@@ -122,6 +122,14 @@ TEST(BadInput, ValuesOutOfRangeAreRejected) {
       {"particle", "m", "  <particle m=\"0\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>", 4, "> 0"},
       {"particle", "m", "  <particle m=\"-1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>", 4, "> 0"},
       {"particle", "m", "  <particle m=\"1e-400\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>", 4, "> 0"},
+      // Subnormal: > 0, but 1/m is infinite.
+      {"particle", "m", "  <particle m=\"1e-320\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>", 4,
+       "1/m is not finite"},
+      {"particle", "radius", "radius=\"4e-309\"/>", 4, "1/radius is not finite"},
+      {"integrator", "dt", "  <integrator type=\"explicit-euler\" dt=\"1e-310\"/>", 3, "1/dt is not finite"},
+      {"edge", "radius", "  <edge i=\"0\" j=\"1\" radius=\"1e-315\"/>", 6, "1/radius is not finite"},
+      {"viewport", "size", "  <viewport cx=\"0\" cy=\"0\" size=\"5e-324\"/>", 0, "1/size is not finite"},
+      {"maxsimfreq", "max", "  <maxsimfreq max=\"2e-320\"/>", 0, "1/max is not finite"},
       {"particle", "radius", "radius=\"0\"/>", 4, "> 0"},
       {"particle", "radius", "radius=\"-0.1\"/>", 4, "> 0"},
       {"particle", "fixed", "  <particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"2\"/>", 4, "0 or 1"},
@@ -155,6 +163,8 @@ TEST(BadInput, ValuesOutOfRangeAreRejected) {
     const std::string scene = c.line ? replaced(c.line, text) : extra(text);
     expectError(scene, {located(c.line ? c.line : kExtraLine, c.element, c.attribute), c.why});
   }
+  // Small but normal: 1/m = 1e308 is finite.
+  EXPECT_EQ(loadError(replaced(4, "  <particle m=\"1e-308\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>")), "");
 }
 
 TEST(BadInput, ColourChannelsOutsideZeroOneAreRejected) {
