@@ -204,6 +204,11 @@ Status StagedFile::commit() {
   return Status::ok();
 }
 
+bool StagedFile::made() const {
+  struct stat st {};
+  return stat(writePath_.c_str(), &st) == 0;
+}
+
 std::string StagedFile::whereIncomplete() const {
   if (!staged()) return "\"" + finalPath_ + "\"";
   struct stat st {};

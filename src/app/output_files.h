@@ -45,6 +45,8 @@ class StagedFile {
   Status commit();
   /// For the summary of a run that did not complete: where its data is.
   std::string whereIncomplete() const;
+  /// Whether the file written to exists (a writer that could not create it made none).
+  bool made() const;
 
  private:
   std::string finalPath_;  ///< as the user gave it

@@ -146,6 +146,29 @@ TEST_F(CliOutputs, StatsIsNeitherAnInputNorAnotherOutput) {
   EXPECT_EQ(slurp(path("o1.csv")).rfind("step,time,", 0), 0u);
 }
 
+// A run whose pictures fail says only what was written: frames up to the last one written, and
+// no movie when ffmpeg could not create its file.
+TEST_F(CliOutputs, TheSummaryCountsOnlyWhatWasWritten) {
+  const std::string scene = meeting("scene.xml", "continuous-time", 0.05);  // 5 steps, 5 frames
+  // Frame 3's name is taken by a folder: frames 1 and 2 are written, then the run stops.
+  fs::create_directories(path("svg/frame00000000000000000003.svg"));
+  const Outcome third = runFosssim({"-s", scene, "-d", "0", "-q", "-m", path("svg")});
+  EXPECT_TRUE(exitedWith(third, 1)) << third;
+  EXPECT_TRUE(contains(third.err, "FOSSSim: frames 1 to 2: SVG in \"" + path("svg") + "\"\n")) << third;
+  EXPECT_TRUE(fs::exists(path("svg/frame00000000000000000002.svg")));
+  fs::create_directories(path("first/frame00000000000000000001.svg"));
+  const Outcome first = runFosssim({"-s", scene, "-d", "0", "-q", "-m", path("first")});
+  EXPECT_TRUE(exitedWith(first, 1)) << first;
+  EXPECT_TRUE(contains(first.err, "FOSSSim: no frame was written (SVG in \"" + path("first") + "\")\n")) << first;
+  EXPECT_FALSE(contains(first.err, "frames 1 to")) << first;
+  if (!FOSSSIM_WITH_RENDER) GTEST_SKIP() << "this build has no renderer (--movie)";
+  // /proc takes no new files, not even root's: ffmpeg starts but makes no movie.
+  const Outcome movie = runFosssim({"-s", scene, "-d", "0", "-q", "--movie", "/proc/fosssim-test.mp4"});
+  EXPECT_TRUE(exitedWith(movie, 1)) << movie;
+  EXPECT_TRUE(contains(movie.err, "no movie was made (\"/proc/fosssim-test.partial.mp4\" does not exist)")) << movie;
+  EXPECT_FALSE(contains(movie.err, "the movie is in")) << movie;
+}
+
 TEST_F(CliOutputs, TheFinalNameOnlyForACompletedRun) {
   const std::string scene = meeting("scene.xml", "continuous-time");
   // Completed: the final name, no partial file left.
