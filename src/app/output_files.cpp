@@ -69,6 +69,91 @@ Status checkFrames(const std::string& option, const std::string& dir, const std:
   return result;
 }
 
+/// Where a staged output goes: `renameTo` the final name, a symbolic link resolved (the link
+/// keeps pointing at it), and the returned name to write while the run lasts, the partial name
+/// next to it, or the final name itself for a device or a named pipe (nothing to rename).
+std::string stagedPaths(const std::string& finalPath, std::string& renameTo) {
+  renameTo = finalPath;
+  struct stat st {};
+  // A folder is refused by whoever opens it.
+  if (stat(finalPath.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) return finalPath;
+  struct stat link {};
+  if (lstat(finalPath.c_str(), &link) == 0 && S_ISLNK(link.st_mode)) {
+    std::error_code ec;
+    const fs::path target = fs::canonical(finalPath, ec);  // fails for a dangling link: then the link is replaced
+    if (!ec) renameTo = target.string();
+  }
+  return partialName(renameTo);
+}
+
+/// A file the run writes: -o and --movie under their final and partial names, --stats.
+struct Written {
+  std::string option, path;
+  bool partial;  ///< the partial name of option's output (where it is written until the run completes)
+};
+
+std::vector<Written> writtenFiles(const Options& options) {
+  std::vector<Written> files;
+  for (const auto& [option, path] : {std::pair<std::string, std::string>{"-o", options.output}, {"--movie", options.movie}}) {
+    if (path.empty()) continue;
+    files.push_back({option, path, false});
+    std::string renameTo;
+    if (const std::string writePath = stagedPaths(path, renameTo); writePath != renameTo)
+      files.push_back({option, writePath, true});
+  }
+  if (!options.stats.empty()) files.push_back({"--stats", options.stats, false});
+  return files;
+}
+
+std::string describe(const Written& w, const Options& options) {
+  if (!w.partial) return w.option + " \"" + w.path + "\"";
+  return "the partial file \"" + w.path + "\" of " + w.option + " (written there until the run completes, then renamed to \"" +
+         (w.option == "-o" ? options.output : options.movie) + "\")";
+}
+
+/// Two names of one file that both outputs would write: an existing regular file under any
+/// name or link (device and inode), or a file still to be made under the same canonical path.
+/// Devices and named pipes are written directly and destroy nothing (-o /dev/null --stats
+/// /dev/null is a run that keeps nothing, as asked).
+bool sameWrittenFile(const std::string& a, const std::string& b) {
+  struct stat sa {}, sb {};
+  const bool hasA = stat(a.c_str(), &sa) == 0, hasB = stat(b.c_str(), &sb) == 0;
+  if (hasA && hasB) return S_ISREG(sa.st_mode) && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+  if (hasA || hasB) return false;
+  std::error_code e1, e2;
+  const fs::path ca = fs::weakly_canonical(a, e1), cb = fs::weakly_canonical(b, e2);
+  return !e1 && !e2 && ca == cb;
+}
+
+/// True when `path` is one of the frames -m or -g writes into `dir` (ending ".svg" or ".png").
+bool isFrameOf(const std::string& path, const std::string& dir, const std::string& ending) {
+  const fs::path p(path);
+  if (!isFrameName(p.filename().string(), ending)) return false;
+  std::error_code e1, e2;
+  const fs::path parent = fs::weakly_canonical(p.parent_path().empty() ? fs::path(".") : p.parent_path(), e1);
+  const fs::path frames = fs::weakly_canonical(dir.empty() ? fs::path(".") : fs::path(dir), e2);
+  return !e1 && !e2 && parent == frames;
+}
+
+/// No output may be written over by another: the stats written into the trajectory, or a
+/// trajectory renamed over the stats, would lose one of them without a word.
+Status checkOutputsAgainstEachOther(const Options& options) {
+  const std::vector<Written> files = writtenFiles(options);
+  for (size_t a = 0; a < files.size(); ++a)
+    for (size_t b = a + 1; b < files.size(); ++b)
+      if (files[a].option != files[b].option && sameWrittenFile(files[a].path, files[b].path))
+        return Status::error(describe(files[b], options) + " and " + describe(files[a], options) +
+                             " are the same file: give each output its own name");
+  for (const Written& w : files) {
+    const bool svg = !options.svgDir.empty() && isFrameOf(w.path, options.svgDir, ".svg");
+    const bool png = options.pngs && isFrameOf(w.path, options.pngDir, ".png");
+    if (svg || png)
+      return Status::error(describe(w, options) + " is a frame file that " + (svg ? "-m" : "-g") +
+                           " writes: give each output its own name");
+  }
+  return Status::ok();
+}
+
 }  // namespace
 
 std::string partialName(const std::string& path) {
@@ -82,36 +167,25 @@ Status checkOutputsAgainstInputs(const Options& options) {
   for (const auto& [option, path] : {std::pair<std::string, std::string>{"-o", options.output}, {"--movie", options.movie}}) {
     if (path.empty()) continue;
     if (Status s = checkOne(option, path, "", inputs); !s) return s;
-    if (Status s = checkOne(option, partialName(path), "its partial file \"" + partialName(path) + "\" ", inputs); !s)
-      return s;
+    std::string renameTo;
+    const std::string writePath = stagedPaths(path, renameTo);
+    if (writePath != renameTo)
+      if (Status s = checkOne(option, writePath, "its partial file \"" + writePath + "\" ", inputs); !s) return s;
   }
   if (!options.svgDir.empty())
     if (Status s = checkFrames("-m", options.svgDir, ".svg", inputs); !s) return s;
   if (options.pngs)
     if (Status s = checkFrames("--png-dir", options.pngDir, ".png", inputs); !s) return s;
-  if (!options.output.empty() && !options.movie.empty()) {
-    std::error_code e1, e2;
-    const fs::path a = fs::weakly_canonical(options.output, e1), b = fs::weakly_canonical(options.movie, e2);
-    if (!e1 && !e2 && a == b)
-      return Status::error("-o and --movie name the same file (\"" + options.output + "\"): give each its own");
-  }
-  return Status::ok();
+  if (!options.stats.empty())
+    if (Status s = checkOne("--stats", options.stats, "", inputs); !s) return s;
+  return checkOutputsAgainstEachOther(options);
 }
 
 Status StagedFile::prepare(const std::string& finalPath, const std::string& what, StagedFile& out) {
-  out.finalPath_ = out.renameTo_ = out.writePath_ = finalPath;
-  struct stat st {};
-  if (stat(finalPath.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
-    // A device or a named pipe is written directly; a folder is refused by whoever opens it.
-    return Status::ok();
-  }
+  out.finalPath_ = finalPath;
+  out.writePath_ = stagedPaths(finalPath, out.renameTo_);
+  if (!out.staged()) return Status::ok();
   struct stat link {};
-  if (lstat(finalPath.c_str(), &link) == 0 && S_ISLNK(link.st_mode)) {
-    std::error_code ec;
-    const fs::path target = fs::canonical(finalPath, ec);  // fails for a dangling link: then the link is replaced
-    if (!ec) out.renameTo_ = target.string();
-  }
-  out.writePath_ = partialName(out.renameTo_);
   // The partial name is ours: an old partial file (or a link there) goes, so that nothing is
   // written through it. checkOutputsAgainstInputs made sure it is no input.
   if (lstat(out.writePath_.c_str(), &link) == 0 && !S_ISDIR(link.st_mode) && std::remove(out.writePath_.c_str()) != 0)
@@ -128,6 +202,11 @@ Status StagedFile::commit() {
     return Status::error("\"" + finalPath_ + "\": cannot rename \"" + writePath_ + "\" to it (" + std::strerror(errno) +
                          "); the complete data is in \"" + writePath_ + "\"");
   return Status::ok();
+}
+
+bool StagedFile::made() const {
+  struct stat st {};
+  return stat(writePath_.c_str(), &st) == 0;
 }
 
 std::string StagedFile::whereIncomplete() const {

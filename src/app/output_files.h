@@ -1,8 +1,10 @@
 // Output files that never destroy an input and never leave a half-written file under their name.
 //
-// - Every output (-o, --movie, the frames of -m and -g) is compared with the inputs (-s, -i) by
-//   device and inode before anything is opened: the same file under another name, through a
-//   symbolic or a hard link, is refused.
+// - Every output (-o, --movie, --stats, the frames of -m and -g) is compared with the inputs (-s,
+//   -i) by device and inode before anything is opened: the same file under another name, through
+//   a symbolic or a hard link, is refused.
+// - No output is another's file either: -o, --movie (final and partial names) and --stats differ
+//   from each other and from the frames of -m and -g, else one would write over the other.
 // - -o and --movie are written under a partial name next to the final one ("out.bin" is written
 //   as "out.partial.bin", "run.mp4" as "run.partial.mp4": ffmpeg picks the format by the ending)
 //   and renamed to the final name when the run completes (all steps, or the window closed by the
@@ -23,8 +25,8 @@ namespace fosssim::app {
 /// "dir/out.bin" -> "dir/out.partial.bin"; "traj" -> "traj.partial".
 std::string partialName(const std::string& path);
 
-/// Fails (naming both) when an output of `options` is the same file as one of its inputs, or
-/// -o and --movie are the same file.
+/// Fails (naming both) when an output of `options` is the same file as one of its inputs, or two
+/// outputs would write one file (a final or partial name of -o or --movie, --stats, a frame).
 Status checkOutputsAgainstInputs(const Options& options);
 
 /// One output written under its partial name and renamed at the end.
@@ -43,6 +45,8 @@ class StagedFile {
   Status commit();
   /// For the summary of a run that did not complete: where its data is.
   std::string whereIncomplete() const;
+  /// Whether the file written to exists (a writer that could not create it made none).
+  bool made() const;
 
  private:
   std::string finalPath_;  ///< as the user gave it

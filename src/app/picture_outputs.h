@@ -32,12 +32,23 @@ class PictureOutputs final : public RunObserver {
     if (finished && movie_ && end_ == RunEnd::Completed) return movie_->commit();
     return finished;
   }
+  /// Only what was written: the frames every output wrote (a frame that failed is not), and the
+  /// movie only when its file exists (ffmpeg may have failed to create it).
   std::string written() const override {
-    if (outputs_.frames() == 0 && !movie_) return "";
-    std::string line = "frames 1 to " + std::to_string(outputs_.frames()) + ":";
-    for (const std::string& place : places_) line += " " + place + ";";
-    if (movie_) line += " the movie is in " + movie_->whereIncomplete();
-    else line.pop_back();
+    const long frames = outputs_.frames();
+    std::vector<std::string> parts;
+    if (frames > 0) parts = places_;
+    const bool movieMade = movie_ && movie_->made();
+    if (movieMade) parts.push_back("the movie is in " + movie_->whereIncomplete());
+    std::string line = parts.empty() || frames == 0 ? "" : "frames 1 to " + std::to_string(frames) + ": ";
+    for (size_t k = 0; k < parts.size(); ++k) line += (k ? "; " : "") + parts[k];
+    if (movie_ && !movieMade)
+      line += (line.empty() ? "" : "; ") + std::string("no movie was made (\"") + movie_->writePath() + "\" does not exist)";
+    if (line.empty() && !places_.empty()) {
+      line = "no frame was written (";
+      for (size_t k = 0; k < places_.size(); ++k) line += (k ? "; " : "") + places_[k];
+      line += ")";
+    }
     return line;
   }
 

@@ -59,18 +59,22 @@ std::string number(double value) {
   return s.str();
 }
 
-/// "'springforce' #2 (k = 100)": forces of one kind keep the file's order, so the n-th force of
-/// its kind is the n-th element of that kind in the file.
+/// "'springforce' #2 (k = 100)".
 std::string forceName(const Scene& scene, int index) {
-  const Force& force = *scene.forces[index];
-  int nth = 1;
-  for (int f = 0; f < index; ++f) nth += std::string(scene.forces[f]->keyword()) == force.keyword();
-  std::string name = "'" + std::string(force.keyword()) + "' #" + std::to_string(nth);
+  std::string name = forceOrdinal(scene, index);
+  const Force& force = *scene.forces[static_cast<size_t>(index)];
   if (force.stiffness() > 0) name += " (k = " + number(force.stiffness()) + ")";
   return name;
 }
 
 }  // namespace
+
+std::string forceOrdinal(const Scene& scene, int index) {
+  const Force& force = *scene.forces[static_cast<size_t>(index)];
+  int nth = 1;
+  for (int f = 0; f < index; ++f) nth += std::string(scene.forces[static_cast<size_t>(f)]->keyword()) == force.keyword();
+  return "'" + std::string(force.keyword()) + "' #" + std::to_string(nth);
+}
 
 void EnergyWatch::potentials(const Scene& scene, const VecX& x, const VecX& v, ForceContext& forces,
                              std::vector<double>& out) const {

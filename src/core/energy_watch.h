@@ -48,6 +48,7 @@
 #include "fosssim/core/state.h"
 #include "fosssim/core/status.h"
 
+#include <string>
 #include <vector>
 
 namespace fosssim {
@@ -108,5 +109,11 @@ class EnergyWatch {
   };
   std::vector<Tracked> tracked_;  ///< the forces with a potential that are not spring-like
 };
+
+/// How run-time messages name the force scene.forces[index]: its keyword and its place among the
+/// forces of that keyword, counted from 1 ("'springforce' #2": the second <springforce> of the
+/// file, as forces of one kind keep the file's order). The energy watch and the step's
+/// non-finite check both use it, so that their messages about one scene name the same element.
+std::string forceOrdinal(const Scene& scene, int index);
 
 }  // namespace fosssim

@@ -55,9 +55,9 @@ namespace {
 
 /// What made the first non-finite particle of `end` so: when the integrator's prediction was
 /// already non-finite, the forces on it at the step's start (one that is non-finite there, else
-/// the largest), named as the energy watch names them ("'springforce' #2": the third
-/// <springforce> of the file); otherwise the collision response. Only on failure, and only when
-/// evaluating every force separately is cheap enough (forces x particles <= 5e7).
+/// the largest), named as the energy watch names them (forceOrdinal: "'springforce' #2", the
+/// second <springforce> of the file); otherwise the collision response. Only on failure, and
+/// only when evaluating every force separately is cheap enough (forces x particles <= 5e7).
 std::string blameNonFinite(const Scene& scene, const State& start, const State& end, bool predictionFinite,
                            const char* handler) {
   if (predictionFinite) return std::string("; the integrator's prediction was finite: the collision response (") + handler +
@@ -79,10 +79,7 @@ std::string blameNonFinite(const Scene& scene, const State& start, const State& 
     nonFinite = !pull.allFinite();
     if (nonFinite || pull.norm() > largest) blamed = static_cast<int>(f), largest = pull.norm();
   }
-  const Force& force = *scene.forces[static_cast<size_t>(blamed)];
-  int nth = 0;
-  for (int f = 0; f < blamed; ++f) nth += std::string(scene.forces[static_cast<size_t>(f)]->keyword()) == force.keyword();
-  const std::string name = "'" + std::string(force.keyword()) + "' #" + std::to_string(nth);
+  const std::string name = forceOrdinal(scene, blamed);
   if (nonFinite) return "; the force " + name + " on it was already non-finite at the step's start";
   return "; the integrator made it non-finite; the largest force on it at the step's start was " + name + " (|F| = " +
          shortNumber(largest) + "): a smaller dt or a weaker force may help";

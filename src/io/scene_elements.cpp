@@ -324,4 +324,10 @@ const ElementSpec* findElement(const std::string& name) {
   return nullptr;
 }
 
+size_t mostAttributes() {
+  size_t most = 0;
+  for (const ElementSpec& e : elementTable()) most = std::max(most, e.attributes.size());
+  return most;
+}
+
 }  // namespace fosssim::io

@@ -21,7 +21,7 @@ class ElementReader;
 /// How an attribute's text is read and checked.
 enum class Kind {
   Number,       ///< any finite number
-  Positive,     ///< a finite number > 0
+  Positive,     ///< a finite number > 0 with a finite reciprocal (it is divided by)
   NonNegative,  ///< a finite number >= 0
   Fraction,     ///< a number in [0, 1]
   Index,        ///< an integer >= 0 naming an element by its position (from 0, in file order)
@@ -67,6 +67,8 @@ struct ElementSpec {
 /// Every element of the scene format, in the docs' order.
 const std::vector<ElementSpec>& elementTable();
 const ElementSpec* findElement(const std::string& name);
+/// The most attributes an element of the table declares (messages and docs about kMaxAttributes).
+size_t mostAttributes();
 
 /// An index read from the file, checked once the counts are known (-1: already reported).
 struct IndexRef {

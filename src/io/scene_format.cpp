@@ -6,6 +6,7 @@
 #include "fosssim/core/collision_handler.h"
 #include "fosssim/core/integrator.h"
 #include "scene_elements.h"
+#include "xml_syntax.h"
 
 #include <sstream>
 
@@ -80,7 +81,8 @@ std::string sceneFormatMarkdown() {
         "    </scene>\n\n"
         "## Rules\n\n"
         "- **Numbers** are decimal (`1`, `-0.5`, `2.5e-3`); spaces around them are allowed, anything else\n"
-        "  after them is an error (`1.5abc`), and so are `nan` and `inf`.\n"
+        "  after them is an error (`1.5abc`), and so are `nan` and `inf`. A number `> 0` is divided by,\n"
+        "  so its reciprocal must be finite too: below about 5.6e-309 (`m=\"1e-320\"`) it is refused.\n"
         "- **Indices** count from 0 in file order, per kind: the first `<particle>` is particle 0, the first\n"
         "  `<edge>` edge 0. An index may name an element that comes later in the file.\n"
         "- **Errors** (a bad value, a missing required attribute or element, an index that names nothing)\n"
@@ -91,6 +93,9 @@ std::string sceneFormatMarkdown() {
         "  `<scene>`, ignored repeats. Repeats of one kind are shown three times and then counted.\n"
         "  `--strict` makes warnings errors; `-q` shows a one-line count instead.\n"
         "- `FOSSSim -s scene.xml --check` checks a scene without running it.\n"
+        "- An element may have at most "
+     << io::withThousands(io::kMaxAttributes) << " attributes (the elements below take at most " << io::mostAttributes()
+     << "): parsing\n  more takes time growing with the square of their number, so a file with more is refused unparsed.\n"
         "- A run may take at most "
      << io::shortNumber(io::kMaxSteps) << " steps (ceil(duration / dt)); all `<particlepath>` trails together keep at most "
      << io::withThousands(static_cast<long>(io::kMaxTrailPoints)) << " positions.\n\n";

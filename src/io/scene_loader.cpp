@@ -122,6 +122,13 @@ Status parseDocument(const std::string& raw, const std::string& name, SceneFile&
     return Status::error(messages.at(io::lineOf(raw, nul)) + "a NUL byte (at byte " + io::withThousands(static_cast<long>(nul)) +
                          "): a scene file is XML text, and nothing after it could be read");
   const std::string text = io::normalizeLineEnds(raw);
+  // Before tinyxml2, whose check for repeated attributes makes a flood of them on one element
+  // take minutes (xml_syntax.h).
+  if (io::CrowdedElement crowded; io::findCrowdedElement(text, crowded)) {
+    return Status::error(messages.at(crowded.line) + "<" + crowded.name + ">: " + io::withThousands(crowded.attributes) +
+                         " attributes, more than the " + io::withThousands(io::kMaxAttributes) +
+                         " an element may have (the scene format's take at most " + std::to_string(io::mostAttributes()) + ")");
+  }
   tinyxml2::XMLDocument doc;
   const tinyxml2::XMLError parsed = doc.Parse(text.data(), text.size());
   if (parsed == tinyxml2::XML_ERROR_EMPTY_DOCUMENT)

@@ -95,11 +95,19 @@ bool ElementReader::parseNumber(const tinyxml2::XMLAttribute& attribute, double&
 
 double ElementReader::checked(const AttributeSpec& spec, const tinyxml2::XMLAttribute& attribute) {
   double value = 0;
-  if (!parseNumber(attribute, value)) return 1.0;  // a placeholder that upsets no later check
+  // A placeholder that upsets no later check, as after the range checks below: an index of -1 is
+  // one already reported (the element's and the assembly's checks skip it; 1 made
+  // <edge i="O" j="1"/> "i = j = 1"), a flag 0 (1 warned of a moving fixed particle).
+  if (!parseNumber(attribute, value)) return spec.kind == Kind::Index ? -1.0 : spec.kind == Kind::Flag ? 0.0 : 1.0;
   const std::string got = ", got " + quoted(attribute.Value());
   switch (spec.kind) {
     case Kind::Positive:
       if (!(value > 0)) return fail(spec.name, "must be > 0" + got), 1.0;
+      // Masses, time steps, radii and sizes are divided by: a subnormal such as 1e-320 is > 0,
+      // yet its reciprocal is infinite.
+      if (!std::isfinite(1 / value))
+        return fail(spec.name, "too small: 1/" + std::string(spec.name) + " is not finite (at least about 5.6e-309)" + got),
+               1.0;
       break;
     case Kind::NonNegative:
       if (value < 0) return fail(spec.name, "must be >= 0" + got), 1.0;

@@ -209,6 +209,55 @@ int lineOf(const std::string& text, size_t offset) {
   return line;
 }
 
+bool findCrowdedElement(const std::string& text, CrowdedElement& found) {
+  const size_t size = text.size();
+  auto skipSpace = [&](size_t q) {
+    while (q < size && isSpace(text[q])) ++q;
+    return q;
+  };
+  auto skipPast = [&](size_t from, const char* end) {  // npos when `end` never comes
+    const size_t q = text.find(end, from);
+    return q == std::string::npos ? q : q + std::char_traits<char>::length(end);
+  };
+  size_t p = 0;
+  while ((p = text.find('<', p)) != std::string::npos) {
+    const size_t tag = p;
+    if (text.compare(p, 4, "<!--") == 0) p = skipPast(p + 4, "-->");
+    else if (text.compare(p, 9, "<![CDATA[") == 0) p = skipPast(p + 9, "]]>");
+    else if (text.compare(p, 2, "<?") == 0) p = skipPast(p + 2, "?>");
+    else if (p + 1 < size && nameStart(text[p + 1])) {
+      size_t q = p + 1;
+      while (q < size && nameChar(text[q])) ++q;
+      long count = 0;
+      // name = "value" pairs up to the tag's end; anything else ends the count (the parser reports it).
+      for (;;) {
+        q = skipSpace(q);
+        if (q >= size || !nameStart(text[q])) break;
+        while (q < size && nameChar(text[q])) ++q;
+        q = skipSpace(q);
+        if (q >= size || text[q] != '=') break;
+        q = skipSpace(q + 1);
+        if (q >= size || (text[q] != '"' && text[q] != '\'')) break;
+        const size_t close = text.find(text[q], q + 1);
+        if (close == std::string::npos) break;
+        ++count;
+        q = close + 1;
+      }
+      if (count > kMaxAttributes) {
+        size_t n = tag + 1;
+        while (n < size && nameChar(text[n])) ++n;
+        found = {lineOf(text, tag), text.substr(tag + 1, n - tag - 1), count};
+        return true;
+      }
+      p = q;
+    } else {
+      p = tag + 1;  // "</name>", "<!DOCTYPE ...>", or a stray '<': nothing to count
+    }
+    if (p == std::string::npos) return false;  // the file ends in a comment: the parser says so
+  }
+  return false;
+}
+
 XmlProblem explainXmlError(const std::string& text, int errorId, int errorLine) {
   XmlProblem problem;
   if (errorId != tinyxml2::XML_ELEMENT_DEPTH_EXCEEDED && Scanner(text).scan(problem)) return problem;

@@ -58,6 +58,7 @@ Status SvgFrames::frame(const Picture& picture, long number) { return writeSvg(s
 
 Status FrameOutputs::start(const SceneFile& file, const State& initial) {
   sequence_.start(file, initial);
+  written_ = 0;
   if (sinks_.empty()) return Status::ok();
   const Picture picture = sequence_.initialPicture(file, initial);
   for (auto& sink : sinks_)
@@ -68,12 +69,15 @@ Status FrameOutputs::start(const SceneFile& file, const State& initial) {
 Status FrameOutputs::afterStep(const SceneFile& file, const State& state) {
   if (!sequence_.advance(state) || sinks_.empty()) return Status::ok();
   const long number = sequence_.frameNumber();
-  if (std::none_of(sinks_.begin(), sinks_.end(), [&](const auto& sink) { return sink->wants(number); }))
+  if (std::none_of(sinks_.begin(), sinks_.end(), [&](const auto& sink) { return sink->wants(number); })) {
+    written_ = number;
     return Status::ok();
+  }
   const Picture picture = sequence_.picture(file, state);
   for (auto& sink : sinks_)
     if (sink->wants(number))
       if (Status s = sink->frame(picture, number); !s) return s;
+  written_ = number;
   return Status::ok();
 }
 

@@ -14,7 +14,7 @@ namespace {
 /// Appends numbers and colours without iostreams (an SVG per step adds up for long runs).
 class SvgText {
  public:
-  explicit SvgText(int height) : height_(height) {}
+  SvgText(int width, int height) : width_(width), height_(height) {}
   SvgText& operator<<(const char* s) {
     out_ += s;
     return *this;
@@ -23,10 +23,29 @@ class SvgText {
     out_ += s;
     return *this;
   }
+  /// Pixels this far from the picture lie millions of pictures away. A particle at px="1e50", or
+  /// any particle under a viewport of size 1e-300, is up to 1e308 pixels out: "%.2f" would write
+  /// 300 digits, and viewers, computing in single precision, could not draw it anyway.
+  static constexpr double kFarPixels = 1e9;
+
+  /// `p` (pixels), moved towards the picture's centre onto the square kFarPixels around it when it
+  /// lies beyond: a segment from a point in view towards it keeps its direction (to within the
+  /// picture's size / kFarPixels radians) and still leaves the picture.
+  Vec2 near(Vec2 p) const {
+    const Vec2 centre(width_ / 2.0, height_ / 2.0);
+    const double far = (p - centre).lpNorm<Eigen::Infinity>();
+    if (far > kFarPixels && std::isfinite(far)) p = centre + (p - centre) * (kFarPixels / far);
+    return p;
+  }
+
   /// A coordinate or length with two decimals (a hundredth of a pixel), trailing zeros dropped.
+  /// Points come through near(); lengths (radii, stroke widths) are cut to twice kFarPixels, so
+  /// that every number fits the buffer ("-2000000000.00": 14 characters): snprintf returns what
+  /// it would have written, not what it wrote.
   SvgText& num(double v) {
     if (!std::isfinite(v)) v = 0;
-    char buf[48];
+    v = std::clamp(v, -2 * kFarPixels, 2 * kFarPixels);
+    char buf[32];
     int n = std::snprintf(buf, sizeof buf, "%.2f", v);
     while (n > 0 && buf[n - 1] == '0') --n;
     if (n > 0 && buf[n - 1] == '.') --n;
@@ -35,7 +54,8 @@ class SvgText {
     return *this;
   }
   /// A point in pixel coordinates (y up) as SVG's "x,y" (y down).
-  SvgText& point(const Vec2& p) {
+  SvgText& point(const Vec2& pixel) {
+    const Vec2 p = near(pixel);
     num(p.x());
     out_ += ',';
     return num(height_ - p.y());
@@ -62,7 +82,7 @@ class SvgText {
   std::string take() { return std::move(out_); }
 
  private:
-  int height_;
+  int width_, height_;
   std::string out_;
 };
 
@@ -71,7 +91,7 @@ class SvgText {
 std::string svgDocument(const Picture& pic) {
   const View& view = pic.view;
   const double scale = view.scale();
-  SvgText s(view.height);
+  SvgText s(view.width, view.height);
   s << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
     << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << std::to_string(view.width) << "\" height=\""
     << std::to_string(view.height) << "\" viewBox=\"0 0 " << std::to_string(view.width) << " "
@@ -94,7 +114,7 @@ std::string svgDocument(const Picture& pic) {
 
   s << "<g id=\"edges\" stroke-linecap=\"round\">\n";
   for (const CapsuleShape& e : pic.edges) {
-    const Vec2 a = view.toPixel(e.a), b = view.toPixel(e.b);
+    const Vec2 a = s.near(view.toPixel(e.a)), b = s.near(view.toPixel(e.b));
     s << "<line x1=\"";
     s.x(a.x()) << "\" y1=\"";
     s.y(a.y()) << "\" x2=\"";
@@ -121,7 +141,7 @@ std::string svgDocument(const Picture& pic) {
 
   s << "<g id=\"particles\">\n";
   for (const DiskShape& p : pic.particles) {
-    const Vec2 c = view.toPixel(p.center);
+    const Vec2 c = s.near(view.toPixel(p.center));
     s << "<circle cx=\"";
     s.x(c.x()) << "\" cy=\"";
     s.y(c.y()) << "\" r=\"";

@@ -82,6 +82,93 @@ TEST_F(CliOutputs, AnOutputThatIsTheSceneIsRefused) {
   expectRefused(with({"-g", "1", "--png-dir", path("png")}), scene, "the frame file");
 }
 
+// --stats is an output like the others: never an input, and never a file another output writes
+// (-o's or --movie's final or partial name, a frame). Each refusal happens before the run: no
+// output is created, and files that were there stay as they were.
+TEST_F(CliOutputs, StatsIsNeitherAnInputNorAnotherOutput) {
+  const std::string scene = meeting("scene.xml", "continuous-time");
+  const std::vector<std::string> run = {"-s", scene, "-d", "0", "-q"};
+  auto with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = run;
+    args.insert(args.end(), extra.begin(), extra.end());
+    return args;
+  };
+  expectRefused(with({"--stats", scene}), scene, "--stats \"" + scene + "\" is the same file");
+
+  // Refused with both names in the message; `made` must not exist afterwards.
+  auto expectClash = [&](const std::vector<std::string>& extra, const std::vector<std::string>& fragments,
+                         const std::vector<std::string>& made) {
+    const Outcome o = runFosssim(with(extra));
+    EXPECT_TRUE(exitedWith(o, 1)) << o;
+    for (const std::string& f : fragments) EXPECT_TRUE(contains(o.err, f)) << "missing \"" << f << "\"\n" << o;
+    EXPECT_TRUE(contains(o.err, "give each output its own name")) << o;
+    for (const std::string& m : made) EXPECT_FALSE(fs::exists(m)) << m;
+  };
+  const std::string o1 = path("o1.bin"), o1Partial = path("o1.partial.bin");
+  expectClash({"-o", o1, "--stats", o1}, {"--stats \"" + o1 + "\" and -o \"" + o1 + "\" are the same file"},
+              {o1, o1Partial});
+  // The trajectory is written under its partial name: a CSV there would be renamed to "o1.bin".
+  expectClash({"-o", o1, "--stats", o1Partial}, {"--stats \"" + o1Partial + "\" and the partial file \"" + o1Partial + "\" of -o"},
+              {o1, o1Partial});
+  // Another spelling of the same name, and a hard link to an existing file.
+  expectClash({"-o", o1, "--stats", (dir_ / "." / "o1.bin").string()}, {"are the same file"}, {o1, o1Partial});
+  write("old.bin", "an older trajectory");
+  fs::create_hard_link(path("old.bin"), path("old-link.csv"));
+  expectClash({"-o", path("old.bin"), "--stats", path("old-link.csv")}, {"are the same file"}, {path("old.partial.bin")});
+  EXPECT_EQ(slurp(path("old.bin")), "an older trajectory");
+  // -o through a symbolic link is written next to the file it points at, under that file's
+  // partial name.
+  write("real.bin", "the link's target");
+  fs::create_symlink(path("real.bin"), path("link.bin"));
+  expectClash({"-o", path("link.bin"), "--stats", path("real.partial.bin")}, {"the partial file"},
+              {path("real.partial.bin")});
+  EXPECT_EQ(slurp(path("real.bin")), "the link's target");
+  // A frame of -m.
+  const std::string frame = path("svg/frame00000000000000000002.svg");
+  expectClash({"-m", path("svg"), "--stats", frame}, {"--stats \"" + frame + "\" is a frame file that -m writes"},
+              {frame});
+  if (FOSSSIM_WITH_RENDER) {
+    const std::string movie = path("base.mp4"), moviePartial = path("base.partial.mp4");
+    expectClash({"--movie", movie, "--stats", movie}, {"--stats \"" + movie + "\" and --movie \"" + movie + "\""},
+                {movie, moviePartial});
+    expectClash({"--movie", movie, "--stats", moviePartial}, {"the partial file \"" + moviePartial + "\" of --movie"},
+                {movie, moviePartial});
+    // -o and --movie, one's final name the other's partial one.
+    expectClash({"--movie", movie, "-o", moviePartial}, {"are the same file"}, {movie, moviePartial});
+  }
+  // Devices are written directly and destroy nothing: both outputs may go to /dev/null.
+  const Outcome discard = runFosssim(with({"-o", "/dev/null", "--stats", "/dev/null"}));
+  EXPECT_TRUE(exitedWith(discard, 0)) << discard;
+  // Distinct names: both written in full.
+  const Outcome both = runFosssim(with({"-o", o1, "--stats", path("o1.csv")}));
+  ASSERT_TRUE(exitedWith(both, 0)) << both;
+  EXPECT_EQ(wholeFiniteRecords(o1, 2, kContinuousTime), 1 + 2 * 200);
+  EXPECT_EQ(slurp(path("o1.csv")).rfind("step,time,", 0), 0u);
+}
+
+// A run whose pictures fail says only what was written: frames up to the last one written, and
+// no movie when ffmpeg could not create its file.
+TEST_F(CliOutputs, TheSummaryCountsOnlyWhatWasWritten) {
+  const std::string scene = meeting("scene.xml", "continuous-time", 0.05);  // 5 steps, 5 frames
+  // Frame 3's name is taken by a folder: frames 1 and 2 are written, then the run stops.
+  fs::create_directories(path("svg/frame00000000000000000003.svg"));
+  const Outcome third = runFosssim({"-s", scene, "-d", "0", "-q", "-m", path("svg")});
+  EXPECT_TRUE(exitedWith(third, 1)) << third;
+  EXPECT_TRUE(contains(third.err, "FOSSSim: frames 1 to 2: SVG in \"" + path("svg") + "\"\n")) << third;
+  EXPECT_TRUE(fs::exists(path("svg/frame00000000000000000002.svg")));
+  fs::create_directories(path("first/frame00000000000000000001.svg"));
+  const Outcome first = runFosssim({"-s", scene, "-d", "0", "-q", "-m", path("first")});
+  EXPECT_TRUE(exitedWith(first, 1)) << first;
+  EXPECT_TRUE(contains(first.err, "FOSSSim: no frame was written (SVG in \"" + path("first") + "\")\n")) << first;
+  EXPECT_FALSE(contains(first.err, "frames 1 to")) << first;
+  if (!FOSSSIM_WITH_RENDER) GTEST_SKIP() << "this build has no renderer (--movie)";
+  // /proc takes no new files, not even root's: ffmpeg starts but makes no movie.
+  const Outcome movie = runFosssim({"-s", scene, "-d", "0", "-q", "--movie", "/proc/fosssim-test.mp4"});
+  EXPECT_TRUE(exitedWith(movie, 1)) << movie;
+  EXPECT_TRUE(contains(movie.err, "no movie was made (\"/proc/fosssim-test.partial.mp4\" does not exist)")) << movie;
+  EXPECT_FALSE(contains(movie.err, "the movie is in")) << movie;
+}
+
 TEST_F(CliOutputs, TheFinalNameOnlyForACompletedRun) {
   const std::string scene = meeting("scene.xml", "continuous-time");
   // Completed: the final name, no partial file left.

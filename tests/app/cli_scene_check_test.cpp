@@ -63,7 +63,7 @@ TEST(CliSceneCheck, CheckRunsNothingAndARunNamesTheForceThatWentNonFinite) {
   const Outcome ran = runFosssim({"-s", scene.path, "-d", "0", "-q"});
   EXPECT_TRUE(exitedWith(ran, 1)) << ran;
   EXPECT_TRUE(contains(ran.err, "step 1 (t = 0.01): particle 0 has a non-finite")) << ran;
-  EXPECT_TRUE(contains(ran.err, "the force 'gravitationalforce' #0 on it was already non-finite at the step's start")) << ran;
+  EXPECT_TRUE(contains(ran.err, "the force 'gravitationalforce' #1 on it was already non-finite at the step's start")) << ran;
 }
 
 TEST(CliSceneCheck, CheckReportsEveryErrorInLineOrderWithTheWarningFirst) {

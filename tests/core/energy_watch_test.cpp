@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cmath>
 
 namespace fosssim {
@@ -125,6 +126,47 @@ TEST(EnergyWatch, SpringPairInsideAStiffPenaltyLayerIsCaught) {
       EXPECT_TRUE(contains(m, "explicit Euler gains energy on every oscillation")) << m;
     }
   }
+}
+
+/// The "'springforce' #N" a message names, or "" when it names none.
+std::string namedSpring(const std::string& message) {
+  const size_t at = message.find("'springforce' #");
+  if (at == std::string::npos) return "";
+  size_t end = at + 15;
+  while (end < message.size() && std::isdigit(static_cast<unsigned char>(message[end]))) ++end;
+  return message.substr(at, end - at);
+}
+
+// The energy watch and the step's non-finite check name forces alike. Two springs, each on its
+// own pair of particles: the first at rest, the second stiff and stretched, which explicit Euler
+// blows up. Watched, the run stops on the energy; unwatched, it runs on until the state is
+// non-finite. Both messages blame the second <springforce> of the scene, counted from 1.
+TEST(EnergyWatch, NamesTheForceAsTheNonFiniteCheckDoes) {
+  auto twoSprings = [] {
+    TestScene s;
+    addBody(s, 1, Vec2(0, 0), Vec2::Zero());
+    addBody(s, 1, Vec2(1, 0), Vec2::Zero());
+    addBody(s, 1, Vec2(0, 5), Vec2::Zero());
+    addBody(s, 1, Vec2(1.5, 5), Vec2::Zero());
+    s.scene.forces.push_back(std::make_unique<SpringForce>(0, 1, 1.0, 1.0, 0.0));
+    s.scene.forces.push_back(std::make_unique<SpringForce>(2, 3, 1e6, 1.0, 0.0));
+    s.scene.integrator = "explicit-euler";
+    s.scene.dt = 0.01;
+    return s;
+  };
+  TestScene watched = twoSprings();
+  const RunEnd energy = runFor(watched, 2000);
+  ASSERT_FALSE(energy.status.isOk());
+  EXPECT_TRUE(contains(energy.status.message(), "energy blow-up")) << energy.status.message();
+
+  TestScene unwatched = twoSprings();
+  const RunEnd nonFinite = runFor(unwatched, 2000, /*watch=*/false);
+  ASSERT_FALSE(nonFinite.status.isOk());
+  EXPECT_TRUE(contains(nonFinite.status.message(), "non-finite")) << nonFinite.status.message();
+  EXPECT_GT(nonFinite.steps, energy.steps);
+
+  EXPECT_EQ(namedSpring(energy.status.message()), "'springforce' #2") << energy.status.message();
+  EXPECT_EQ(namedSpring(nonFinite.status.message()), "'springforce' #2") << nonFinite.status.message();
 }
 
 // Honest scenes: energy kept up to the integrator's error. Their growth stays far below the mark

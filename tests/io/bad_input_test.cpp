@@ -122,6 +122,14 @@ TEST(BadInput, ValuesOutOfRangeAreRejected) {
       {"particle", "m", "  <particle m=\"0\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>", 4, "> 0"},
       {"particle", "m", "  <particle m=\"-1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>", 4, "> 0"},
       {"particle", "m", "  <particle m=\"1e-400\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>", 4, "> 0"},
+      // Subnormal: > 0, but 1/m is infinite.
+      {"particle", "m", "  <particle m=\"1e-320\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>", 4,
+       "1/m is not finite"},
+      {"particle", "radius", "radius=\"4e-309\"/>", 4, "1/radius is not finite"},
+      {"integrator", "dt", "  <integrator type=\"explicit-euler\" dt=\"1e-310\"/>", 3, "1/dt is not finite"},
+      {"edge", "radius", "  <edge i=\"0\" j=\"1\" radius=\"1e-315\"/>", 6, "1/radius is not finite"},
+      {"viewport", "size", "  <viewport cx=\"0\" cy=\"0\" size=\"5e-324\"/>", 0, "1/size is not finite"},
+      {"maxsimfreq", "max", "  <maxsimfreq max=\"2e-320\"/>", 0, "1/max is not finite"},
       {"particle", "radius", "radius=\"0\"/>", 4, "> 0"},
       {"particle", "radius", "radius=\"-0.1\"/>", 4, "> 0"},
       {"particle", "fixed", "  <particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"2\"/>", 4, "0 or 1"},
@@ -155,6 +163,8 @@ TEST(BadInput, ValuesOutOfRangeAreRejected) {
     const std::string scene = c.line ? replaced(c.line, text) : extra(text);
     expectError(scene, {located(c.line ? c.line : kExtraLine, c.element, c.attribute), c.why});
   }
+  // Small but normal: 1/m = 1e308 is finite.
+  EXPECT_EQ(loadError(replaced(4, "  <particle m=\"1e-308\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>")), "");
 }
 
 TEST(BadInput, ColourChannelsOutsideZeroOneAreRejected) {
@@ -177,6 +187,38 @@ TEST(BadInput, IndicesMustBeNonNegativeIntegers) {
     expectError(extra("  <springforce edge=" + v + " k=\"1\" l0=\"1\"/>"), {located(kExtraLine, "springforce", "edge")});
     expectError(extra("  <particlecolor i=" + v + " r=\"0\" g=\"0\" b=\"0\"/>"), {located(kExtraLine, "particlecolor", "i")});
     expectError(extra("  <vortexforce i=\"0\" j=" + v + " kbs=\"1\" kvc=\"1\"/>"), {located(kExtraLine, "vortexforce", "j")});
+  }
+}
+
+// A value that is no number is one error, and nothing follows from it: the failed read's
+// placeholder must not trip the element's own checks (an edge's i = j, a fixed particle with a
+// velocity) or the assembly's (an index naming nothing). The base scene has particles 0 and 1
+// and edge 0, so a placeholder index of 1 would do both.
+TEST(BadInput, AValueThatIsNoNumberIsOneMessage) {
+  const std::vector<RangeCase> cases = {
+      {"edge", "i", "  <edge i=\"O\" j=\"1\"/>", 6, ""},
+      {"edge", "j", "  <edge i=\"1\" j=\"I\"/>", 6, ""},
+      {"gravitationalforce", "i", "  <gravitationalforce i=\"O\" j=\"1\" G=\"1\"/>", 0, ""},
+      {"vortexforce", "j", "  <vortexforce i=\"1\" j=\"one\" kbs=\"1\" kvc=\"1\"/>", 0, ""},
+      {"springforce", "edge", "  <springforce edge=\"first\" k=\"1\" l0=\"1\"/>", 0, ""},
+      {"edgecolor", "i", "  <edgecolor i=\"O\" r=\"0\" g=\"0\" b=\"0\"/>", 0, ""},
+      {"particlecolor", "i", "  <particlecolor i=\"x\" r=\"0\" g=\"0\" b=\"0\"/>", 0, ""},
+      {"particlepath", "i", "  <particlepath i=\"x\" duration=\"1\" r=\"0\" g=\"0\" b=\"0\"/>", 0, ""},
+      {"particle", "fixed", "  <particle m=\"1\" px=\"0\" py=\"0\" vx=\"1\" vy=\"0\" fixed=\"yes\"/>", 4, ""},
+  };
+  for (const RangeCase& c : cases) {
+    SCOPED_TRACE(c.text);
+    SceneFile file;
+    const Status s = parseScene(c.line ? replaced(c.line, c.text) : extra(c.text), kFile, file);
+    ASSERT_FALSE(s.isOk());
+    EXPECT_EQ(file.errorCount, 1) << s.message();
+    EXPECT_EQ(file.warningCount, 0) << s.message();
+    EXPECT_EQ(file.messages.size(), 1u) << s.message();
+    if (file.messages.empty()) continue;
+    EXPECT_EQ(file.messages[0].line, c.line ? c.line : kExtraLine);
+    EXPECT_EQ(file.messages[0].text.rfind(located(c.line ? c.line : kExtraLine, c.element, c.attribute) +
+                                          ": expected a number", 0), 0u)
+        << file.messages[0].text;
   }
 }
 

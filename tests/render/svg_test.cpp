@@ -7,6 +7,11 @@
 
 #include <tinyxml2.h>
 
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <sstream>
 #include <vector>
 
 namespace fosssim::render {
@@ -113,6 +118,98 @@ TEST(Svg, ShapesHaveTheScenesGeometryAndColours) {
   ASSERT_NE(labels[0]->FirstChildElement("title"), nullptr);
   EXPECT_STREQ(labels[0]->FirstChildElement("title")->GetText(), "t = 0.00");
   EXPECT_EQ(labels[0]->Attribute("d")[0], 'M');
+}
+
+/// The SVG of `sceneText`'s first frame (100 x 80 pixels), written to a file and read back.
+std::string svgFileOf(const char* sceneText) {
+  const SceneFile file = parsed(sceneText);
+  PathTrails trails(file.look.paths, file.scene.dt);
+  trails.record(file.initial);
+  View view;
+  view.width = 100;
+  view.height = 80;
+  view.camera = initialCamera(file.look, file.initial, 100, 80);
+  TempDir tmp;
+  EXPECT_TRUE(writeSvg(tmp / "far.svg", makePicture(file, file.initial, trails, view)).isOk());
+  std::ifstream in(tmp / "far.svg", std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+/// Every number of every geometric attribute, read as SVG numbers are written ("x,y" pairs, path
+/// commands M and L). Fails the test for text that is no number.
+std::vector<double> geometry(const tinyxml2::XMLElement* root) {
+  std::vector<double> numbers;
+  std::vector<const tinyxml2::XMLElement*> todo = {root};
+  while (!todo.empty()) {
+    const tinyxml2::XMLElement* e = todo.back();
+    todo.pop_back();
+    for (auto* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) todo.push_back(c);
+    for (const char* name : {"x", "y", "width", "height", "x1", "y1", "x2", "y2", "cx", "cy", "r", "stroke-width",
+                             "points", "d"}) {
+      const char* value = e->Attribute(name);
+      if (!value || (std::string(e->Name()) == "svg")) continue;
+      std::string words(value);
+      for (char& ch : words)
+        if (ch == ',' || ch == 'M' || ch == 'L') ch = ' ';
+      std::istringstream in(words);
+      for (std::string word; in >> word;) {
+        char* end = nullptr;
+        numbers.push_back(std::strtod(word.c_str(), &end));
+        EXPECT_EQ(*end, '\0') << e->Name() << " " << name << ": \"" << word << "\" is no number";
+      }
+    }
+  }
+  return numbers;
+}
+
+// A particle 1e50 m out, or a viewport of size 1e-300, puts pixels near 1e308 away: every number
+// is still short text (it was formatted into a 48-byte buffer, whose unwritten rest was read),
+// finite, and far off the picture; an edge towards the far particle keeps its direction.
+TEST(Svg, PointsFarOutsideThePictureAreShortFiniteNumbers) {
+  const char* farParticle = R"(<scene>
+  <duration time="0.1"/>
+  <integrator type="explicit-euler" dt="0.01"/>
+  <viewport cx="0" cy="0" size="1"/>
+  <particle m="1" px="0" py="0" vx="0" vy="0" fixed="1" radius="0.1"/>
+  <particle m="1" px="1e50" py="1e49" vx="0" vy="0" fixed="1" radius="1e45"/>
+  <edge i="0" j="1" radius="0.05"/>
+  <particlepath i="1" duration="0.05" r="1" g="1" b="0"/>
+</scene>)";
+  const char* tinyViewport = R"(<scene>
+  <duration time="0.1"/>
+  <integrator type="explicit-euler" dt="0.01"/>
+  <viewport cx="0" cy="0" size="1e-300"/>
+  <particle m="1" px="1" py="0.5" vx="0" vy="0" fixed="1" radius="0.1"/>
+  <particle m="1" px="-1" py="-3" vx="0" vy="0" fixed="1" radius="1e-301"/>
+  <edge i="0" j="1" radius="0.05"/>
+  <halfplane px="0" py="-1" nx="1" ny="1"/>
+  <particlepath i="0" duration="0.05" r="1" g="1" b="0"/>
+</scene>)";
+  for (const char* scene : {farParticle, tinyViewport}) {
+    SCOPED_TRACE(scene);
+    const std::string text = svgFileOf(scene);
+    EXPECT_EQ(text.find('\0'), std::string::npos) << "a NUL byte in the SVG";
+    tinyxml2::XMLDocument doc;
+    ASSERT_EQ(doc.Parse(text.c_str(), text.size()), tinyxml2::XML_SUCCESS) << text;
+    const std::vector<double> numbers = geometry(doc.RootElement());
+    EXPECT_GT(numbers.size(), 10u);
+    for (double v : numbers) {
+      EXPECT_TRUE(std::isfinite(v)) << v;
+      EXPECT_LE(std::fabs(v), 1e10) << v;  // single precision draws it, and it is off the picture
+    }
+  }
+  // The edge from the picture's centre (50, 40) towards (1e50, 1e49): slope 0.1 up, so -0.1 in
+  // SVG's y-down pixels, and it ends beyond the picture's right side.
+  tinyxml2::XMLDocument doc;
+  ASSERT_EQ(doc.Parse(svgFileOf(farParticle).c_str()), tinyxml2::XML_SUCCESS);
+  const auto edges = children(group(doc.RootElement(), "edges"), "line");
+  ASSERT_EQ(edges.size(), 1u);
+  const double x1 = edges[0]->DoubleAttribute("x1"), y1 = edges[0]->DoubleAttribute("y1");
+  const double x2 = edges[0]->DoubleAttribute("x2"), y2 = edges[0]->DoubleAttribute("y2");
+  EXPECT_DOUBLE_EQ(x1, 50);
+  EXPECT_DOUBLE_EQ(y1, 40);
+  EXPECT_GT(x2, 1e6);
+  EXPECT_NEAR((y2 - y1) / (x2 - x1), -0.1, 1e-6);
 }
 
 TEST(Svg, FrameNamesFollowTheReference) {

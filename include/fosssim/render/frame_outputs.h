@@ -89,12 +89,14 @@ class FrameOutputs {
   Status afterStep(const SceneFile& file, const State& state);
   /// Finishes every sink; the first failure is returned.
   Status finish();
-  /// The frames made so far (the number of the last one).
-  long frames() const { return sequence_.frameNumber(); }
+  /// The frames every sink has written, or left out by choice, so far: 1 to frames(). A frame a
+  /// sink failed to write is not counted, nor are those after it.
+  long frames() const { return written_; }
 
  private:
   FrameSequence sequence_;
   std::vector<std::unique_ptr<PictureSink>> sinks_;
+  long written_ = 0;
 };
 
 /// Creates `dir` and its parents if needed; `what` names what the folder is for in the message
