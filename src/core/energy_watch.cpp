@@ -82,13 +82,13 @@ void EnergyWatch::potentials(const Scene& scene, const VecX& x, const VecX& v, F
   for (size_t f = 0; f < scene.forces.size(); ++f) out[f] = scene.forces[f]->energyWith(scene, x, v, forces);
 }
 
-void EnergyWatch::begin(const Scene& scene, const State& start, ForceContext& forces) {
+Status EnergyWatch::begin(const Scene& scene, const State& start, ForceContext& forces) {
   started_ = true;
   active_ = wanted_ && closedScene(scene, start);
   largestGrowth_ = 0;
   released_ = 0;
   tracked_.clear();
-  if (!active_) return;
+  if (!active_) return Status::ok();
   std::vector<double> potential0;
   potentials(scene, start.x, start.v, forces, potential0);
   const double kinetic0 = kineticEnergy(scene, start.v);
@@ -104,10 +104,32 @@ void EnergyWatch::begin(const Scene& scene, const State& start, ForceContext& fo
   baseScale_ = kinetic0 + stored + kRoundingShare * magnitude;
   driftPerStep_ = driftPerStep(scene, start);
   steps_ = 0;
+  if (std::isfinite(energy0_) && std::isfinite(baseScale_)) return Status::ok();
+  active_ = false;  // no baseline: a caller that goes on anyway is not checked against garbage
+  std::ostringstream msg;
+  msg << "the scene's energy at the start is not finite: ";
+  for (int i = 0; i < scene.numParticles(); ++i) {
+    const double kinetic = 0.5 * scene.massOf(i) * at(start.v, i).squaredNorm();
+    if (std::isfinite(kinetic)) continue;
+    msg << "particle " << i << "'s kinetic energy m |v|^2 / 2 overflows (mass " << number(scene.massOf(i))
+        << ", speed " << number(std::hypot(start.v[2 * i], start.v[2 * i + 1]))
+        << "); velocities and masses this large leave no room for a step's arithmetic: choose smaller units";
+    return Status::error(msg.str());
+  }
+  for (size_t f = 0; f < potential0.size(); ++f) {
+    if (std::isfinite(potential0[f])) continue;
+    msg << "the potential of " << forceOrdinal(scene, static_cast<int>(f)) << " is " << number(potential0[f])
+        << "; its parameters or the positions are too large to represent its energy: choose smaller units";
+    return Status::error(msg.str());
+  }
+  msg << "the sum of the kinetic and potential energies overflows (" << number(energy0_)
+      << "); choose smaller units";
+  return Status::error(msg.str());
 }
 
 Status EnergyWatch::check(const Scene& scene, const State& start, const State& end, ForceContext& forces) {
-  if (!started_ || start.step == 0) begin(scene, start, forces);
+  if (!started_ || start.step == 0)
+    if (Status s = begin(scene, start, forces); !s) return s;
   if (!active_) return Status::ok();
   // Spring-like potentials are left out from here on (see the header): the gain below is a
   // lower bound of the true one, so it never flags what the full sum would not.
@@ -121,9 +143,10 @@ Status EnergyWatch::check(const Scene& scene, const State& start, const State& e
   ++steps_;
   const double gain = energy - energy0_, scale = baseScale_ + released_ + steps_ * driftPerStep_;
   if (scale > 0) largestGrowth_ = std::max(largestGrowth_, gain / scale);
-  // Written so that a NaN or infinite gain fails too (an overflowed kinetic energy). A scene
-  // with no energy at all (nothing moves, no force) has scale 0 and stays at gain 0.
-  if (gain <= kBlowUpGrowth * scale) return Status::ok();
+  // Written so that a NaN or infinite gain fails too (an overflowed kinetic energy), whatever
+  // the scale (a penalty k of 1e308 overflows it, and inf <= inf held). A scene with no energy
+  // at all (nothing moves, no force) has scale 0 and stays at gain 0.
+  if (std::isfinite(gain) && gain <= kBlowUpGrowth * scale) return Status::ok();
   return Status::error(explain(scene, start, end, forces, gain, scale));
 }
 

@@ -71,7 +71,9 @@ class EnergyWatch {
   explicit EnergyWatch(bool enabled = true) : wanted_(enabled) {}
 
   /// Checks the end state of one step, `start` being the state it began from. Takes its
-  /// baseline at the first step of a run (a start state at step 0, or the first call).
+  /// baseline at the first step of a run (a start state at step 0, or the first call), and fails
+  /// there, naming the particle or force, if the start's energy is not finite (a speed of 1e160
+  /// m/s: m |v|^2 / 2 overflows, and without a baseline nothing here could see the run go wrong).
   /// Fails with a message naming the fastest particle, the force whose energy changed most in
   /// this step and what to change; the caller adds step and time.
   /// `forces`: the caller's context for the forces' energies (a Simulator passes its own).
@@ -87,7 +89,8 @@ class EnergyWatch {
   double largestGrowth() const { return largestGrowth_; }
 
  private:
-  void begin(const Scene& scene, const State& start, ForceContext& forces);
+  /// Takes the baseline; fails when the start's energy is not finite (see check).
+  Status begin(const Scene& scene, const State& start, ForceContext& forces);
   /// Per-force potentials (0 for forces without one) at x, v.
   void potentials(const Scene& scene, const VecX& x, const VecX& v, ForceContext& forces, std::vector<double>& out) const;
   std::string explain(const Scene& scene, const State& start, const State& end, ForceContext& forces, double gain,

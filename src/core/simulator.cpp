@@ -106,8 +106,12 @@ bool sameSettings(const CollisionSettings& a, const CollisionSettings& b) {
 Status Simulator::step(const Scene& scene, State& state, StepObserver* observer) {
   const double dt = dt_;
   const long stepNumber = state.step + 1;
+  // Every failure names the step by its interval, whichever phase failed (the verify phase has
+  // moved state.time to the end by then; a failure in the prediction has not).
+  const double t0 = state.time;
   auto failure = [&](const std::string& what) {
-    return Status::error("step " + std::to_string(stepNumber) + " (t = " + shortNumber(state.time) + "): " + what);
+    return Status::error("step " + std::to_string(stepNumber) + " (t = " + shortNumber(t0) + " to " +
+                         shortNumber(t0 + dt) + "): " + what);
   };
   if (!same(scene.dt, dt_) || scene.integrator != integratorKeyword_ || !sameSettings(scene.collision, settings_))
     return failure("the scene's settings (integrator, dt or collision) changed since the simulator was created; "
@@ -141,6 +145,11 @@ Status Simulator::step(const Scene& scene, State& state, StepObserver* observer)
     if (!s) return failure(s.message());
   }
   const bool predictionFinite = state.x.allFinite() && state.v.allFinite();  // to blame forces or response
+  // A non-finite prediction is the forces' doing: said here, naming the particle and force,
+  // before the collision handler tries to test its pairs and reports an overflow instead.
+  if (!predictionFinite)
+    if (Status s = checkFinite(state, forces_.threads()); !s)
+      return failure(s.message() + blameNonFinite(scene, start_, state, false, collision_->keyword));
 
   // 2-3. Detect and respond: the handler turns the prediction into a collision-free end state.
   log_.clear();

@@ -53,17 +53,23 @@ TEST(CliSceneCheck, CheckLoadsAndSummarisesWithoutRunning) {
 }
 
 // Two particles in one place under mutual gravitation: the force is infinite at the first step.
-// --check does not run (exit 0); a run stops at step 1 and names the force responsible.
+// --check does not run (exit 0); a run stops at step 1 and names the force responsible, with any
+// collision handling (continuous-time and hybrid used to test the pair first and report an
+// overflow of its coordinates instead).
 TEST(CliSceneCheck, CheckRunsNothingAndARunNamesTheForceThatWentNonFinite) {
-  std::string text = kHead + "  <gravitationalforce i=\"0\" j=\"1\" G=\"1\"/>\n</scene>\n";
-  text.replace(text.find("px=\"1\""), 6, "px=\"0\"");
-  const TempScene scene(text);
-  const Outcome checked = runFosssim({"-s", scene.path, "--check"});
-  EXPECT_TRUE(exitedWith(checked, 0)) << checked;
-  const Outcome ran = runFosssim({"-s", scene.path, "-d", "0", "-q"});
-  EXPECT_TRUE(exitedWith(ran, 1)) << ran;
-  EXPECT_TRUE(contains(ran.err, "step 1 (t = 0.01): particle 0 has a non-finite")) << ran;
-  EXPECT_TRUE(contains(ran.err, "the force 'gravitationalforce' #1 on it was already non-finite at the step's start")) << ran;
+  for (const std::string collision : {"", "  <collision type=\"continuous-time\"/>\n", "  <collision type=\"hybrid\"/>\n"}) {
+    SCOPED_TRACE(collision);
+    std::string text = kHead + collision + "  <gravitationalforce i=\"0\" j=\"1\" G=\"1\"/>\n</scene>\n";
+    text.replace(text.find("px=\"1\""), 6, "px=\"0\"");
+    const TempScene scene(text);
+    const Outcome checked = runFosssim({"-s", scene.path, "--check"});
+    EXPECT_TRUE(exitedWith(checked, 0)) << checked;
+    const Outcome ran = runFosssim({"-s", scene.path, "-d", "0", "-q"});
+    EXPECT_TRUE(exitedWith(ran, 1)) << ran;
+    EXPECT_TRUE(contains(ran.err, "step 1 (t = 0 to 0.01): particle 0 has a non-finite")) << ran;
+    EXPECT_TRUE(contains(ran.err, "the force 'gravitationalforce' #1 on it was already non-finite at the step's start"))
+        << ran;
+  }
 }
 
 TEST(CliSceneCheck, CheckReportsEveryErrorInLineOrderWithTheWarningFirst) {

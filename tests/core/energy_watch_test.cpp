@@ -97,6 +97,34 @@ TEST(EnergyWatch, AbsurdlyStiffPenaltyContactStopsTheRun) {
     EXPECT_TRUE(contains(m, part)) << "missing \"" << part << "\" in: " << m;
 }
 
+// The largest stiffness a double holds: the penalty layer throws the ball off at about 6e304
+// m/s, whose kinetic energy overflows. The watch's own limit (1e3 times the energy scale)
+// overflowed too, and inf <= inf let the run go on with an infinite energy and exit 0.
+TEST(EnergyWatch, AStiffnessWhoseBlowUpOverflowsEverythingStillStopsTheRun) {
+  TestScene s = droppedBall("penalty", 1e308, 0.01);
+  s.state.x[1] = 0.05;  // resting 0.05 deep in the floor's layer from the start
+  const RunEnd end = runFor(s, 10);
+  ASSERT_FALSE(end.status.isOk());
+  EXPECT_EQ(end.steps, 0) << end.status.message();
+  EXPECT_TRUE(contains(end.status.message(), "energy blow-up")) << end.status.message();
+}
+
+// A scene whose energy cannot be represented at its start: a speed of 1e158 m/s (m |v|^2 / 2
+// overflows). Without a finite baseline nothing could tell a blow-up from the start; the ball
+// stopped dead on the floor instead of bouncing, exit 0. The first step fails, naming it.
+TEST(EnergyWatch, AStartWhoseEnergyOverflowsIsRefusedNamingTheParticle) {
+  for (const char* collision : {"continuous-time", "hybrid", "none"}) {
+    SCOPED_TRACE(collision);
+    TestScene s = droppedBall(collision, 100.0, 0.01);
+    s.state.v[1] = -1e158;
+    const RunEnd end = runFor(s, 10);
+    ASSERT_FALSE(end.status.isOk());
+    EXPECT_EQ(end.steps, 0);
+    for (const char* part : {"energy at the start is not finite", "particle 0", "speed 1e+158"})
+      EXPECT_TRUE(contains(end.status.message(), part)) << "missing \"" << part << "\" in: " << end.status.message();
+  }
+}
+
 // The tracker's second case: two disks tied by a spring inside a stiff penalty layer. Left alone
 // they reach thousands of m/s (the tracker saw 1,650); watched, they stop well before.
 TEST(EnergyWatch, SpringPairInsideAStiffPenaltyLayerIsCaught) {
