@@ -126,12 +126,15 @@ double diskTime(const Vec2& x, const Vec2& D, double R, const Polynomial* side) 
 
 // The scalar products of the capsule interior, as PEProducts in ccd.cpp (same letters):
 //   G = |e|^2 = a + 2b t + c t^2,  A = w.e = f + g t + h t^2,  W = |w|^2 = s + 2u t + d t^2
-// with e(t) = e0 + t De the edge vector and w(t) = w0 + t Dw particle 1 relative to endpoint 2.
+// with e(t) = e0 + t De the edge vector and w(t) = w0 + t Dw particle 1 relative to endpoint 2,
+// and the cross product C = w x e = x0 + x1 t + x2 t^2.
 struct Products {
-  double a, b, c, f, g, h, s, u, d;
+  double a, b, c, f, g, h, s, u, d, x0, x1, x2;
   Products(const Vec2& e0, const Vec2& de, const Vec2& w0, const Vec2& dw)
       : a(e0.dot(e0)), b(e0.dot(de)), c(de.dot(de)), f(w0.dot(e0)), g(w0.dot(de) + dw.dot(e0)),
-        h(dw.dot(de)), s(w0.dot(w0)), u(w0.dot(dw)), d(dw.dot(dw)) {}
+        h(dw.dot(de)), s(w0.dot(w0)), u(w0.dot(dw)), d(dw.dot(dw)), x0(cross(w0, e0)),
+        x1(cross(w0, de) + cross(dw, e0)), x2(cross(dw, de)) {}
+  static double cross(const Vec2& p, const Vec2& q) { return p.x() * q.y() - p.y() * q.x(); }
 };
 
 // Interior of the capsule: alpha in (0, 1), distance to the line below R, approaching it.
@@ -142,13 +145,16 @@ double interiorTime(const Products& k, const Polynomial& belowOne, double R) {
   setRelative(&aboveZero, {k.h, k.g, k.f});
   if (!solve.add(aboveZero)) return kNever;
   if (!solve.add(belowOne)) return kNever;  // (x1 - x3).(x2 - x3) > 0, built by the caller
-  // R^2 G - G W + A^2 (|e|^2 times the squared-distance margin to the line).
+  // R^2 G - G W + A^2 (|e|^2 times the squared-distance margin to the line), written with
+  // Lagrange's identity G W - A^2 = |e|^2 |w|^2 - (w.e)^2 = (w x e)^2 = C^2. Expanded as the
+  // reference does, G W and A^2 are each about |e|^2 |w|^2 and cancel down to C^2: R^2 G was lost
+  // in their rounding once R fell below some 1e-8 of w, and a disk of radius 1e-8 crossed the
+  // middle of an edge of length 2 unseen. C's coefficients are cross products, computed with no
+  // cancellation, so R^2 G - C^2 keeps R down to the underflow of R^2.
   const double r2 = R * R;
   Polynomial distance;
-  setRelative(&distance, {k.h * k.h - k.c * k.d, 2.0 * k.g * k.h - 2.0 * k.b * k.d - 2.0 * k.c * k.u,
-                          r2 * k.c - (k.a * k.d + 4.0 * k.b * k.u + k.c * k.s) + (k.g * k.g + 2.0 * k.f * k.h),
-                          2.0 * r2 * k.b - (2.0 * k.a * k.u + 2.0 * k.b * k.s) + 2.0 * k.f * k.g,
-                          r2 * k.a - k.a * k.s + k.f * k.f});
+  setRelative(&distance, {-k.x2 * k.x2, -2.0 * k.x1 * k.x2, r2 * k.c - (k.x1 * k.x1 + 2.0 * k.x0 * k.x2),
+                          2.0 * r2 * k.b - 2.0 * k.x0 * k.x1, r2 * k.a - k.x0 * k.x0});
   if (!solve.add(distance)) return kNever;
   // V.N = -G^2 (u + d t) + G A (g + 2h t) - A^2 (b + c t), products of the quadratics,
   // lowest power first (gg, ga, aa: the coefficients of G^2, G A, A^2).

@@ -164,6 +164,29 @@ TEST(ExactCcdScale, SmallFastDisksDoNotTunnel) {
   EXPECT_EQ(c.alpha, 0.0);
 }
 
+// A thin disk falling straight onto the middle of a long, thin edge: contact when its centre is
+// R = rv + re above the line, tau = (y0 - R) / speed, whatever the edge's length. The interior's
+// distance condition, expanded as |e|^2 |w|^2 - (w.e)^2, cancelled R^2 away once R fell below
+// some 1e-8 of the edge's half-length L: the disk crossed the edge unseen (L = 1, r = 1e-8), hit
+// late, or took a ghost impulse 100 radii away (R/L = 1e-11). Lagrange's form (w x e)^2 keeps it.
+TEST(ExactCcdScale, ThinDisksOntoTheMiddleOfLongEdges) {
+  for (double L : {1.0, 100.0, 1e4, 1e6}) {
+    for (double r : {1e-3, 1e-6, 1e-8, 1e-10}) {
+      const double re = r / 100, R = r + re, y0 = 100 * r, speed = 300 * r;
+      SCOPED_TRACE("L " + std::to_string(L) + ", r " + std::to_string(r));
+      ExactContact c;
+      const PEInput in{{0.0, y0}, {0.0, -speed}, r, {-L, 0.0}, {0.0, 0.0}, {L, 0.0}, {0.0, 0.0}, re};
+      ASSERT_EQ(exactPE(in, &c), CcdOutcome::Hit);
+      EXPECT_NEAR(c.tau, (y0 - R) / speed, 1e-12);
+      EXPECT_NEAR(c.alpha, 0.5, 1e-12);
+      EXPECT_NEAR(std::fabs(c.normal.y()), 1.0, 1e-12);
+      // The same disk passing R / 2 beside the edge's line, parallel to it, never touches.
+      const PEInput beside{{-L / 2, 1.5 * R}, {L, 0.0}, r, {-L, 0.0}, {0.0, 0.0}, {L, 0.0}, {0.0, 0.0}, re};
+      EXPECT_EQ(exactPE(beside, &c), CcdOutcome::Miss);
+    }
+  }
+}
+
 TEST(ExactCcdScale, HugeSpeedsAndNormalsStillDetect) {
   // Displacements of 1e160 (their squares overflow in ccd.h's polynomials). What normalisation
   // cannot remove is the ratio within one pair: a radius below ~1e-16 of the displacement
