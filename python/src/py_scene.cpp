@@ -21,6 +21,10 @@ void requirePositive(const char* what, double v, bool allowZero = false) {
   requireFinite(what, v);
   if (v < 0 || (!allowZero && v == 0))
     throw SceneError(std::string(what) + " must be " + (allowZero ? ">= 0" : "> 0") + ", got " + text(v));
+  // As the loader: a value that must be > 0 is divided by somewhere (1/m), so a subnormal one,
+  // whose reciprocal overflows, is as unusable as 0.
+  if (v > 0 && !std::isfinite(1.0 / v))
+    throw SceneError(std::string(what) + " is too small: its reciprocal is not finite, got " + text(v));
 }
 
 /// The format's summation order of force kinds (see scene.h).

@@ -118,8 +118,9 @@ void bindScene(nb::module_& m) {
                      const int n = s.file.scene.numParticles();
                      const double* p = valuesOf(a, n, "masses");
                      for (int i = 0; i < n; ++i)
-                       if (!(std::isfinite(p[i]) && p[i] > 0))
-                         throw SceneError("masses: particle " + std::to_string(i) + "'s mass must be finite and > 0, got " +
+                       if (!(std::isfinite(p[i]) && p[i] > 0 && std::isfinite(1.0 / p[i])))
+                         throw SceneError("masses: particle " + std::to_string(i) +
+                                          "'s mass must be finite and > 0, with a finite reciprocal, got " +
                                           formatNumber(p[i]));
                      for (int i = 0; i < n; ++i) s.file.scene.mass[2 * i] = s.file.scene.mass[2 * i + 1] = p[i];
                    },

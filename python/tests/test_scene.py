@@ -77,6 +77,11 @@ def test_setters_validate():
         s.positions = np.zeros((3, 2))
     with pytest.raises(fosssim.SceneError, match="mass must be finite and > 0"):
         s.masses = np.array([1.0, -1.0])
+    # A subnormal mass is > 0, but 1/m overflows: refused as the loader refuses m="1e-320".
+    with pytest.raises(fosssim.SceneError, match="finite reciprocal"):
+        s.masses = np.array([1.0, 1e-320])
+    with pytest.raises(fosssim.SceneError, match="reciprocal is not finite"):
+        s.add_particle((2, 0), mass=1e-320)
     with pytest.raises(fosssim.SceneError, match="particle 5 does not exist"):
         s.add_edge(0, 5)
     with pytest.raises(fosssim.SceneError, match=r"unknown collision type \"bogus\" \(valid: none, simple"):
