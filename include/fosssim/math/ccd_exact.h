@@ -21,10 +21,10 @@
 //    closest point of the segment. The earliest of the three contacts wins.
 //  * Small radii. PP, PH and the caps are solved in forms where nothing cancels against the
 //    radius (closed form for disks, linear factors for half-planes), so a disk of radius
-//    1e-9 crossing a unit distance in one step is caught. The capsule INTERIOR still uses
-//    the expanded quartic (as ccd.h), whose terms lose R^2 once R is below about 1e-8 of the
-//    particle's distance from the edge's line at t = 0: such a thin, fast particle can cross
-//    the middle of an edge undetected (it cannot cross a disk, a cap or a half-plane).
+//    1e-9 crossing a unit distance in one step is caught. The capsule interior's distance
+//    condition is R^2 |e|^2 - (w x e)^2 (Lagrange's identity), not the reference's expanded
+//    |e|^2 |w|^2 - (w.e)^2, whose terms cancel and lost R^2 once R fell below about 1e-8 of the
+//    edge's length: a thin disk could cross the middle of a long edge undetected.
 //    Ratios beyond ~1e150 within one pair underflow after normalisation (R^2 subnormal).
 //  * Overflow is reported. A non-finite input, or a relative quantity that overflows
 //    before normalisation, gives CcdOutcome::Overflow (never a silent miss): the caller
