@@ -85,6 +85,25 @@ std::string blameNonFinite(const Scene& scene, const State& start, const State& 
          shortNumber(largest) + "): a smaller dt or a weaker force may help";
 }
 
+/// Why an integrator's solve failed, where a force says: the first force (in the scene's order)
+/// that is non-finite on some particle at the step's start (coincident ends of a spring, a
+/// gravitational or a vortex pair), naming both. Empty when every force is finite there, or when
+/// evaluating each force separately is too costly (as blameNonFinite).
+std::string blameSolve(const Scene& scene, const State& start) {
+  const size_t n = scene.forces.size();
+  if (n == 0 || static_cast<double>(n) * start.numParticles() > 5e7) return "";
+  VecX gradient(start.x.size());
+  for (size_t f = 0; f < n; ++f) {
+    gradient.setZero();
+    scene.forces[f]->addGradient(scene, start.x, start.v, gradient);
+    for (int i = 0; i < start.numParticles(); ++i)
+      if (!at(gradient, i).allFinite())
+        return "; the force " + forceOrdinal(scene, static_cast<int>(f)) + " on particle " + std::to_string(i) +
+               " is non-finite at the step's start";
+  }
+  return "";
+}
+
 /// to = from, the positions and velocities by ranges of particles on `threads`.
 void copyState(const State& from, State& to, int threads) {
   to.time = from.time;  // State's four members
@@ -142,7 +161,7 @@ Status Simulator::step(const Scene& scene, State& state, StepObserver* observer)
     const Status s = integrator_->step(scene, state, dt, forces_);
     forces_.setResting(nullptr);
     stats_.newtonIterations = integrator_->newtonIterations();  // failed solves too: how far Newton got
-    if (!s) return failure(s.message());
+    if (!s) return failure(s.message() + blameSolve(scene, start_));
   }
   const bool predictionFinite = state.x.allFinite() && state.v.allFinite();  // to blame forces or response
   // A non-finite prediction is the forces' doing: said here, naming the particle and force,
