@@ -76,7 +76,7 @@ Status runNewtonIterations(const StudyOptions& options) {
                                         : std::numeric_limits<double>::quiet_NaN();
         csv << restLength << k << kMass << kAnchor << kStart.x() << kStart.y() << kSpeed << omega << dt << dt * omega
             << twoSpringScene(k, restLength, dt).scene.numSteps() << r.steps << outcomeName(r.outcome) << mean
-            << r.mostNewtonIterations << kNewtonTolerance << kMaxNewtonIterations << r.message;
+            << r.mostNewtonIterations << kNewtonRelativeTolerance << kMaxNewtonIterations << r.message;
         if (Status s = csv.endRow(); !s) return s;
       }
       if (options.log) *options.log << "." << std::flush;

@@ -106,8 +106,8 @@ def spring_iteration_words(rows, r):
                   f"{most_control} iterations in any step of its {len(control)} runs"
                   + (f"; in {len(below)} of them the mean is below {most_control} (down to "
                      f"{r.fmt(min(x['mean_iterations'] for x in below), 3)}) because the stiff springs damp the motion "
-                     f"out within the run, and a step whose first update is already below {num(s0['tolerance'])} takes "
-                     "one" if below else "") + ".")
+                     f"out within the run, and a step whose first update is already below {num(s0['tolerance'])} of its "
+                     "velocities takes one" if below else "") + ".")
     return words
 
 
