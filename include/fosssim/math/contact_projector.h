@@ -158,6 +158,16 @@ class ContactProjector {
     return w;
   }
   double rowNorm(int k) const { return row_[k].norm; }
+  /// Row k at the velocities its bodies had before the changes since the last takeChanged.
+  double rowVelocityAtStart(int k) const {
+    const ConstraintRow& r = row_[k].r;
+    double w = 0.0;
+    for (int m = 0; m < r.count; ++m) {
+      const int s = r.body[m];
+      w += r.coef[m].dot(changedFlag_[s] ? startVelocity_[s] : velocity_[s]);
+    }
+    return w;
+  }
   /// Row k's A_kk = G_k M^-1 G_k^T: the row's velocity change per unit of its impulse.
   double rowDiagonal(int k) const { return row_[k].diag; }
   /// Calls f(id, v0, m) for every movable body whose velocity changed since the last takeChanged:

@@ -27,10 +27,13 @@ void ContactZones::reset(int n) {
     rateScale_.assign(n, 0.0);
     stopped_.assign(n, 0);
     jammed_.assign(n, 0);
+    zoneWoken_.assign(n, 0);
   } else {
     for (int r : roots_) forEachMember(r, [&](int p) { parent_[p] = -1, stopped_[p] = 0, jammed_[p] = 0; });
   }
   roots_.clear();
+  for (int p : zoneWokenList_) zoneWoken_[p] = 0;
+  zoneWokenList_.clear();
   // The impulses of this step's contacts start the next step's (warm start; addRow): each one's
   // whole impulse. A contact that came back in the step had its row replaced and its multiplier
   // restarted at 0 with the impulse so far still applied; starting the next step from the last

@@ -293,6 +293,8 @@ class ContactZones {
   bool hold_ = true;
   Sleepers* sleepers_ = nullptr;
   std::vector<int> hitSleepers_;  ///< wakeHitSleepers' obstacles to wake (scratch)
+  std::vector<char> zoneWoken_;   ///< N: woken by a zone in this step (wakeHitSleepers)
+  std::vector<int> zoneWokenList_;  ///< those particles, to clear zoneWoken_ at reset
   std::vector<int> parent_;  ///< N: union-find parent, -1 when in no zone
   /// What is known of one zone, kept at its root: a particle that joins writes this record and
   /// its own links, not a dozen arrays (and no list of its own on the heap: with one vector of
