@@ -3,24 +3,13 @@
 #include "energy_watch.h"
 
 #include "core/collision/parallel_rows.h"
+#include "core/short_number.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 
 namespace fosssim {
-
-namespace {
-
-/// %g: no 300-digit times in messages.
-std::string shortNumber(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", value);
-  return buffer;
-}
-
-}  // namespace
 
 Simulator::Simulator() = default;
 Simulator::~Simulator() = default;

@@ -48,14 +48,16 @@ void expectRefused(const std::vector<std::string>& args, const std::string& scen
   EXPECT_EQ(slurp(scene), before) << "the scene file changed";
 }
 
+/// `args` followed by `extra`.
+std::vector<std::string> joined(std::vector<std::string> args, const std::vector<std::string>& extra) {
+  args.insert(args.end(), extra.begin(), extra.end());
+  return args;
+}
+
 TEST_F(CliOutputs, AnOutputThatIsTheSceneIsRefused) {
   const std::string scene = meeting("scene.xml", "continuous-time");
   const std::vector<std::string> run = {"-s", scene, "-d", "0", "-q"};
-  auto with = [&](std::vector<std::string> extra) {
-    std::vector<std::string> args = run;
-    args.insert(args.end(), extra.begin(), extra.end());
-    return args;
-  };
+  auto with = [&](const std::vector<std::string>& extra) { return joined(run, extra); };
   // The same name, another spelling of it, a symbolic link, a hard link.
   fs::create_symlink(scene, path("symlink.bin"));
   fs::create_hard_link(scene, path("hardlink.bin"));
@@ -88,11 +90,7 @@ TEST_F(CliOutputs, AnOutputThatIsTheSceneIsRefused) {
 TEST_F(CliOutputs, StatsIsNeitherAnInputNorAnotherOutput) {
   const std::string scene = meeting("scene.xml", "continuous-time");
   const std::vector<std::string> run = {"-s", scene, "-d", "0", "-q"};
-  auto with = [&](std::vector<std::string> extra) {
-    std::vector<std::string> args = run;
-    args.insert(args.end(), extra.begin(), extra.end());
-    return args;
-  };
+  auto with = [&](const std::vector<std::string>& extra) { return joined(run, extra); };
   expectRefused(with({"--stats", scene}), scene, "--stats \"" + scene + "\" is the same file");
 
   // Refused with both names in the message; `made` must not exist afterwards.

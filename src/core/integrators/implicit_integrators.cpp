@@ -11,23 +11,13 @@
 // and Jacobians at (x + h v, v); then v += dv and x += h v (with the new v).
 #include "implicit_system.h"
 
+#include "core/short_number.h"
+
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 namespace fosssim {
-namespace {
-
-/// %g: "last update 3.2e-07", not to_string's "0.000000".
-std::string shortNumber(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", value);
-  return buffer;
-}
-
-}  // namespace
-
 Status ImplicitSystem::assemble(const Scene& scene, const VecX& x, const VecX& v, double h,
                                 const VecX& dvCurrent, ForceContext& forces) {
   const int n = scene.numParticles();
