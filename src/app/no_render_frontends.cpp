@@ -16,7 +16,9 @@ Status addPictureOutputs(const Options& options, const SceneFile&, ObserverList&
   std::unique_ptr<render::SvgFrames> svg;
   if (Status s = render::SvgFrames::open(options.svgDir, svg); !s) return Status::error("-m: " + s.message());
   outputs.add(std::move(svg));
-  observers.items.push_back(std::make_unique<PictureOutputs>(std::move(outputs)));
+  // The summary names where the frames went, as the renderer's build does.
+  observers.items.push_back(
+      std::make_unique<PictureOutputs>(std::move(outputs), std::vector<std::string>{"SVG in \"" + options.svgDir + "\""}));
   return Status::ok();
 }
 
