@@ -66,7 +66,7 @@ void printGrade(const GradeReport& r, const Scene& scene, std::ostream& out, con
     out << "Failed: no single residual reaches " << tol.residualMax << ", but their sum over the run does ("
         << (posOk ? "velocities " + grade_text::num(r.velocitySum) : "positions " + grade_text::num(r.positionSum))
         << ", at most " << tol.residualSum << ")\n";
-  if (!r.modeHint.empty()) out << "Hint: " << r.modeHint << "\n";
+  if (!r.hint.empty()) out << "Hint: " << r.hint << "\n";
   if (r.findingCount > 0) {
     out << "Findings: " << r.findingCount << " in " << r.stepsDiverged << " step" << (r.stepsDiverged == 1 ? "" : "s")
         << " (";

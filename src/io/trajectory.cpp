@@ -5,6 +5,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 
 namespace fosssim {
 namespace {
@@ -22,6 +23,15 @@ Status TrajectoryReader::open(const std::string& path, int numParticles, RecordL
   r->n_ = numParticles;
   r->layout_ = layout;
   if (Status st = io_detail::checkInputPath(path, "trajectory file"); !st) return st;
+  // Records are checked against the file's size, which a device does not have (/dev/zero reads
+  // as endless zeros and reports size 0: it would be graded as an empty file).
+  {
+    std::error_code ec;
+    const auto type = std::filesystem::status(path, ec).type();
+    if (type == std::filesystem::file_type::character || type == std::filesystem::file_type::block)
+      return Status::error(path + ": cannot read the trajectory file (it is a device, not a file: a trajectory is "
+                                  "read against its file's size)");
+  }
   r->in_.open(path, std::ios::binary);
   if (!r->in_) return Status::error(path + ": cannot open the trajectory file (" + std::strerror(errno) + ")");
   r->in_.seekg(0, std::ios::end);

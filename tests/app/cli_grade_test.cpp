@@ -220,6 +220,35 @@ TEST_F(CliGrade, AFileOfTheOtherModeGetsAHint) {
   EXPECT_FALSE(contains(both.out, "Hint:")) << both;
 }
 
+// A file written with -o --compact has the impulses but not the polynomial log that grading
+// compares: it does not fit, and the grade says why and what to do.
+TEST_F(CliGrade, ACompactFileGetsAHint) {
+  const std::string s = edgeScene("edge.xml");
+  const Outcome made = runFosssim({"-s", s, "-d", "0", "-q", "-o", path("compact.bin"), "--compact"});
+  ASSERT_TRUE(exitedWith(made, 0)) << made;
+  const Outcome o = grade(s, path("compact.bin"));
+  expectFailedGrade(o, "Failed: ");
+  EXPECT_EQ(lineStarting(lines(o.out), "Hint: this file looks written with -o --compact"), 1) << o;
+  // The hint asks that the file read to its end as the compact records of this scene: the full
+  // file cut short, or a compact file with a record missing, gets none.
+  const std::string compact = slurp(path("compact.bin"));
+  const Outcome shortened = grade(s, write("short.bin", compact.substr(0, compact.size() - 104)));
+  expectFailedGrade(shortened, "Failed: ");
+  EXPECT_FALSE(contains(shortened.out, "Hint:")) << shortened;
+  const std::string full = make(s, "full.bin");
+  const Outcome cut = grade(s, write("cut.bin", full.substr(0, full.size() - 5)));
+  expectFailedGrade(cut, "Failed: ");
+  EXPECT_FALSE(contains(cut.out, "Hint:")) << cut;
+}
+
+// A device has no size to read records against: /dev/zero was graded as an empty file.
+TEST_F(CliGrade, ADeviceIsNotATrajectoryFile) {
+  const Outcome o = grade(row("s.xml", 2), "/dev/zero");
+  EXPECT_TRUE(exitedWith(o, 1)) << o;
+  EXPECT_EQ(o.out, "") << o;
+  EXPECT_TRUE(contains(o.err, "/dev/zero: cannot read the trajectory file (it is a device, not a file")) << o;
+}
+
 TEST_F(CliGrade, AMissingFileIsOneErrorAndNoVerdicts) {
   const Outcome o = grade(row("s.xml", 2), path("missing.bin"));
   EXPECT_TRUE(exitedWith(o, 1)) << o;

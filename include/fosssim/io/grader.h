@@ -56,7 +56,9 @@ struct GradeReport {
   std::string structuralError;  ///< the file does not fit the scene (record 0 included), or the simulation failed
   bool unreadable = false;      ///< the file could not be opened (structuralError says why); nothing was read
   RecordLayout layout;          ///< what the records hold
-  std::string modeHint;         ///< set by gradeFile when the other mode (--compat or not) passes the file
+  /// Set by gradeFile: the other mode (--compat or not) passes the file, or the file fails as one
+  /// written with -o --compact (no polynomial log) would, and reads as one.
+  std::string hint;
   bool passed(const GradeTolerances& tol) const;
 };
 
@@ -65,7 +67,7 @@ GradeReport gradeRecords(const Scene& scene, const State& initial, Simulator& si
                          const GradeOptions& options = {});
 
 /// Writes a grade: a failed one leads with where the run first diverged (step, time, record,
-/// category, particle or pair) or why the file does not fit, then the mode hint, then the first
+/// category, particle or pair) or why the file does not fit, then the hint, then the first
 /// findings; every grade then gives one line per category and ends with the reference's
 /// "Overall success: Passed." or "Overall success: Failed.". Writes nothing for an unreadable
 /// file: the caller reports report.structuralError as its error.
@@ -79,7 +81,8 @@ GradeReport gradeTrajectory(const Scene& scene, const State& initial, Simulator&
 /// What -i does: gradeTrajectory with `simulator` (made with `made`), and when a file whose
 /// records hold polynomials (continuous-time, hybrid: the only handlers the modes differ in) fails
 /// on what it holds, grades it again in the other mode (--compat or not) and, if that passes,
-/// says so in report.modeHint ahead of the findings.
+/// says so in report.hint ahead of the findings; a file that does not fit and reads as one written
+/// with -o --compact gets that hint instead.
 GradeReport gradeFile(const Scene& scene, const State& initial, Simulator& simulator, const SimulatorOptions& made,
                       const std::string& path, std::ostream& out, const GradeOptions& options = {});
 
