@@ -3,7 +3,7 @@ scene: predicted collision times, exact velocity exchanges, no overlap at step e
 ContinuousTimeTests and ImpulsesTests; checks_t2m2_zones.py the rest.
 
 These files are made by the default mode (contacts in time order, sequential impulses, paths that
-bend at contact times, inelastic-projection failsafe), not by the course's handlers (which --compat
+bend at contact times, projection failsafe with the COR's restitution), not by the course's handlers (which --compat
 reproduces). Every scene here also gets checks_default_mode.default_mode (polynomial log over the
 predicted motion, impulses replayed in time order, no deepening, no tunnelling along the replayed
 paths, no kinetic energy added, momenta of free scenes). Where a check used to encode the course's

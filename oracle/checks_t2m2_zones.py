@@ -14,18 +14,18 @@ from checks_default_mode import pair_gaps
 # maxiters 0: a particle may take no impulse, so every contact goes to the failsafe at once. The
 # course's failsafe moved each impact zone rigidly and froze zones holding a fixed particle or
 # touching a half-plane; the scene descriptions still tell that story. The default mode's failsafe
-# is the inelastic projection (contact-physics.md): the zone's velocities become the closest ones,
-# in the kinetic-energy norm, under which no contact approaches. For one contact that means: the
-# approaching normal part of the relative velocity is removed, momentum is kept where no fixed
-# particle or half-plane acts, and tangential motion is kept (nothing freezes; a frictionless
-# ball slides off).
+# is the inelastic projection (contact-physics.md) followed by Moreau's restitution with the
+# scene's COR (1 in these scenes) for contacts that hit harder than resting contact: for one
+# contact that is Newton's law, the normal part of the relative velocity reversed and scaled by the
+# COR, momentum kept where no fixed particle or half-plane acts, and tangential motion kept
+# (nothing freezes; a frictionless ball slides off).
 
 def failsafe_only(sc, tr, notes):
     """No impulse is ever logged, and the failsafe acted (some step is not the predicted motion)."""
     expect(all(not r.impulses for r in tr.ends), 'an impulse was logged with maxiters 0')
     acted = [k for k in range(1, len(tr.explained)) if not tr.explained[k]]
     expect(acted, 'the failsafe never acted')
-    notes.append('no impulse (maxiters 0); the failsafe (inelastic projection) acted in %d steps' % len(acted))
+    notes.append('no impulse (maxiters 0); the failsafe (projection and restitution) acted in %d steps' % len(acted))
     return acted
 
 
@@ -66,71 +66,77 @@ def horizontal_momentum_kept(sc, tr, why):
 @check('t2m2/GeometricTests/stack.xml')
 def _(sc, tr, notes):
     # Was: the balls freeze bottom-up into a crooked stack (rigid zones touching the floor). Now the
-    # balls land inelastically and, being frictionless, slide off each other onto the floor.
+    # big ball lands alone and bounces with the scene's COR (1), and the column bounces on, never
+    # frozen, the balls' horizontal momentum kept.
     failsafe_only(sc, tr, notes)
     floor = horizontal_momentum_kept(sc, tr, '')
-    # The big ball lands alone: in its landing step its fall is stopped and nothing else changes.
+    # The big ball lands alone: in its landing step its fall reverses, scaled by the COR, and its
+    # horizontal velocity is kept.
     land = next(k for k in range(1, len(tr.ends)) if not tr.explained[k])
-    close(floor(tr.ends[land], 0), 0.0, 1e-12, 'ball 0 on the floor after landing (step %d)' % land)
-    close2(tr.ends[land].vel(0), (predicted_motion(sc, tr.ends[land - 1])[1][0][0], 0.0), 1e-12, 'ball 0 stops falling, keeps its horizontal velocity')
-    # At the end all three lie on the floor, sliding freely (tangential motion kept, 1e-12).
-    last = tr.ends[-1]
-    for i in range(sc.n):
-        close(floor(last, i), 0.0, 1e-9, 'ball %d on the floor at the end' % i)
-        for rec in tr.ends[-10:]:
-            close2(rec.vel(i), (last.vel(i)[0], 0.0), 1e-12, 'ball %d slides at constant velocity over the last steps' % i)
-    expect(last.vel(1)[0] > 0 and last.vel(0)[0] < 0, 'balls 0 and 1 did not slide apart')
-    notes.append('horizontal momentum kept (1e-12); ball 0 lands in step %d, stops falling and keeps its horizontal velocity (1e-12); the upper balls slide off (frictionless, nothing freezes): all end on the floor sliding at %s m/s'
-                 % (land, ', '.join('%.3f' % last.vel(i)[0] for i in range(sc.n))))
+    pv = predicted_motion(sc, tr.ends[land - 1])[1][0]
+    close2(tr.ends[land].vel(0), (pv[0], -sc.cor * pv[1]), 1e-9, 'ball 0 bounces off the floor (step %d)' % land)
+    for k, rec in enumerate(tr.ends):
+        for i in range(sc.n):
+            expect(floor(rec, i) > -1e-9, 'ball %d below the floor at step %d' % (i, k))
+    notes.append('horizontal momentum kept (1e-12); ball 0 lands in step %d at %.3f m/s and leaves at COR %g times that, its horizontal velocity kept (1e-9); no ball ever below the floor'
+                 % (land, -pv[1], sc.cor))
 
 
 @check('t2m2/GeometricTests/trapped.xml')
 def _(sc, tr, notes):
-    # Was: each ball stops dead before the post (a zone with a fixed particle froze). Now the
-    # projection against a fixed post removes only the approaching normal velocity: a ball keeps its
-    # tangential part and slides past; a head-on ball stops.
+    # Was: each ball stops dead before the post (a zone with a fixed particle froze). Now each
+    # contact with a fixed post reverses the ball's normal velocity, scaled by the COR (1), and keeps
+    # its tangential part: the ball inside bounces between the posts, the one outside off its post.
     acted = failsafe_only(sc, tr, notes)
     h = sc.dt
-    for i, post in ((2, 1), (3, 0)):
-        k = next(k for k in acted if tr.ends[k].vel(i) != tr.ends[k - 1].vel(i))
-        for n in range(k):
-            close2(tr.ends[n].pos(i), add(sc.x0[i], mul(n * h, sc.v0[i])), 1e-12, 'free flight of %d' % i)
-        T, nrm, pv = projected_hit(sc, tr, k, i, post)
-        v = pv[i]
-        vstar = sub(v, mul(dot(v, nrm), nrm))
-        close2(tr.ends[k].vel(i), vstar, 1e-9, 'ball %d after the projection at step %d' % (i, k))
-        xT = add(tr.ends[k - 1].pos(i), mul(T * h, v))
-        close2(tr.ends[k].pos(i), add(xT, mul((1 - T) * h, vstar)), 1e-9, 'ball %d path bends at the contact time' % i)
-        for n in range(k + 1, len(tr.ends)):
-            close2(tr.ends[n].vel(i), vstar, 1e-12, 'ball %d moves on at constant velocity (step %d)' % (i, n))
-        notes.append('ball %d flies straight (1e-12) until it meets post %d at step %d (T %.3f): its normal velocity is removed and its tangential velocity kept (1e-9), |v| %.3f -> %.3f m/s, then it moves on unchanged'
-                     % (i, post, k, T, norm(v), norm(vstar)))
-    expect(norm(tr.ends[-1].vel(3)) < 1e-9 and norm(tr.ends[-1].vel(2)) > 1.0, 'ball 3 (head-on) should stop, ball 2 (off-centre) slide on')
+    posts = [i for i in range(sc.n) if sc.fixed[i]]
+    for i in (i for i in range(sc.n) if not sc.fixed[i]):
+        bounces = 0
+        for k in range(1, len(tr.ends)):
+            v = predicted_motion(sc, tr.ends[k - 1])[1][i]
+            if tr.ends[k].vel(i) == v:
+                close2(tr.ends[k].pos(i), add(tr.ends[k - 1].pos(i), mul(h, v)), 1e-12, 'free flight of %d (step %d)' % (i, k))
+                continue
+            hits = [(projected_hit(sc, tr, k, i, p), p) for p in posts
+                    if first_touch(tr.ends[k - 1].pos(i), mul(h, v), tr.ends[k - 1].pos(p), (0.0, 0.0), sc.r[i] + sc.r[p]) is not None]
+            expect(len(hits) == 1, 'ball %d: %d posts met in step %d' % (i, len(hits), k))
+            (T, nrm, _), post = hits[0]
+            vstar = sub(v, mul((1 + sc.cor) * dot(v, nrm), nrm))
+            close2(tr.ends[k].vel(i), vstar, 1e-9, 'ball %d bounces off post %d at step %d' % (i, post, k))
+            xT = add(tr.ends[k - 1].pos(i), mul(T * h, v))
+            close2(tr.ends[k].pos(i), add(xT, mul((1 - T) * h, vstar)), 1e-9, 'ball %d path bends at the contact time' % i)
+            bounces += 1
+        expect(bounces > 0, 'ball %d never met a post' % i)
+        close(norm(tr.ends[-1].vel(i)), norm(sc.v0[i]), 1e-9 * norm(sc.v0[i]), 'ball %d keeps its speed (COR 1)' % i)
+        notes.append('ball %d flies straight (1e-12) between %d bounces off the posts, each reversing its normal velocity (COR %g) and keeping its tangential velocity (1e-9), and ends at its speed %.3f m/s'
+                     % (i, bounces, sc.cor, norm(tr.ends[-1].vel(i))))
+    expect(acted, 'no bounce')
 
 
 @check('t2m2/GeometricTests/zone_halfplane.xml')
 def _(sc, tr, notes):
-    # Was: every ball freezes, balls 1 and 3 in mid-air. Now: the heavy ball lands and stays on the
-    # floor, the light ball slides over it and off (as a real frictionless ball would), the mid-air
-    # pair loses its closing velocity and falls on, and nothing is frozen in mid-air.
+    # Was: every ball freezes, balls 1 and 3 in mid-air. Now the zones keep the COR (1): the heavy
+    # ball bounces off the floor, the mid-air pair bounces apart along its contact normal with its
+    # momentum and tangential velocity kept, and nothing is frozen in mid-air.
     failsafe_only(sc, tr, notes)
     floor = horizontal_momentum_kept(sc, tr, ' (floor and gravity are vertical)')
-    land = next(k for k, rec in enumerate(tr.ends) if floor(rec, 0) < 1e-9)
-    for rec in tr.ends[land:]:
-        close(floor(rec, 0), 0.0, 1e-9, 'ball 0 stays on the floor')
-        close(rec.vel(0)[1], 0.0, 1e-9, 'ball 0 does not leave the floor')
+    # Ball 0's first contact is with the floor: its fall reverses, scaled by the COR.
+    land = next(k for k in range(1, len(tr.ends)) if tr.ends[k].vel(0) != predicted_motion(sc, tr.ends[k - 1])[1][0])
+    pv0 = predicted_motion(sc, tr.ends[land - 1])[1][0]
+    close2(tr.ends[land].vel(0), (pv0[0], -sc.cor * pv0[1]), 1e-9, 'ball 0 bounces off the floor (step %d)' % land)
     # The mid-air pair (2, 3): in their contact step (before either reaches the floor) their
-    # closing velocity is removed along the contact normal and their momentum kept.
+    # relative normal velocity reverses, scaled by the COR, their momentum kept.
     k = next(k for k in range(1, len(tr.ends)) if not tr.explained[k] and tr.ends[k].vel(2) != predicted_motion(sc, tr.ends[k - 1])[1][2])
     T, nrm, pv = projected_hit(sc, tr, k, 2, 3)
     a, b = tr.ends[k].vel(2), tr.ends[k].vel(3)
-    close(dot(sub(b, a), nrm), 0.0, 1e-9, 'pair (2, 3): relative normal velocity after the projection')
+    close(dot(sub(b, a), nrm), -sc.cor * dot(sub(pv[3], pv[2]), nrm), 1e-9, 'pair (2, 3): relative normal velocity reversed')
     close(cross(sub(b, a), nrm), cross(sub(pv[3], pv[2]), nrm), 1e-9, 'pair (2, 3): relative tangential velocity kept')
     close2(add(mul(sc.m[2], a), mul(sc.m[3], b)), add(mul(sc.m[2], pv[2]), mul(sc.m[3], pv[3])), 1e-12, 'pair (2, 3): momentum kept')
-    last = tr.ends[-1]
-    expect(last.pos(1)[0] > last.pos(0)[0] + sc.r[0] and last.vel(1)[0] > 0, 'ball 1 did not slide off ball 0 to the right')
-    notes.append('horizontal momentum kept (1e-12); ball 0 lands at step %d and stays on the floor (1e-9); the mid-air pair meets at step %d (T %.3f): closing velocity removed, tangential velocity and momentum kept (1e-9); ball 1 slides over ball 0 and off to the right; nobody is frozen in mid-air'
-                 % (land, k, T))
+    for n, rec in enumerate(tr.ends):
+        for i in range(sc.n):
+            expect(floor(rec, i) > -1e-9, 'ball %d below the floor at step %d' % (i, n))
+    notes.append('horizontal momentum kept (1e-12); ball 0 lands at step %d and bounces (COR %g, 1e-9); the mid-air pair meets at step %d (T %.3f): relative normal velocity reversed (COR %g), tangential velocity and momentum kept (1e-9); no ball below the floor, none frozen in mid-air'
+                 % (land, sc.cor, k, T, sc.cor))
 
 
 @check('t2m2/GeometricTests/edge_triangle.xml')
@@ -147,23 +153,24 @@ def _(sc, tr, notes):
 @check('t2m2/GeometricTests/glancing.xml')
 def _(sc, tr, notes):
     # Was: the pair moves as one rigid body for a step (distance kept, head-on motion turned into
-    # spin). Now the projection removes the closing normal velocity and keeps the tangential one;
-    # the outcome the description names still follows: the light ball up and right, the heavy one
-    # down and left.
+    # spin). Now the zone bounces the pair as an impulse would: the normal part of the relative
+    # velocity reversed (COR 1: kinetic energy kept), the tangential part kept.
     acted = failsafe_only(sc, tr, notes)
     conserved_momentum(sc, tr, notes)
     expect(len(acted) == 1, 'failsafe acted in %d steps' % len(acted))
     k = acted[0]
     T, nrm, pv = projected_hit(sc, tr, k, 0, 1)
     a, b = tr.ends[k].vel(0), tr.ends[k].vel(1)
-    close(dot(sub(b, a), nrm), 0.0, 1e-9, 'relative normal velocity after the projection')
+    close(dot(sub(b, a), nrm), -sc.cor * dot(sub(pv[1], pv[0]), nrm), 1e-9, 'relative normal velocity reversed')
     for i in (0, 1):
         close(cross(sub(tr.ends[k].vel(i), pv[i]), nrm), 0.0, 1e-9, 'ball %d changed only along the contact normal' % i)
-    expect(a[0] > 0 and a[1] > 0 and b[0] < 0 and b[1] < 0, 'not the diagonal outcome: %s %s' % (a, b))
+    ke = [kinetic(sc, r) for r in tr.ends]
+    if sc.cor == 1.0:
+        close(ke[-1], ke[0], 1e-9 * ke[0], 'kinetic energy kept (COR 1)')
     gaps = [norm(sub(r.pos(1), r.pos(0))) - sc.r[0] - sc.r[1] for r in tr.ends[k:]]
     expect(all(g2 >= g1 for g1, g2 in zip(gaps, gaps[1:])), 'the pair does not separate after the contact')
-    notes.append('the failsafe acts in exactly one step (%d, contact at T %.3f): the closing normal velocity is removed and each ball changes only along the normal (1e-9); the light ball leaves up and right (%.3f, %.3f), the heavy one down and left, and they separate'
-                 % (k, T, a[0], a[1]))
+    notes.append('the failsafe acts in exactly one step (%d, contact at T %.3f): the relative normal velocity is reversed (COR %g) and each ball changes only along the normal (1e-9); kinetic energy %.6f -> %.6f; the light ball leaves at (%.3f, %.3f), and they separate'
+                 % (k, T, sc.cor, ke[0], ke[-1], a[0], a[1]))
 
 
 # ---- t2m2/HolisticTests and the creative scene -------------------------------------------------

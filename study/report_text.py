@@ -25,9 +25,9 @@ contacts as README.md ("Contacts in the default mode") promises, and this run me
   each with one impulse against the current velocities, and the particles fly on from the contact
   time: {promise_order}
 - **No energy gained with COR ≤ 1.** Impulses that meet at one instant are applied one after
-  another, never summed from stale velocities, and the failsafe (inelastic projection of a zone's
-  velocities; warm starts that a solve leaves adding energy are scaled back) can only take energy
-  away: {promise_energy}
+  another, never summed from stale velocities, and the failsafe (projection of a zone's velocities,
+  then the COR's restitution for hits where it adds no energy; warm starts that a solve leaves
+  adding energy are scaled back) can only take energy away: {promise_energy}
 - **No tunnelling.** Every candidate pair is queried over the whole step, again after every
   impulse: {promise_tunnel}
 - **Momentum and angular momentum** change only by impulses along the line through the contact:
@@ -73,9 +73,9 @@ CONTACTS_INTRO = """\
 ## 6. Multi-contact problems: the default mode next to --compat
 
 Seven scenes where several contacts meet in one step, each run with the default mode (contacts in
-time order, sequential impulses, the inelastic-projection failsafe; as its last resort a contact
-still closing after its zone was solved again and again stops its own particles for the rest of
-the step, and a zone touching nothing moves rigidly) and with `--compat` (the course's formulation: impulses of a pass summed, continuous-time
+time order, sequential impulses, the projection failsafe with the COR's restitution for hits; as its last resort a contact
+still closing after its zone was solved again and again welds its particles and locks them
+against its obstacles for the rest of the step, and a zone touching nothing moves rigidly) and with `--compat` (the course's formulation: impulses of a pass summed, continuous-time
 in one pass, rigid impact zones that freeze against walls), for `continuous-time` and `hybrid`
 (the hybrid without its penalty layer, k = 0, so that only contact handling differs). Symplectic
 Euler throughout. The charts show energy (kinetic plus potential, relative to its start:
@@ -113,7 +113,7 @@ CONTACTS_WORDS = """\
 - **Slot**: the default mode lets {slot_default_escaped} of {slot_disks} disks through over
   {slot_shots} shots, with up to {slot_contacts} contacts per step and shot (the busiest step,
   averaged over the shots). The contacts past a
-  particle's quota of impulse events go to the inelastic failsafe (at most {slot_zones} of the
+  particle's quota of impulse events go to the failsafe (at most {slot_zones} of the
   disks in zones), {slot_loss}. `--compat`'s
   continuous-time lets {slot_compat_ct} through; its hybrid {slot_compat_hybrid}.
 - **Newton's cradle**: {cradle_words}

@@ -29,6 +29,7 @@ void ContactProjector::reset(int capacity) {
   row_.clear();
   replaced_.clear();
   queued_.clear();
+  restitution_.clear();
   head_ = tail_ = 0;
   changed_.clear();
   startVelocity_.clear();
@@ -57,6 +58,7 @@ int ContactProjector::addRow(const ConstraintRow& row, double warmStart, int gro
   row_.emplace_back();
   replaced_.push_back(0.0);
   queued_.push_back(0);
+  restitution_.push_back(0.0);
   touchedFlag_.push_back(0);
   startLambda_.push_back(0.0);
   startReplaced_.push_back(0.0);
@@ -378,7 +380,7 @@ void ContactProjector::takeChanged(std::vector<int>& out) {
 // (f = 1) is KE(0) + f B + f^2 C (see the header); C > 0 whenever anything moved. A gain
 // B + C > 0 is taken back to f = -B / C, where the energy is KE(0) again, or to f = 0 when the
 // changes only add (B >= 0). Multipliers on the same line stay non-negative (both ends are).
-double ContactProjector::capEnergy() {
+double ContactProjector::energyFraction() const {
   double b = 0, c = 0, start = 0;
   for (int s : changed_) {
     if (inverseMass_[s] == 0.0) continue;
@@ -389,9 +391,50 @@ double ContactProjector::capEnergy() {
     start += 0.5 * m * startVelocity_[s].squaredNorm();
   }
   if (!(b + c > kEnergyRoundingFraction * (start + c))) return 1.0;
-  const double f = b < 0.0 ? -b / c : 0.0;
-  moveBack(f);
+  return b < 0.0 ? -b / c : 0.0;
+}
+
+double ContactProjector::capEnergy() {
+  const double f = energyFraction();
+  if (f < 1.0) moveBack(f);
   return f;
+}
+
+bool ContactProjector::restitute() {
+  restituted_.clear();
+  for (int k : touched_) {
+    const double e = restitution_[k];
+    if (!(e > 0.0)) continue;
+    // The row's impulse since the guard's start: its multiplier's change, plus what setRow moved
+    // from its multiplier into replaced_ meanwhile.
+    const double impulse = startReplaced_[k] + row_[k].lambda - startLambda_[k];
+    if (!(impulse > 0.0)) continue;
+    const ConstraintRow& r = row_[k].r;
+    for (int m = 0; m < r.count; ++m) {
+      const int s = r.body[m];
+      if (inverseMass_[s] == 0.0) continue;
+      markChanged(s);
+      restituted_.emplace_back(s, velocity_[s]);
+      velocity_[s] += (inverseMass_[s] * e * impulse) * r.coef[m];
+    }
+  }
+  if (restituted_.empty()) return false;
+  if (energyFraction() < 1.0) {  // taken back exactly: each slot's first saved velocity wins
+    for (auto it = restituted_.rbegin(); it != restituted_.rend(); ++it) velocity_[it->first] = it->second;
+    return false;
+  }
+  // A restituted row's multiplier is set aside as setRow sets a replaced one's (still applied,
+  // counted in totalImpulse): a later solve that found the row opening would otherwise take the
+  // multiplier back, and with it the bounce. Rows the pushes close (a disk pushed back into its
+  // neighbours) are not queued here: their contacts come back as events, at their own times.
+  for (int k : touched_) {
+    if (!(restitution_[k] > 0.0) || !(startReplaced_[k] + row_[k].lambda - startLambda_[k] > 0.0)) continue;
+    startReplaced_[k] += row_[k].lambda - startLambda_[k];
+    startLambda_[k] = 0.0;
+    replaced_[k] += row_[k].lambda;
+    row_[k].lambda = 0.0;
+  }
+  return true;
 }
 
 void ContactProjector::rollBack() { moveBack(0.0); }

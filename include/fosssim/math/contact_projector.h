@@ -207,6 +207,26 @@ class ContactProjector {
   /// freeze or release gave them. Every row moved back is queued (it may close again). Returns
   /// f (1: nothing scaled).
   double capEnergy();
+  /// The f capEnergy would move back to, without moving anything (1: no energy gained).
+  double energyFraction() const;
+  /// Row k's coefficient of restitution from now on (0 when added: inelastic). setRow keeps it:
+  /// a row made again for a later instant (RowSource) is the same contact.
+  void setRestitution(int k, double e) { restitution_[k] = e; }
+  /// Moreau's restitution, after a solve: every row k with a coefficient e_k > 0 pushes again by
+  /// e_k times the impulse it applied since the last takeChanged, along its normal, outside its
+  /// multiplier (later solves cannot take it back as they can an impulse; the multiplier so far
+  /// is set aside as setRow sets it) and outside totalImpulse (which warm-starts the contact in
+  /// the next step: a resting contact's measure, not a bounce's). With one coefficient e
+  /// for all the rows, the velocities become P v + e (P v - v), v the velocities before the solve
+  /// and P v its projection; since P v is M-orthogonal to v - P v (complementarity: every row
+  /// with an impulse ends with G_k P v = 0), the kinetic energy becomes |Pv|^2 + e^2 |v - Pv|^2
+  /// (halved, in the mass norm), at most what it was for e <= 1: a ball wedged between two walls
+  /// at COR 1 leaves as it came, where the projection alone stopped it. With different
+  /// coefficients per row (resting rows take 0) that bound does not hold, and a solve that ended
+  /// on its budget is not a projection: if the energy guard's measure (capEnergy) would then
+  /// scale the changes back, the restitution is taken back exactly and false returned (the rows
+  /// stay inelastic for this solve).
+  bool restitute();
   /// Takes back every change the rows made since the last takeChanged, as capEnergy does with
   /// f = 0 (velocities and multipliers where they were, the rows queued): for a caller that
   /// changes the problem (a body released) and solves again.
@@ -305,6 +325,8 @@ class ContactProjector {
   /// which every Gauss-Seidel update reads: this is read once a step (totalImpulse).
   std::vector<double> replaced_;
   std::vector<char> queued_;  ///< per row: in work_ (apart from the rows: queueing touches only these bytes)
+  std::vector<double> restitution_;  ///< per row: its coefficient of restitution (setRestitution)
+  std::vector<std::pair<int, Vec2>> restituted_;  ///< restitute's scratch: slots and their velocities before it
   std::vector<int> work_;     ///< FIFO of row indices: work_[head_, tail_) (the rest is room)
   size_t head_ = 0, tail_ = 0;
   std::vector<int> changed_;  ///< body slots changed since the last takeChanged

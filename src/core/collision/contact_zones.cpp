@@ -120,6 +120,7 @@ int ContactZones::take(const Scene& scene, const StepMotion& motion, int p, int 
 
 int ContactZones::absorb(const Scene& scene, const StepMotion& motion, const PairCandidates& candidates, uint64_t key,
                          double T, double h, double deepest) {
+  h_ = h;
   int zone = -1;
   queue_.clear();
   const PairParticles pair = pairParticles(scene, key);
@@ -177,6 +178,7 @@ int ContactZones::grow(const Scene& scene, const StepMotion& motion, const PairC
 // stops growing (Harmon et al.'s merge-and-project loop, at one instant) or moves rigidly.
 void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidates& candidates, int zone, double T,
                            double h, VecX& v, std::vector<int>& changed, StepStats& stats) {
+  h_ = h;
   atInstant(T);
   RowsAt rowsNow(*this, scene, motion, T);
   for (;;) {
@@ -229,6 +231,9 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
       // solve did not (ContactProjector::capEnergy). What that leaves closing comes back as
       // events: every body it scaled is in the changed list below, and every row it scaled is
       // queued.
+      // The hits among the rows bounce (Moreau's restitution on the solve's impulses), unless
+      // that would add energy.
+      if (cor_ > 0.0) projector_.restitute();
       const bool capped = projector_.capEnergy() < 1.0;
       stats.energyCaps += capped;
       // The rows set since the last solve stand for contacts whose events were taken: one that

@@ -151,6 +151,12 @@ constexpr double kRegrowFraction = 1e-3;
 /// resting contacts, whose gaps are a few ulps of the radii).
 constexpr double kTouchingSlack = 1e-6;
 
+/// Resting contact does not bounce: an impulse takes COR 0 (for a scene COR below 1) when its
+/// contact closes no faster than this many times the step's kicks along its normal
+/// (ContactZones::kicksAlong), and so does a zone's row (its restitution target). Resting
+/// contact closes at about one kick: a disk on the floor, or on a disk of a pile, in every step.
+constexpr double kRestingBounceKicks = 2.0;
+
 class ContactZones {
  public:
   /// No zones; storage for n particles.
@@ -194,6 +200,17 @@ class ContactZones {
   /// The handler's sleepers: obstacles, as fixed particles are, until a zone hits one
   /// (wakeHitSleepers).
   void setSleepers(Sleepers* sleepers) { sleepers_ = sleepers; }
+  /// The scene's coefficient of restitution: a contact that reaches a zone closing faster than
+  /// resting contact does (kRestingBounceKicks) bounces off with it after each solve
+  /// (ContactProjector::restitute), unless that would add energy. 0 (the default): the zones are
+  /// inelastic, Harmon et al.'s projection.
+  void setRestitution(double cor) { cor_ = cor; }
+  /// The step's kicks along normal n of pair `key` (alpha: an edge's parameter): each movable
+  /// side's |kick . n|, summed (an obstacle's is 0). A kick across the normal (gravity, for disks
+  /// side by side on a floor) does not close the contact, and the sides' kicks are not
+  /// differenced, since a disk resting on another closes at its own kick once the floor has
+  /// stopped the lower.
+  double kicksAlong(const Scene& scene, uint64_t key, const Vec2& n, double alpha) const;
 
   /// Whether the contact of pair `key`, found closing at a later time of the step, is to be
   /// solved at the current instant too (its event also stays at its own time, for a contact that
@@ -292,6 +309,8 @@ class ContactZones {
   long updatesPerRow_ = kZoneUpdatesPerRow;
   bool hold_ = true;
   Sleepers* sleepers_ = nullptr;
+  double cor_ = 0.0;  ///< see setRestitution
+  double h_ = 0.0;    ///< the step (absorb and resolve set it: kicks are speeds, rates are per step)
   std::vector<int> hitSleepers_;  ///< wakeHitSleepers' obstacles to wake (scratch)
   std::vector<char> zoneWoken_;   ///< N: woken by a zone in this step (wakeHitSleepers)
   std::vector<int> zoneWokenList_;  ///< those particles, to clear zoneWoken_ at reset

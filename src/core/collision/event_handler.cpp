@@ -19,6 +19,7 @@ EventHandler::EventHandler(const CollisionSettings& settings, int eventsPerParti
       threads_(std::max(options.threads, 1)) {
   zones_.setRigidOnly(settings.failsafe == Failsafe::Rigid);
   zones_.setSleepers(&sleepers_);
+  zones_.setRestitution(settings.cor);
   if (options.zoneUpdatesPerRow > 0) zones_.setUpdatesPerRow(options.zoneUpdatesPerRow);
   zones_.setHold(options.hold);
   sleepers_.setEnabled(options.sleep);
@@ -244,7 +245,7 @@ void EventHandler::respond(const Scene& scene, const Event& e, State& state, Ste
   // be undone by the next kick, step after step (a ball on the floor at COR 0.5 bounced h g / 2
   // in every step, forever, and never slept). A contact that hits harder keeps its COR, and COR 1
   // stays elastic: no energy is lost that the scene asked to keep.
-  const double cor = cor_ < 1.0 && closing / h <= kRestingBounceKicks * kicksAlong(scene, e) ? 0.0 : cor_;
+  const double cor = cor_ < 1.0 && closing / h <= kRestingBounceKicks * zones_.kicksAlong(scene, e.key, e.normal, e.alpha) ? 0.0 : cor_;
   VelocityChange change;
   switch (keyKind(e.key)) {
     case PairKind::ParticleParticle:
@@ -271,26 +272,6 @@ void EventHandler::respond(const Scene& scene, const Event& e, State& state, Ste
     now.t = e.t;
     changed_.push_back(p);
   }
-}
-
-// Each side's kick along the normal, by size: a kick across the normal (gravity, for disks side
-// by side on a floor) does not close the contact, and the sides' kicks are not differenced,
-// since a disk resting on another closes at its own kick once the floor has stopped the lower.
-double EventHandler::kicksAlong(const Scene& scene, const Event& e) const {
-  const auto along = [&](int p) {
-    const bool obstacle = scene.isFixed(p) || sleepers_.asleep(p) || zones_.isImmobile(scene, p);
-    return obstacle ? 0.0 : std::fabs(sleepers_.kickVector(p).dot(e.normal));
-  };
-  const int i = keyParticle(e.key), other = keyOther(e.key);
-  switch (keyKind(e.key)) {
-    case PairKind::ParticleParticle: return along(i) + along(other);
-    case PairKind::ParticleEdge: {
-      const Edge& edge = scene.edges[other];
-      return along(i) + (1.0 - e.alpha) * along(edge.i) + e.alpha * along(edge.j);
-    }
-    case PairKind::ParticleHalfPlane: return along(i);
-  }
-  return 0.0;
 }
 
 // The trajectory file's polynomial log: every pair's polynomials over the predicted motion, in

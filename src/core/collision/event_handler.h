@@ -51,11 +51,6 @@ constexpr int kContinuousEventsPerParticle = 32;
 /// (their runs are the same to the bit with and without). The projection settles the rest.
 constexpr int kEventsPerInstant = 32;
 
-/// Resting contact does not bounce: an impulse takes COR 0 (for a scene COR below 1) when its
-/// contact closes no faster than this many times the step's kicks along its normal
-/// (EventHandler::kicksAlong). Resting contact closes at about one kick: a disk on the floor, or
-/// on a disk of a pile, in every step.
-constexpr double kRestingBounceKicks = 2.0;
 
 class EventHandler final : public CollisionHandler {
  public:
@@ -115,7 +110,6 @@ class EventHandler final : public CollisionHandler {
   void respond(const Scene& scene, const Event& e, State& state, StepContext& ctx);
   /// The sizes of what this step's forces gave the event's two sides along its normal, summed
   /// (m/s; sleepers.h's kicks; an obstacle's is 0, an edge's is its contact point's).
-  double kicksAlong(const Scene& scene, const Event& e) const;
   void logReferencePolynomials(const Scene& scene, const State& start, const State& state, StepContext& ctx);
   /// An error naming the first fixed particle that starts the step moving, if any (the default
   /// mode keeps pairs apart against fixed particles at rest; the reference moves one at its

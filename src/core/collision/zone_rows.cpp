@@ -7,6 +7,7 @@
 #include "fosssim/math/geometry.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace fosssim {
 namespace {
@@ -89,12 +90,23 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
     if (curving) row = contactRow(scene, key, [&](int p) { return motion.at(p, td); }, n);
   }
   if (n == Vec2::Zero()) return false;  // coincident centres: no direction to keep apart along
+  // A hit restitutes (ContactProjector::restitute) as an impulse event would: the zones keep the
+  // scene's COR, not only the projection's inelastic answer (a COR 1 ball wedged between two
+  // walls stopped dead). Resting contact does not bounce (kRestingBounceKicks, as for events),
+  // and a curving row's normal is not the one it closes along now.
+  double restitution = 0.0;
+  if (cor_ > 0.0 && !curving) {
+    const double closing = closingSpeed(scene, key, n, alpha, rate, scale);  // a rate: per step
+    if (closing > 0.0 && (cor_ >= 1.0 || closing > kRestingBounceKicks * h_ * kicksAlong(scene, key, n, alpha)))
+      restitution = cor_;
+  }
   if (const int* known = rowOf_.find(key)) {
     // A row no solve has seen yet was set at this instant (contacts of one instant wait for one
     // solve together): it stands. Replacing it would make its warm start, already applied, a
     // push that the solve could no longer take back, and that can add energy.
     if (*known >= solvedRows_) return false;
     projector_.setRow(*known, row, z);
+    projector_.setRestitution(*known, restitution);
     requeried_[*known] = 0;
     curving_[*known] = curving;
     unsolved_.push_back(key);
@@ -104,8 +116,11 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
   // their rigid velocities), so the impulse would act on the pair's other particle alone, which
   // the next rigid move then carries into the zone's momentum (free packs lost up to 15% of
   // their momentum so: ZoneAngularMomentum). Contacts inside a rigid zone are exempt anyway.
-  const double* last = record.rigid ? nullptr : lastImpulse_.find(key);
-  rowOf_.insert(key, projector_.addRow(row, last ? *last : 0.0, z));
+  // Nor for a hit: last step's impulse is a resting contact's, and it would bounce.
+  const double* last = record.rigid || restitution > 0.0 ? nullptr : lastImpulse_.find(key);
+  const int index = projector_.addRow(row, last ? *last : 0.0, z);
+  projector_.setRestitution(index, restitution);
+  rowOf_.insert(key, index);
   rowKey_.push_back(key);
   ++record.rowCount;
   requeried_.push_back(0);
@@ -149,6 +164,23 @@ math::ConstraintRow ContactZones::contactRow(const Scene& scene, uint64_t key, P
       break;
   }
   return row;
+}
+
+double ContactZones::kicksAlong(const Scene& scene, uint64_t key, const Vec2& n, double alpha) const {
+  const auto along = [&](int p) {
+    const bool obstacle = isImmobile(scene, p) || sleepers_ == nullptr;
+    return obstacle ? 0.0 : std::fabs(sleepers_->kickVector(p).dot(n));
+  };
+  const int i = keyParticle(key), other = keyOther(key);
+  switch (keyKind(key)) {
+    case PairKind::ParticleParticle: return along(i) + along(other);
+    case PairKind::ParticleEdge: {
+      const Edge& edge = scene.edges[other];
+      return along(i) + (1.0 - alpha) * along(edge.i) + alpha * along(edge.j);
+    }
+    case PairKind::ParticleHalfPlane: return along(i);
+  }
+  return 0.0;
 }
 
 bool ContactZones::RowsAt::rowNow(int index, math::ConstraintRow& out) {

@@ -1,0 +1,141 @@
+// ContactProjector::restitute: Moreau's restitution on a solve's impulses. Expected values come
+// from hand derivations on bodies of unit or given masses:
+//   * one contact: Newton's law, the contact leaves at e times its closing speed;
+//   * a wedge (two rows whose normals' cone holds the velocity in its polar cone): the projection
+//     is v* = 0, so P v + e (P v - v) = -e v, and the kinetic energy is e^2 of what came in;
+//   * a pair pushed into a wall, the pair's row restituting and the wall's not: the push sends the
+//     second body into the wall with more energy than came in (worked below), so the restitution
+//     is taken back and the projection stands;
+//   * restitution acts outside the multipliers: a later solve cannot take the bounce back, and
+//     totalImpulse (what warm-starts the contact in the next step) stays the projection's impulse.
+#include "fosssim/math/contact_projector.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "random_zones.h"
+
+namespace fosssim::math {
+namespace {
+
+using namespace testing;  // random_zones.h
+
+constexpr double kTol = 1e-12;
+constexpr long kBudget = 100000;
+
+double kinetic(const ContactProjector& cp, const std::vector<double>& mass) {
+  double e = 0;
+  for (size_t b = 0; b < mass.size(); ++b) e += 0.5 * mass[b] * cp.velocity(static_cast<int>(b)).squaredNorm();
+  return e;
+}
+
+// A body of mass 2 meets a wall (normal (0, 1)) at (3, -4): the wall takes 4 m/s of closing
+// speed, and with e the body leaves at 4 e along the normal, its tangential 3 m/s kept.
+TEST(ContactProjectorRestitution, OneContactLeavesAtETimesItsClosingSpeed) {
+  for (double e : {0.0, 0.25, 0.5, 1.0}) {
+    ContactProjector cp;
+    cp.reset(1);
+    cp.addBody(0, 0.5, Vec2(3, -4));
+    const int k = cp.addRow(halfPlaneRow(0, Vec2(0, 1)));
+    cp.setRestitution(k, e);
+    ASSERT_TRUE(cp.solve(5.0, kTol, kBudget));
+    EXPECT_EQ(cp.restitute(), e > 0.0) << "e = " << e;
+    EXPECT_NEAR(cp.velocity(0).x(), 3.0, 1e-9) << "e = " << e;
+    EXPECT_NEAR(cp.velocity(0).y(), 4.0 * e, 1e-9) << "e = " << e;
+    // The projection's impulse, m times the closing speed (8), whatever e.
+    EXPECT_NEAR(cp.totalImpulse(k), 8.0, 1e-9) << "e = " << e;
+  }
+}
+
+// Two walls at +-1 degree from the x axis, open towards +x; a unit mass moving into the apex
+// at (-5, 0.3). Both walls' rows bind (the velocity lies in the polar cone of the walls' cone),
+// the projection stops it, and restitution sends it back out at -e v.
+TEST(ContactProjectorRestitution, AWedgeSendsABallBackAtETimesItsVelocity) {
+  const double th = 1.0 * M_PI / 180.0;
+  const Vec2 lower(std::sin(th), std::cos(th)), upper(std::sin(th), -std::cos(th));
+  const Vec2 v(-5.0, 0.3);
+  for (double e : {0.5, 1.0}) {
+    ContactProjector cp;
+    cp.reset(1);
+    cp.addBody(0, 1.0, v);
+    cp.setRestitution(cp.addRow(halfPlaneRow(0, lower)), e);
+    cp.setRestitution(cp.addRow(halfPlaneRow(0, upper)), e);
+    ASSERT_TRUE(cp.solve(5.0, kTol, kBudget));
+    EXPECT_LE(cp.velocity(0).norm(), 1e-9);  // the projection: rest
+    ASSERT_TRUE(cp.restitute());
+    EXPECT_NEAR(cp.velocity(0).x(), -e * v.x(), 1e-9) << "e = " << e;
+    EXPECT_NEAR(cp.velocity(0).y(), -e * v.y(), 1e-9) << "e = " << e;
+    EXPECT_NEAR(kinetic(cp, {1.0}), e * e * 0.5 * v.squaredNorm(), 1e-8) << "e = " << e;
+  }
+}
+
+// Body 0 (mass 1) moves at 1 m/s into body 1 (mass 1) resting against a wall beyond it. The
+// projection stops both: the pair's impulse is 1 and so is the wall's. Restituting the pair's row
+// alone (e = 1) would add its impulse again: body 0 back at -1 and body 1 into the wall at +1,
+// kinetic energy 1 where 1/2 came in. So the restitution is taken back: both stay at rest.
+TEST(ContactProjectorRestitution, RestitutionThatWouldAddEnergyIsTakenBack) {
+  ContactProjector cp;
+  cp.reset(2);
+  cp.addBody(0, 1.0, Vec2(1, 0));
+  cp.addBody(1, 1.0, Vec2(0, 0));
+  const int pair = cp.addRow(pairRow(0, 1, Vec2(1, 0)));
+  const int wall = cp.addRow(halfPlaneRow(1, Vec2(-1, 0)));
+  cp.setRestitution(pair, 1.0);
+  cp.setRestitution(wall, 0.0);
+  ASSERT_TRUE(cp.solve(1.0, kTol, kBudget));
+  EXPECT_FALSE(cp.restitute());
+  EXPECT_LE(cp.velocity(0).norm(), 1e-9);
+  EXPECT_LE(cp.velocity(1).norm(), 1e-9);
+  // With the same coefficient on both rows it is Moreau's law, and keeps the energy at e = 1:
+  // body 0 leaves at -1, body 1 stays (P v - v is -1 for body 0 and 0 for body 1).
+  ContactProjector both;
+  both.reset(2);
+  both.addBody(0, 1.0, Vec2(1, 0));
+  both.addBody(1, 1.0, Vec2(0, 0));
+  both.setRestitution(both.addRow(pairRow(0, 1, Vec2(1, 0))), 1.0);
+  both.setRestitution(both.addRow(halfPlaneRow(1, Vec2(-1, 0))), 1.0);
+  ASSERT_TRUE(both.solve(1.0, kTol, kBudget));
+  ASSERT_TRUE(both.restitute());
+  EXPECT_NEAR(both.velocity(0).x(), -1.0, 1e-9);
+  EXPECT_NEAR(both.velocity(1).norm(), 0.0, 1e-9);
+}
+
+// A later solve of the same rows (the next instant's) finds the bounced body moving away: a
+// multiplier could be taken back, the restitution cannot. The head-on pair of unit masses at
+// +-1 m/s with e = 1 exchanges velocities and keeps them.
+TEST(ContactProjectorRestitution, ALaterSolveDoesNotTakeTheBounceBack) {
+  ContactProjector cp;
+  cp.reset(2);
+  cp.addBody(0, 1.0, Vec2(1, 0));
+  cp.addBody(1, 1.0, Vec2(-1, 0));
+  const int k = cp.addRow(pairRow(0, 1, Vec2(1, 0)));
+  cp.setRestitution(k, 1.0);
+  ASSERT_TRUE(cp.solve(1.0, kTol, kBudget));
+  ASSERT_TRUE(cp.restitute());
+  std::vector<int> changed;
+  cp.takeChanged(changed);
+  cp.queueRow(k);
+  ASSERT_TRUE(cp.solve(1.0, kTol, kBudget));
+  EXPECT_NEAR(cp.velocity(0).x(), -1.0, 1e-9);
+  EXPECT_NEAR(cp.velocity(1).x(), 1.0, 1e-9);
+  EXPECT_NEAR(cp.totalImpulse(k), 1.0, 1e-9);  // the projection's: each body stopped from 1 m/s
+}
+
+// reset() forgets the coefficients with the rows: a row added after it is inelastic.
+TEST(ContactProjectorRestitution, RowsAddedAfterAResetAreInelastic) {
+  ContactProjector cp;
+  cp.reset(1);
+  cp.addBody(0, 1.0, Vec2(0, -1));
+  cp.setRestitution(cp.addRow(halfPlaneRow(0, Vec2(0, 1))), 1.0);
+  cp.reset(1);
+  cp.addBody(0, 1.0, Vec2(0, -1));
+  cp.addRow(halfPlaneRow(0, Vec2(0, 1)));
+  ASSERT_TRUE(cp.solve(1.0, kTol, kBudget));
+  EXPECT_FALSE(cp.restitute());
+  EXPECT_NEAR(cp.velocity(0).y(), 0.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace fosssim::math
