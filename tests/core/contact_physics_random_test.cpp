@@ -5,6 +5,9 @@
 // each test must leave nothing unresolved (stepClean). Hand-made scenes: contact_physics_test.cpp.
 #include "contact_physics.h"
 
+#include "fosssim/core/forces.h"
+
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <random>
@@ -184,6 +187,113 @@ TEST(ContactPhysicsRandom, DensePacksScaledByPowersOfTwoRunTheSame) {
         ASSERT_EQ(a.state.v, b.state.v / scale) << "pack " << pack << " at 2^" << exponent << ", step " << k + 1;
       }
     }
+}
+
+// A pile of 40 disks (radii 0.02-0.15, log-uniform; masses e^-spread .. e^spread, log-uniform)
+// thrown into a box of a floor and two walls (unnormalised normals) under gravity, with up to 8
+// edges of radius 0.005-0.03 between nearby disks, each held at its length by a spring of
+// stiffness 2000 times its lighter end's mass, under `integrator`. Every length, speed and the
+// gravity are multiplied by `scale` (the springs' stiffness per mass needs no change).
+TestScene pileUnderForces(int seed, const char* type, double cor, const char* integrator, double spread,
+                          double scale = 1.0) {
+  Rng rng(seed);
+  TestScene s = contactScene(type, cor);
+  s.scene.integrator = integrator;
+  addFloorAndGravity(s, 9.81 * scale);
+  s.scene.halfplanes.push_back(HalfPlane{Vec2(-scale, 0), Vec2(1, 0)});
+  s.scene.halfplanes.push_back(HalfPlane{Vec2(scale, 0), Vec2(-3, 0)});
+  std::vector<Vec2> x;
+  std::vector<double> r;
+  for (int tries = 0; x.size() < 40 && tries < 5000; ++tries) {
+    const double radius = std::exp(uniform(rng, std::log(0.02), std::log(0.15)));
+    const Vec2 p(uniform(rng, -1 + radius, 1 - radius), uniform(rng, radius, 2.0));
+    bool free = true;
+    for (size_t k = 0; k < x.size(); ++k) free = free && (x[k] - p).norm() > r[k] + radius + 0.002;
+    if (!free) continue;
+    x.push_back(p);
+    r.push_back(radius);
+    const double m = std::exp(uniform(rng, -spread, spread));
+    addBody(s, m, scale * p, scale * Vec2(uniform(rng, -2, 2), uniform(rng, -2, 2)), scale * radius);
+  }
+  const int n = s.state.numParticles();
+  for (int tries = 0; tries < 60 && s.scene.edges.size() < 8; ++tries) {
+    const int a = uniformInt(rng, 0, n - 1), b = uniformInt(rng, 0, n - 1);
+    if (a == b || (x[a] - x[b]).norm() > 0.5) continue;
+    const double radius = uniform(rng, 0.005, 0.03);
+    bool free = true;
+    for (int k = 0; k < n && free; ++k)
+      if (k != a && k != b) free = segmentDistance(x[k], x[a], x[b]) > r[k] + radius + 0.002;
+    for (const Edge& e : s.scene.edges) free = free && !((e.i == a && e.j == b) || (e.i == b && e.j == a));
+    if (!free) continue;
+    s.scene.edges.push_back(Edge{a, b, scale * radius});
+    const double k = 2000.0 * std::min(s.scene.massOf(a), s.scene.massOf(b));
+    s.scene.forces.push_back(std::make_unique<SpringForce>(a, b, k, scale * (x[a] - x[b]).norm(), 0.0));
+  }
+  return s;
+}
+
+// 1g. Responses under forces: piles of disks and sprung edges falling into a box under gravity,
+// masses spread over e^-14 .. e^14 (or all 1), with the symplectic and both implicit integrators,
+// COR 0, 0.5 and 1, both types, 150 steps (they land, pile up and mostly come to rest). With
+// forces kinetic energy is not conserved by the step, so each step's collision handling is
+// measured against the integrator's own prediction: a twin without collision handling steps from
+// the same state, and the kinetic energy after the step may not exceed the twin's (impulses and
+// the failsafe only take energy away). Sleeping is off (a sleeper is not integrated, so the twin
+// would not be its prediction). Each step must also end collision-free. (The explicit method's
+// responses act on the step's start velocities, not on the prediction: README.)
+TEST(ContactPhysicsRandom, PilesUnderForcesGainNoKineticEnergyFromTheirContacts) {
+  const char* integrators[] = {"symplectic-euler", "implicit-euler", "linearized-implicit-euler"};
+  for (const char* type : kEventTypes)
+    for (const char* integrator : integrators)
+      for (double spread : {0.0, 14.0})
+        for (double cor : {0.0, 0.5, 1.0}) {
+          const int seed = 7 + static_cast<int>(spread) + static_cast<int>(10 * cor);
+          SCOPED_TRACE(std::string(type) + " " + integrator + " mass spread e^" + std::to_string(spread) + " COR " +
+                       std::to_string(cor) + " seed " + std::to_string(seed));
+          TestScene s = pileUnderForces(seed, type, cor, integrator, spread);
+          TestScene twin = pileUnderForces(seed, type, cor, integrator, spread);
+          twin.scene.collision.type = test::collisionType("none");
+          auto sim = defaultModeSimulator(s, /*sleep=*/false), free = defaultModeSimulator(twin, false);
+          long contacts = 0;
+          for (int k = 0; k < 150; ++k) {
+            twin.state = s.state;
+            ASSERT_TRUE(free->step(twin.scene, twin.state).isOk());
+            ASSERT_TRUE(stepClean(*sim, s));
+            contacts += sim->stats().collisions;
+            ASSERT_LE(kinetic(s), kinetic(twin) * (1 + 1e-10)) << "step " << k + 1;
+          }
+          EXPECT_GT(contacts, 200) << "the pile should have landed";
+        }
+}
+
+// 5d. Units with forces and sleeping: those piles (masses e^-7 .. e^7) with every length, speed
+// and the gravity multiplied by 2^30 and 2^-30 run bit for bit as the unscaled ones over 300
+// steps, with the symplectic and both implicit integrators (Newton's tolerance included), COR 0
+// and 0.5, where the piles come to rest and fall asleep (the sleep thresholds, kicks and wakes
+// included).
+TEST(ContactPhysicsRandom, PilesUnderForcesScaledByPowersOfTwoRunTheSame) {
+  const char* integrators[] = {"symplectic-euler", "implicit-euler", "linearized-implicit-euler"};
+  for (const char* type : kEventTypes)
+    for (const char* integrator : integrators)
+      for (double cor : {0.0, 0.5})
+        for (int exponent : {-30, 30}) {
+          SCOPED_TRACE(std::string(type) + " " + integrator + " COR " + std::to_string(cor) + " at 2^" +
+                       std::to_string(exponent));
+          const double scale = std::ldexp(1.0, exponent);
+          TestScene a = pileUnderForces(3, type, cor, integrator, 7.0);
+          TestScene b = pileUnderForces(3, type, cor, integrator, 7.0, scale);
+          auto simA = defaultModeSimulator(a), simB = defaultModeSimulator(b);
+          int asleep = 0;
+          for (int k = 0; k < 300; ++k) {
+            ASSERT_TRUE(simA->step(a.scene, a.state).isOk());
+            ASSERT_TRUE(simB->step(b.scene, b.state).isOk());
+            ASSERT_EQ(a.state.x, b.state.x / scale) << "step " << k + 1;
+            ASSERT_EQ(a.state.v, b.state.v / scale) << "step " << k + 1;
+            ASSERT_EQ(simA->stats().asleep, simB->stats().asleep) << "step " << k + 1;
+            asleep = std::max(asleep, simA->stats().asleep);
+          }
+          EXPECT_GT(asleep, 0) << "the pile should have fallen asleep";
+        }
 }
 
 // 2b. Thirty shots of three fast disks (20-200 m/s across a slot, so up to 40 bounces per step)
