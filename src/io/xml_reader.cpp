@@ -85,6 +85,13 @@ bool ElementReader::parseNumber(const tinyxml2::XMLAttribute& attribute, double&
     fail(attribute.Name(), "expected a number, got " + quoted(text));
     return false;
   }
+  // strtod also reads C99 hexadecimal ("0x10" is 16, "0x1p-3" 0.125), which the course's stream
+  // extraction read as 0 followed by ignored junk: a value the two would read differently, and no
+  // scene means, so only decimal numbers are numbers.
+  if (std::find_if(p, static_cast<const char*>(end), [](char c) { return c == 'x' || c == 'X'; }) != end) {
+    fail(attribute.Name(), "expected a number (decimal; hexadecimal is not read), got " + quoted(text));
+    return false;
+  }
   // ERANGE also flags underflow ("1e-400" reads as 0 or a denormal), which is a fine value.
   if (!std::isfinite(value) || (errno == ERANGE && std::fabs(value) > 1.0)) {
     fail(attribute.Name(), "expected a finite number, got " + quoted(text));
