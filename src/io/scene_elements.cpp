@@ -92,7 +92,16 @@ void readEdge(ElementReader& r, Builder& b) {
 
 void readHalfplane(ElementReader& r, Builder& b) {
   HalfPlane h{readVec(r, "px", "py"), readVec(r, "nx", "ny")};
-  if (r.ok() && h.normal.squaredNorm() == 0.0) r.fail("nx", "the half-plane normal (nx, ny) must not be zero");
+  if (r.ok() && h.normal.x() == 0.0 && h.normal.y() == 0.0) r.fail("nx", "the half-plane normal (nx, ny) must not be zero");
+  // The normal need not be a unit vector, and the core takes its length as sqrt(nx^2 + ny^2):
+  // beyond about 1e154 the square overflows (every distance became 0 or NaN and particles fell
+  // through), below about 1e-154 it is subnormal or 0 (imprecise, or "must not be zero" for a
+  // normal that is not). Scaling by a power of two is exact and keeps the direction, so such a
+  // normal is brought to a largest component in [1, 2); any other is kept as written.
+  if (r.ok() && !std::isnormal(h.normal.squaredNorm())) {
+    const int exponent = std::ilogb(h.normal.cwiseAbs().maxCoeff());
+    h.normal = Vec2(std::ldexp(h.normal.x(), -exponent), std::ldexp(h.normal.y(), -exponent));
+  }
   b.out.scene.halfplanes.push_back(h);
 }
 
