@@ -13,6 +13,7 @@
 #include "xml_syntax.h"
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <new>
@@ -121,6 +122,16 @@ Status parseDocument(const std::string& raw, const std::string& name, SceneFile&
   if (const size_t nul = raw.find('\0'); nul != std::string::npos)
     return Status::error(messages.at(io::lineOf(raw, nul)) + "a NUL byte (at byte " + io::withThousands(static_cast<long>(nul)) +
                          "): a scene file is XML text, and nothing after it could be read");
+  // A control character would reach the terminal with the description or a message quoting a
+  // value (an escape sequence acts there), and XML does not allow one, even written as &#27;.
+  if (io::ControlCharacter control; io::findControlCharacter(raw, control)) {
+    char code[8];
+    std::snprintf(code, sizeof code, "U+%04X", control.code);
+    return Status::error(messages.at(io::lineOf(raw, control.offset)) + "a control character, " + code +
+                         (control.written.empty() ? "" : " (written " + control.written + ")") + ", at byte " +
+                         io::withThousands(static_cast<long>(control.offset)) +
+                         ": XML allows none but tab and line ends, and a scene file is text");
+  }
   const std::string text = io::normalizeLineEnds(raw);
   // Before tinyxml2, whose check for repeated attributes makes a flood of them on one element
   // take minutes (xml_syntax.h).

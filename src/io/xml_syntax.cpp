@@ -258,6 +258,43 @@ bool findCrowdedElement(const std::string& text, CrowdedElement& found) {
   return false;
 }
 
+bool findControlCharacter(const std::string& text, ControlCharacter& found) {
+  const auto forbidden = [](unsigned c) { return c < 0x20 && c != '\t' && c != '\n' && c != '\r'; };
+  const size_t size = text.size();
+  size_t verbatimEnd = 0;  // inside a comment or CDATA section up to here: '&' is text there
+  for (size_t p = 0; p < size; ++p) {
+    const auto byte = static_cast<unsigned char>(text[p]);
+    if (forbidden(byte)) {
+      found = {p, byte, ""};
+      return true;
+    }
+    if (p < verbatimEnd || (byte != '<' && byte != '&')) continue;
+    if (byte == '<') {
+      const char* end = text.compare(p, 4, "<!--") == 0 ? "-->" : text.compare(p, 9, "<![CDATA[") == 0 ? "]]>" : nullptr;
+      if (end) verbatimEnd = std::min(size, text.find(end, p + 4));  // unclosed: the rest (the parser reports it)
+      continue;
+    }
+    if (p + 2 >= size || text[p + 1] != '#') continue;
+    const bool hex = text[p + 2] == 'x';
+    size_t q = p + (hex ? 3 : 2);
+    unsigned long code = 0;
+    const size_t digitsFrom = q;
+    for (; q < size && q - digitsFrom < 12; ++q) {
+      const char c = text[q];
+      const int digit = c >= '0' && c <= '9' ? c - '0'
+                        : hex && c >= 'a' && c <= 'f' ? c - 'a' + 10
+                        : hex && c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
+      if (digit < 0) break;
+      code = code * (hex ? 16 : 10) + static_cast<unsigned long>(digit);
+    }
+    if (q == digitsFrom || q >= size || text[q] != ';' || code >= 0x20 || !forbidden(static_cast<unsigned>(code)))
+      continue;
+    found = {p, static_cast<unsigned>(code), text.substr(p, q + 1 - p)};
+    return true;
+  }
+  return false;
+}
+
 XmlProblem explainXmlError(const std::string& text, int errorId, int errorLine) {
   XmlProblem problem;
   if (errorId != tinyxml2::XML_ELEMENT_DEPTH_EXCEEDED && Scanner(text).scan(problem)) return problem;
