@@ -253,18 +253,39 @@ bool isOptionWord(const std::string& word, const std::vector<std::string>& names
   return false;
 }
 
+/// The option that `name` ("-o", "--movie") names when it takes a value; nullptr otherwise.
+const CLI::Option* valueOption(const CLI::App& app, const std::string& name) {
+  for (const CLI::Option* opt : app.get_options()) {
+    if (opt->get_items_expected_min() == 0) continue;
+    for (const std::string& s : opt->get_snames())
+      if (name == "-" + s) return opt;
+    for (const std::string& l : opt->get_lnames())
+      if (name == "--" + l) return opt;
+  }
+  return nullptr;
+}
+
 /// CLI11 takes the word after an option as its value whatever it is: "-o -i ref.bin" wrote the
 /// trajectory to a file named "-i" (and "ref.bin" was then an unexpected argument), "-o -q" ran
-/// without -q. Such a value is an error, before the words it leaves over are judged.
-std::string optionTakenAsValue(const CLI::App& app) {
+/// without -q. A value given as the next word may not be an option; one given after '='
+/// ("--movie=-m.mkv") is plainly a value. "-" names no file: "-o -" wrote a file named "-" where
+/// the convention means standard output. `words` are argv as given.
+std::string optionTakenAsValue(const CLI::App& app, const std::vector<std::string>& words) {
   const std::vector<std::string> names = optionNames(app);
-  for (const CLI::Option* opt : app.get_options())
-    for (const std::string& value : opt->results())
-      if (opt->get_items_expected_min() > 0 && isOptionWord(value, names)) {
-        const std::string name = opt->get_lnames().empty() ? "-" + opt->get_snames().at(0) : "--" + opt->get_lnames()[0];
-        return "option " + name + " needs a value, and the next word \"" + value +
-               "\" is an option (for a file of that name write ./" + value + ")";
-      }
+  for (size_t k = 1; k < words.size(); ++k) {
+    const std::string& w = words[k];
+    const size_t equals = w.find('=');
+    if (!valueOption(app, w.substr(0, equals))) continue;  // not an option, a flag, or "-d0" (its value joined)
+    const bool joined = equals != std::string::npos;
+    if (!joined && k + 1 == words.size()) break;  // no value: CLI11's error
+    const std::string name = w.substr(0, equals), value = joined ? w.substr(equals + 1) : words[++k];
+    if (!joined && isOptionWord(value, names))
+      return "option " + name + " needs a value, and the next word \"" + value +
+             "\" is an option (for a file of that name write ./" + value + ")";
+    if (value == "-")
+      return "option " + name + " takes a name, and \"-\" (standard input or output elsewhere) is none here: FOSSSim "
+             "reads and writes named files only (for a file named - write ./-)";
+  }
   return "";
 }
 
@@ -325,6 +346,8 @@ bool parseOptions(int originalArgc, char** originalArgv, Options& o, std::string
   CLI::App app;
   Given g;
   define(app, o, g);
+  if (error = optionTakenAsValue(app, std::vector<std::string>(originalArgv, originalArgv + originalArgc)); !error.empty())
+    return false;
   std::vector<std::string> words = splitShortValues(app, originalArgc, originalArgv);
   std::vector<char*> pointers;
   for (std::string& w : words) pointers.push_back(w.data());
@@ -348,7 +371,6 @@ bool parseOptions(int originalArgc, char** originalArgv, Options& o, std::string
     error = std::string(e.what()) + " (FOSSSim -h lists the options)";
     return false;
   }
-  if (error = optionTakenAsValue(app); !error.empty()) return false;
   if (!app.remaining().empty()) {
     error = shortFlagWithValue(app.remaining().front(), argc, argv);
     if (error.empty()) error = unknownWord(app, app.remaining().front());

@@ -182,6 +182,14 @@ TEST(Cli, AnOptionIsNoOtherOptionsValue) {
     // Without the check a file of the option's name appeared in the working directory.
     if (!existed && std::filesystem::remove_all(extra[1]) > 0) ADD_FAILURE() << "wrote \"" << extra[1] << "\"";
   }
+  // "-" is standard output (or input) by convention: "-o -" wrote a file named "-".
+  for (const char* option : {"-o", "--stats", "-m", "-s"}) {
+    const bool existed = std::filesystem::exists("-");
+    std::vector<std::string> args = {"-d", "0", option, "-"};
+    if (option != std::string("-s")) args.insert(args.begin(), {"-s", goodScene()});
+    expectUsageError(args, "option " + std::string(option) + " takes a name, and \"-\"");
+    if (!existed && std::filesystem::remove_all("-") > 0) ADD_FAILURE() << option << " - wrote a file named \"-\"";
+  }
 }
 
 TEST(Cli, NearMissesAreSuggested) {

@@ -55,6 +55,9 @@ TEST(Options, ValuesJoinedOrAfterAnEqualsSign) {
   EXPECT_EQ(parse({"-s", "a.xml", "-o", "=x.bin"}).output, "=x.bin");  // a separate word is the value as given
   // A file whose name begins with '-' is given with a path: ./-i.
   EXPECT_EQ(parse({"-s", "a.xml", "-o", "./-i"}).output, "./-i");
+  // After '=' a value is plainly one, even one that begins like an option.
+  EXPECT_EQ(parse({"-s", "a.xml", "--stats=-q.csv"}).stats, "-q.csv");
+  EXPECT_EQ(parse({"-s", "a.xml", "-o=-d.bin"}).output, "-d.bin");
 }
 
 TEST(Options, TheFrameRateIsADecimal) {
