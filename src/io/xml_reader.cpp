@@ -123,9 +123,12 @@ double ElementReader::checked(const AttributeSpec& spec, const tinyxml2::XMLAttr
       if (value < 0 || value > 1) return fail(spec.name, std::string("must lie in [0, 1]") + got), 1.0;
       break;
     case Kind::Index:
-      if (value != std::floor(value) || std::fabs(value) > 2e9)
-        return fail(spec.name, "expected an integer" + got), -1.0;
+      if (value != std::floor(value)) return fail(spec.name, "expected an integer" + got), -1.0;
       if (value < 0) return fail(spec.name, "expected an index >= 0" + got), -1.0;
+      // An index is kept as an int; "2147483648" is an integer (it was "expected an integer"),
+      // and names nothing: a scene file of at most 256 MiB holds far fewer elements.
+      if (value > 2e9)
+        return fail(spec.name, "index too large: no scene has 2e9 elements of a kind (numbered from 0)" + got), -1.0;
       break;
     case Kind::Flag:
       if (value != 0 && value != 1) return fail(spec.name, "expected 0 or 1" + got), 0.0;

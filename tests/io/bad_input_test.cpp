@@ -181,6 +181,23 @@ TEST(BadInput, ColourChannelsOutsideZeroOneAreRejected) {
       }
 }
 
+// An integer beyond an int is no "expected an integer" (it is one): it is too large to name anything.
+TEST(BadInput, AnIndexBeyondAnyCountIsTooLarge) {
+  for (const char* big : {"2147483648", "2e9 ", "1e300", "99999999999999999999"}) {
+    SCOPED_TRACE(big);
+    const std::string v = std::string("\"") + big + "\"";
+    for (const std::string& text : {"  <particlecolor i=" + v + " r=\"0\" g=\"0\" b=\"0\"/>",
+                                    "  <springforce edge=" + v + " k=\"1\" l0=\"1\"/>"}) {
+      const std::string message = loadError(extra(text));
+      EXPECT_NE(message.find(located(kExtraLine, text[3] == 'p' ? "particlecolor" : "springforce", text[3] == 'p' ? "i" : "edge")),
+                std::string::npos) << message;
+      EXPECT_EQ(message.find("expected an integer"), std::string::npos) << message;
+      EXPECT_TRUE(message.find("too large") != std::string::npos || message.find("does not exist") != std::string::npos)
+          << message;
+    }
+  }
+}
+
 TEST(BadInput, IndicesMustBeNonNegativeIntegers) {
   for (const char* bad : {"-1", "0.5", "1e10", "-2147483649"}) {
     SCOPED_TRACE(bad);
