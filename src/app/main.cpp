@@ -74,6 +74,7 @@ int run(int argc, char** argv) {
   if (Status s = Simulator::create(file.scene, simOptions, simulator); !s) return fail(s.message());
 
   if (!options.input.empty()) {
+    if (Status s = checkGradedFile(options); !s) return fail(s.message());
     const GradeReport report = gradeFile(file.scene, file.initial, *simulator, simOptions, options.input, std::cout);
     if (report.unreadable) return fail(report.structuralError);  // one error, no verdicts on nothing
     return report.passed(GradeTolerances{}) ? kExitOk : kExitFailure;

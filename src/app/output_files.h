@@ -29,6 +29,10 @@ std::string partialName(const std::string& path);
 /// outputs would write one file (a final or partial name of -o or --movie, --stats, a frame).
 Status checkOutputsAgainstInputs(const Options& options);
 
+/// Fails when -i names the scene file itself (under any name or link): its XML was read as
+/// records and graded, a "Failed" full of numbers made of text.
+Status checkGradedFile(const Options& options);
+
 /// One output written under its partial name and renamed at the end.
 class StagedFile {
  public:

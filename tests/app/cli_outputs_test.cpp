@@ -125,7 +125,13 @@ TEST_F(CliOutputs, StatsIsNeitherAnInputNorAnotherOutput) {
   const std::string frame = path("svg/frame00000000000000000002.svg");
   expectClash({"-m", path("svg"), "--stats", frame}, {"--stats \"" + frame + "\" is a frame file that -m writes"},
               {frame});
+  // -m's folder under an output's name (or its partial name): the folder was made, then the
+  // output's open failed on it.
+  expectClash({"-o", o1, "-m", o1}, {"-o \"" + o1 + "\" is the folder that -m writes its frames into"}, {o1, o1Partial});
+  expectClash({"-o", o1, "-m", o1Partial + "/"}, {"the partial file \"" + o1Partial + "\" of -o", "-m"}, {o1, o1Partial});
+  expectClash({"--stats", o1, "-m", (dir_ / "." / "o1.bin").string()}, {"--stats \"" + o1 + "\" is the folder"}, {o1});
   if (FOSSSIM_WITH_RENDER) {
+    expectClash({"--stats", o1, "-g", "1", "--png-dir", o1}, {"is the folder that --png-dir writes"}, {o1});
     const std::string movie = path("base.mp4"), moviePartial = path("base.partial.mp4");
     expectClash({"--movie", movie, "--stats", movie}, {"--stats \"" + movie + "\" and --movie \"" + movie + "\""},
                 {movie, moviePartial});
