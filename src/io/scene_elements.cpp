@@ -30,7 +30,7 @@ std::string keywords(const Table& table) {
 void readSimtype(ElementReader& r, Builder&) {
   const std::string type = r.text("type");
   if (type != "particle-system")
-    r.fail("type", "simulation type \"" + type + "\" is not supported (valid: particle-system)");
+    r.fail("type", "simulation type \"" + clip(type) + "\" is not supported (valid: particle-system)");
 }
 
 void readDescription(ElementReader& r, Builder& b) { b.out.description = r.text("text"); }
@@ -46,7 +46,7 @@ void readDuration(ElementReader& r, Builder& b) {
 void readIntegrator(ElementReader& r, Builder& b) {
   const std::string type = r.text("type");
   if (r.has("type") && !findIntegrator(type))
-    r.fail("type", "unknown integrator \"" + type + "\" (valid: " + keywords(integratorTable()) + ")");
+    r.fail("type", "unknown integrator \"" + clip(type) + "\" (valid: " + keywords(integratorTable()) + ")");
   b.out.scene.integrator = findIntegrator(type) ? type : integratorTable().front().keyword;
   b.out.scene.dt = r.number("dt");
   b.integratorOk = r.ok();
@@ -147,7 +147,7 @@ void readCollision(ElementReader& r, Builder& b) {
   const CollisionEntry* entry = findCollisionType(type);
   if (!entry) {
     if (r.has("type"))
-      r.fail("type", "unknown collision type \"" + type + "\" (valid: " + keywords(collisionTable()) + ")");
+      r.fail("type", "unknown collision type \"" + clip(type) + "\" (valid: " + keywords(collisionTable()) + ")");
     entry = &collisionTable().front();
   }
   c.type = entry->type;
@@ -157,7 +157,7 @@ void readCollision(ElementReader& r, Builder& b) {
   const std::string failsafe = r.text("failsafe");
   if (failsafe == "projection") c.failsafe = Failsafe::Projection;
   else if (failsafe == "rigid") c.failsafe = Failsafe::Rigid;
-  else r.fail("failsafe", "unknown failsafe \"" + failsafe + "\" (valid: projection, rigid)");
+  else r.fail("failsafe", "unknown failsafe \"" + clip(failsafe) + "\" (valid: projection, rigid)");
   c.penaltyK = r.number("k", entry->defaultK);
   c.penaltyThickness = r.number("thickness", entry->defaultThickness);
   b.collisionOk = r.ok();

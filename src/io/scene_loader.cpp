@@ -46,13 +46,13 @@ std::string elementNames() {
 
 /// Reports what lies inside a known element: the format's elements take attributes only.
 void reportContent(const tinyxml2::XMLElement& e, SceneMessages& m) {
-  const std::string parent = e.Name();
+  const std::string parent = e.Name();  // a known element's: short
   for (const tinyxml2::XMLNode* c = e.FirstChild(); c; c = c->NextSibling()) {
     if (c->ToComment()) continue;
     const int line = c->GetLineNum();
     if (const tinyxml2::XMLElement* child = c->ToElement())
       m.warn(line, "element inside <" + parent + ">", "elements inside <" + parent + ">",
-             m.at(line) + "<" + child->Name() + "> inside <" + parent +
+             m.at(line) + "<" + io::clip(child->Name()) + "> inside <" + parent +
                  "> ignored (elements are read only directly inside <scene>; <" + parent + "> takes attributes only)");
     else if (const tinyxml2::XMLText* text = c->ToText())
       m.warn(line, "text inside <" + parent + ">", "texts inside <" + parent + ">",
@@ -95,8 +95,9 @@ void readElement(const tinyxml2::XMLElement& e, Builder& b, std::vector<const El
       b.unknownElements.emplace_back(e.Name(), line);
     }
     const std::string& guess = known->second;
-    m.warn(line, "unknown element <" + std::string(e.Name()) + ">", "unknown elements <" + std::string(e.Name()) + ">",
-           m.at(line) + "<" + e.Name() + ">: unknown element ignored" +
+    const std::string shown = io::clip(e.Name());
+    m.warn(line, "unknown element <" + shown + ">", "unknown elements <" + shown + ">",
+           m.at(line) + "<" + shown + ">: unknown element ignored" +
                (!guess.empty() ? "; did you mean <" + guess + ">?"
                 : first        ? " (valid: " + elementNames() + ")"
                                : ""));
@@ -136,7 +137,7 @@ Status parseDocument(const std::string& raw, const std::string& name, SceneFile&
   // Before tinyxml2, whose check for repeated attributes makes a flood of them on one element
   // take minutes (xml_syntax.h).
   if (io::CrowdedElement crowded; io::findCrowdedElement(text, crowded)) {
-    return Status::error(messages.at(crowded.line) + "<" + crowded.name + ">: " + io::withThousands(crowded.attributes) +
+    return Status::error(messages.at(crowded.line) + "<" + io::clip(crowded.name) + ">: " + io::withThousands(crowded.attributes) +
                          " attributes, more than the " + io::withThousands(io::kMaxAttributes) +
                          " an element may have (the scene format's take at most " + std::to_string(io::mostAttributes()) + ")");
   }
@@ -151,15 +152,15 @@ Status parseDocument(const std::string& raw, const std::string& name, SceneFile&
   const tinyxml2::XMLElement* root = doc.RootElement();
   if (!root) return Status::error(name + ": the file holds no XML element (expected <scene>)");
   if (std::string(root->Name()) != "scene")
-    return Status::error(messages.at(root->GetLineNum()) + "the root element is <" + root->Name() + ">, expected <scene>");
+    return Status::error(messages.at(root->GetLineNum()) + "the root element is <" + io::clip(root->Name()) + ">, expected <scene>");
   if (const tinyxml2::XMLElement* second = root->NextSiblingElement())
-    return Status::error(messages.at(second->GetLineNum()) + "unexpected element <" + second->Name() + "> after </scene>");
+    return Status::error(messages.at(second->GetLineNum()) + "unexpected element <" + io::clip(second->Name()) + "> after </scene>");
 
   for (const tinyxml2::XMLNode* n = doc.FirstChild(); n; n = n->NextSibling())
     if (n != root && !n->ToDeclaration()) reportOther(*n, messages);
   for (const tinyxml2::XMLAttribute* a = root->FirstAttribute(); a; a = a->Next())
     messages.warn(root->GetLineNum(), "attribute on <scene>", "attributes on <scene>",
-                  messages.at(root->GetLineNum()) + "<scene> attribute '" + a->Name() +
+                  messages.at(root->GetLineNum()) + "<scene> attribute '" + io::clip(a->Name()) +
                       "': ignored (<scene> takes no attributes)");
   Builder builder(out, messages);
   std::vector<const ElementSpec*> seen;

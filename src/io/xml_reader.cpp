@@ -63,7 +63,7 @@ const tinyxml2::XMLAttribute* ElementReader::find(const char* attributeName) {
     std::vector<std::string> wanted = {attributeName};
     for (const tinyxml2::XMLAttribute* other = element_.FirstAttribute(); other; other = other->Next())
       if (!spec_.attribute(other->Name()) && !closestName(other->Name(), wanted).empty())
-        hint = "; is '" + std::string(other->Name()) + "' a misspelling of it?";
+        hint = "; is '" + clip(other->Name()) + "' a misspelling of it?";
     missing_.emplace_back(attributeName);
     fail(attributeName, "missing (required)" + hint);
   }
@@ -188,10 +188,11 @@ void ElementReader::reportUnknownAttributes() {
     const std::string guess = closestName(a->Name(), valid);
     std::string list;
     for (const auto& v : valid) list += (list.empty() ? "" : ", ") + v;
-    const std::string text = where(a->Name()) + ": unknown attribute ignored" +
+    const std::string name = clip(a->Name());
+    const std::string text = where(name.c_str()) + ": unknown attribute ignored" +
                              (guess.empty() ? " (valid: " + list + ")" : "; did you mean '" + guess + "'?");
-    messages_.warn(line(), "unknown attribute '" + std::string(a->Name()) + "' of <" + spec_.name + ">",
-                   "unknown attributes '" + std::string(a->Name()) + "' of <" + spec_.name + ">", text);
+    messages_.warn(line(), "unknown attribute '" + name + "' of <" + spec_.name + ">",
+                   "unknown attributes '" + name + "' of <" + spec_.name + ">", text);
   }
 }
 

@@ -1,5 +1,7 @@
 #include "xml_syntax.h"
 
+#include "scene_messages.h"
+
 #include <tinyxml2.h>
 
 #include <algorithm>
@@ -41,8 +43,8 @@ class Scanner {
     if (stack_.empty()) return false;
     std::string open, missing;
     for (size_t k = stack_.size(); k-- > 0;) {
-      open += (open.empty() ? "" : k == 0 ? " and " : ", ") + ("<" + stack_[k].name + "> (line " + std::to_string(stack_[k].line) + ")");
-      missing += "</" + stack_[k].name + ">";
+      open += (open.empty() ? "" : k == 0 ? " and " : ", ") + ("<" + clip(stack_[k].name) + "> (line " + std::to_string(stack_[k].line) + ")");
+      missing += "</" + clip(stack_[k].name) + ">";
     }
     int last = line_;
     if (!t_.empty() && t_.back() == '\n') --last;
@@ -90,7 +92,7 @@ class Scanner {
   }
 
   bool declaration() {
-    if (!stack_.empty()) return fail("a <?...?> declaration inside <" + stack_.back().name + ">: declarations may only open the file");
+    if (!stack_.empty()) return fail("a <?...?> declaration inside <" + clip(stack_.back().name) + ">: declarations may only open the file");
     return until("?>", "a declaration (<?)");
   }
 
@@ -104,18 +106,18 @@ class Scanner {
     size_t q = p_ + 2;
     const std::string n = name(q);
     while (q < t_.size() && isSpace(t_[q])) ++q;
-    if (n.empty() || q >= t_.size() || t_[q] != '>') return fail("a closing tag </" + n + " must be a name followed by '>'");
-    if (stack_.empty()) return fail("</" + n + "> closes no open element");
+    if (n.empty() || q >= t_.size() || t_[q] != '>') return fail("a closing tag </" + clip(n) + " must be a name followed by '>'");
+    if (stack_.empty()) return fail("</" + clip(n) + "> closes no open element");
     const Open& top = stack_.back();
     if (top.name != n) {
       // The fix belongs where the unclosed element opens: report it there.
       for (const Open& o : stack_)
         if (o.name == n) {
-          problem_ = {top.line, "not well-formed XML: <" + top.name + "> is never closed (</" + n + "> on line " +
-                                    std::to_string(line_) + " comes first): end it with /> or add </" + top.name + ">"};
+          problem_ = {top.line, "not well-formed XML: <" + clip(top.name) + "> is never closed (</" + clip(n) + "> on line " +
+                                    std::to_string(line_) + " comes first): end it with /> or add </" + clip(top.name) + ">"};
           return false;
         }
-      return fail("</" + n + "> does not match the open <" + top.name + "> (line " + std::to_string(top.line) + ")");
+      return fail("</" + clip(n) + "> does not match the open <" + clip(top.name) + "> (line " + std::to_string(top.line) + ")");
     }
     stack_.pop_back();
     if (stack_.empty()) rootClosed_ = true;
@@ -133,9 +135,9 @@ class Scanner {
     for (;;) {
       while (q < t_.size() && isSpace(t_[q])) ++q;
       advanceTo(q);
-      if (q >= t_.size()) return fail("the file ends inside the tag <" + element + "> (line " + std::to_string(tagLine) + ")");
+      if (q >= t_.size()) return fail("the file ends inside the tag <" + clip(element) + "> (line " + std::to_string(tagLine) + ")");
       if (t_[q] == '/') {
-        if (q + 1 >= t_.size() || t_[q + 1] != '>') return fail("'/' in the tag <" + element + "> must be followed by '>'");
+        if (q + 1 >= t_.size() || t_[q + 1] != '>') return fail("'/' in the tag <" + clip(element) + "> must be followed by '>'");
         advanceTo(q + 2);
         return true;
       }
@@ -145,15 +147,15 @@ class Scanner {
         return true;
       }
       if (!nameStart(t_[q]))
-        return fail("unexpected character '" + std::string(1, t_[q]) + "' in the tag <" + element + ">");
+        return fail("unexpected character '" + std::string(1, t_[q]) + "' in the tag <" + clip(element) + ">");
       const std::string attribute = name(q);
-      const std::string who = "<" + element + "> attribute '" + attribute + "'";
+      const std::string who = "<" + clip(element) + "> attribute '" + clip(attribute) + "'";
       while (q < t_.size() && isSpace(t_[q])) ++q;
-      if (q >= t_.size() || t_[q] != '=') return fail(who + " has no value (write " + attribute + "=\"...\")");
+      if (q >= t_.size() || t_[q] != '=') return fail(who + " has no value (write " + clip(attribute) + "=\"...\")");
       ++q;
       while (q < t_.size() && isSpace(t_[q])) ++q;
       if (q >= t_.size() || (t_[q] != '"' && t_[q] != '\''))
-        return fail(who + ": the value must be in quotes (" + attribute + "=\"...\")");
+        return fail(who + ": the value must be in quotes (" + clip(attribute) + "=\"...\")");
       const size_t close = t_.find(t_[q], q + 1);
       if (close == std::string::npos) return fail(who + ": the value's closing quote (" + std::string(1, t_[q]) + ") is missing");
       if (std::find(attributes.begin(), attributes.end(), attribute) != attributes.end())
