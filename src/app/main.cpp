@@ -82,6 +82,8 @@ int run(int argc, char** argv) {
 
   // Before any output is opened: none may be an input.
   if (Status s = checkOutputsAgainstInputs(options); !s) return fail(s.message());
+  for (const std::string& w : earlierFrameWarnings(options, file.scene.numSteps() / options.frameEvery))
+    std::fprintf(stderr, "FOSSSim: warning: %s\n", w.c_str());
   installStopHandlers();
   ObserverList observers;
   if (!options.output.empty())

@@ -197,6 +197,45 @@ Status checkOutputsAgainstInputs(const Options& options) {
   return checkOutputsAgainstEachOther(options);
 }
 
+std::vector<std::string> earlierFrameWarnings(const Options& options, long frames) {
+  std::vector<std::string> warnings;
+  const std::vector<std::pair<std::string, std::string>> folders = {
+      {"-m", options.svgDir}, {"-g 1", options.pngs ? options.pngDir : std::string()}};
+  for (const auto& [option, dir] : folders) {
+    if (dir.empty()) continue;
+    DIR* d = opendir(dir.c_str());
+    if (!d) continue;  // made by the run
+    const std::string ending = option == "-m" ? ".svg" : ".png";
+    long count = 0;
+    std::string first, last;  // the earliest and latest names beyond this run's frames
+    auto number = [&](const std::string& name) {  // the digits without leading zeros, compared as numbers
+      const std::string digits = name.substr(5, name.size() - 5 - ending.size());
+      const size_t from = digits.find_first_not_of('0');
+      return from == std::string::npos ? std::string() : digits.substr(from);
+    };
+    auto less = [&](const std::string& a, const std::string& b) {
+      const std::string x = number(a), y = number(b);
+      return x.size() != y.size() ? x.size() < y.size() : x < y;
+    };
+    const std::string limit = std::to_string(frames);
+    while (const dirent* e = readdir(d)) {
+      const std::string name = e->d_name;
+      if (!isFrameName(name, ending)) continue;
+      const std::string n = number(name);
+      if (n.size() < limit.size() || (n.size() == limit.size() && n <= limit)) continue;  // this run writes it
+      ++count;
+      if (first.empty() || less(name, first)) first = name;
+      if (last.empty() || less(last, name)) last = name;
+    }
+    closedir(d);
+    if (count > 0)
+      warnings.push_back(option + ": \"" + dir + "\" holds " + std::to_string(count) + " frame" + (count == 1 ? "" : "s") +
+                         " of an earlier run beyond this run's " + std::to_string(frames) + " (" + first +
+                         (count == 1 ? "" : " to " + last) + "); they are left as they are, and the folder mixes the runs");
+  }
+  return warnings;
+}
+
 Status checkGradedFile(const Options& options) {
   struct stat scene {}, graded {};
   if (options.input.empty() || stat(options.scene.c_str(), &scene) != 0 || stat(options.input.c_str(), &graded) != 0)
