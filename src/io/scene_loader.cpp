@@ -126,11 +126,15 @@ Status parseDocument(const std::string& raw, const std::string& name, SceneFile&
   // A control character would reach the terminal with the description or a message quoting a
   // value (an escape sequence acts there), and XML does not allow one, even written as &#27;.
   if (io::ControlCharacter control; io::findControlCharacter(raw, control)) {
+    const std::string at = ", at byte " + io::withThousands(static_cast<long>(control.offset));
+    if (control.code >= 0x20)
+      return Status::error(messages.at(io::lineOf(raw, control.offset)) + "the reference " + io::clip(control.written) +
+                           " names no character XML allows (surrogate halves, U+FFFE, U+FFFF and code points beyond "
+                           "U+10FFFF are none)" + at);
     char code[8];
     std::snprintf(code, sizeof code, "U+%04X", control.code);
     return Status::error(messages.at(io::lineOf(raw, control.offset)) + "a control character, " + code +
-                         (control.written.empty() ? "" : " (written " + control.written + ")") + ", at byte " +
-                         io::withThousands(static_cast<long>(control.offset)) +
+                         (control.written.empty() ? "" : " (written " + io::clip(control.written) + ")") + at +
                          ": XML allows none but tab and line ends, and a scene file is text");
   }
   const std::string text = io::normalizeLineEnds(raw);

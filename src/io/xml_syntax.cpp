@@ -279,18 +279,22 @@ bool findControlCharacter(const std::string& text, ControlCharacter& found) {
     if (p + 2 >= size || text[p + 1] != '#') continue;
     const bool hex = text[p + 2] == 'x';
     size_t q = p + (hex ? 3 : 2);
-    unsigned long code = 0;
+    unsigned long code = 0;  // held at 0x110000 once beyond Unicode (no overflow for any number of digits)
     const size_t digitsFrom = q;
-    for (; q < size && q - digitsFrom < 12; ++q) {
+    for (; q < size; ++q) {
       const char c = text[q];
       const int digit = c >= '0' && c <= '9' ? c - '0'
                         : hex && c >= 'a' && c <= 'f' ? c - 'a' + 10
                         : hex && c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
       if (digit < 0) break;
-      code = code * (hex ? 16 : 10) + static_cast<unsigned long>(digit);
+      code = std::min(code * (hex ? 16 : 10) + static_cast<unsigned long>(digit), 0x110000UL);
     }
-    if (q == digitsFrom || q >= size || text[q] != ';' || code >= 0x20 || !forbidden(static_cast<unsigned>(code)))
-      continue;
+    if (q == digitsFrom || q >= size || text[q] != ';') continue;
+    // XML's characters besides the controls: no surrogate halves, U+FFFE or U+FFFF, nothing beyond
+    // U+10FFFF. tinyxml2 wrote a reference to one as bytes that are no UTF-8, or as nothing.
+    const bool noCharacter = code < 0x20 ? forbidden(static_cast<unsigned>(code))
+                                         : (code >= 0xD800 && code <= 0xDFFF) || code == 0xFFFE || code == 0xFFFF || code > 0x10FFFF;
+    if (!noCharacter) continue;
     found = {p, static_cast<unsigned>(code), text.substr(p, q + 1 - p)};
     return true;
   }

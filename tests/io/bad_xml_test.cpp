@@ -105,6 +105,14 @@ TEST(BadXml, ControlCharactersAreRefusedWhereverTheyAre) {
     SCOPED_TRACE(element);
     expectError(extra(element), {kFile + ":" + std::to_string(kExtraLine) + ":", "control character, " + code});
   }
+  // References to what is no character at all: tinyxml2 wrote bytes that are no UTF-8, or nothing.
+  for (const char* reference : {"&#xD800;", "&#57343;", "&#xFFFE;", "&#xffff;", "&#x110000;", "&#99999999999999999999;"}) {
+    SCOPED_TRACE(reference);
+    expectError(extra(std::string("  <description text=\"a ") + reference + " b\"/>"),
+                {kFile + ":" + std::to_string(kExtraLine) + ":", std::string("the reference ") + reference +
+                                                                     " names no character XML allows"});
+  }
+  EXPECT_EQ(loadError(extra("  <description text=\"&#xD7FF;&#xE000;&#xFFFD;&#x10FFFF;&#0000000000000065;\"/>")), "");
   // Tab, CR and references to them are fine; in a comment or CDATA "&#27;" is text, not a reference.
   EXPECT_EQ(loadError(extra("  <description text=\"a\tb&#9;c&#10;d&#13;&#32;\"/>\r")), "");
   EXPECT_EQ(loadError(extra("  <!-- &#27; --><![CDATA[ &#x1b; ]]>")), "");
