@@ -156,6 +156,7 @@ TEST(Cli, ValuesAfterAnEqualsSign) {
   expectUsageError({"-s", goodScene(), "--threads=0"}, "option --threads takes an integer from 1 to");
   expectUsageError({"-s", goodScene(), "--threads="}, "option --threads needs a value");
   expectUsageError({"-s", goodScene(), "--fps=fast", "--movie", "m.mp4"}, "option --fps takes a frame rate");
+  expectUsageError({"-s", goodScene(), "--fps=0x10", "--movie", "m.mp4"}, "option --fps takes a frame rate");  // not 16
   // Flags take no value: "--compat=0" would read as "not compat" to some and be ignored by others.
   expectUsageError({"-s", goodScene(), "--compat=0"}, "option --compat takes no value");
   for (const char* flag : {"-q", "-h"}) {  // CLI11 reads "-q=1" as -q and an unknown word "-=1"
