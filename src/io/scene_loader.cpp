@@ -63,6 +63,20 @@ void reportContent(const tinyxml2::XMLElement& e, SceneMessages& m) {
   }
 }
 
+/// Reports the format's elements anywhere inside an unknown element (<forces><simplegravity/>):
+/// the unknown one's warning alone did not say that the gravity written in it is not used.
+void reportKnownInside(const tinyxml2::XMLElement& unknown, SceneMessages& m) {
+  for (const tinyxml2::XMLElement* c = unknown.FirstChildElement(); c; c = c->NextSiblingElement()) {
+    if (io::findElement(c->Name())) {
+      const int line = c->GetLineNum();
+      m.warn(line, "element inside an unknown element", "elements inside unknown elements",
+             m.at(line) + "<" + c->Name() + "> inside <" + io::clip(unknown.Name()) +
+                 "> ignored (elements are read only directly inside <scene>)");
+    }
+    reportKnownInside(*c, m);
+  }
+}
+
 /// Reports a child of <scene> that is not an element.
 void reportOther(const tinyxml2::XMLNode& node, SceneMessages& m) {
   const int line = node.GetLineNum();
@@ -101,6 +115,7 @@ void readElement(const tinyxml2::XMLElement& e, Builder& b, std::vector<const El
                (!guess.empty() ? "; did you mean <" + guess + ">?"
                 : first        ? " (valid: " + elementNames() + ")"
                                : ""));
+    reportKnownInside(e, m);
     return;
   }
   if (spec->repeat == io::Repeat::FirstCounts) {
