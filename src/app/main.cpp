@@ -74,6 +74,7 @@ int run(int argc, char** argv) {
   if (Status s = Simulator::create(file.scene, simOptions, simulator); !s) return fail(s.message());
 
   if (!options.input.empty()) {
+    if (Status s = checkGradedFile(options); !s) return fail(s.message());
     const GradeReport report = gradeFile(file.scene, file.initial, *simulator, simOptions, options.input, std::cout);
     if (report.unreadable) return fail(report.structuralError);  // one error, no verdicts on nothing
     return report.passed(GradeTolerances{}) ? kExitOk : kExitFailure;
@@ -81,6 +82,8 @@ int run(int argc, char** argv) {
 
   // Before any output is opened: none may be an input.
   if (Status s = checkOutputsAgainstInputs(options); !s) return fail(s.message());
+  for (const std::string& w : earlierFrameWarnings(options, file.scene.numSteps() / options.frameEvery))
+    std::fprintf(stderr, "FOSSSim: warning: %s\n", w.c_str());
   installStopHandlers();
   ObserverList observers;
   if (!options.output.empty())

@@ -125,6 +125,15 @@ bool sameWrittenFile(const std::string& a, const std::string& b) {
   return !e1 && !e2 && ca == cb;
 }
 
+/// One place, whether it exists or not: the same canonical path (symbolic links followed).
+bool samePlace(const std::string& a, const std::string& b) {
+  std::error_code e1, e2;
+  fs::path ca = fs::weakly_canonical(a, e1), cb = fs::weakly_canonical(b, e2);
+  if (!ca.has_filename()) ca = ca.parent_path();  // "svg/" is the folder "svg"
+  if (!cb.has_filename()) cb = cb.parent_path();
+  return !e1 && !e2 && ca == cb;
+}
+
 /// True when `path` is one of the frames -m or -g writes into `dir` (ending ".svg" or ".png").
 bool isFrameOf(const std::string& path, const std::string& dir, const std::string& ending) {
   const fs::path p(path);
@@ -145,6 +154,13 @@ Status checkOutputsAgainstEachOther(const Options& options) {
         return Status::error(describe(files[b], options) + " and " + describe(files[a], options) +
                              " are the same file: give each output its own name");
   for (const Written& w : files) {
+    // A file where -m or -g makes its folder: the folder was made first and the file's open then
+    // failed ("Is a directory"), leaving an empty folder under the output's name.
+    for (const auto& [folderOption, folder] : {std::pair<std::string, std::string>{"-m", options.svgDir},
+                                               {"--png-dir", options.pngs ? options.pngDir : std::string()}})
+      if (!folder.empty() && samePlace(w.path, folder))
+        return Status::error(describe(w, options) + " is the folder that " + folderOption + " writes its frames into (\"" +
+                             folder + "\"): give each output its own name");
     const bool svg = !options.svgDir.empty() && isFrameOf(w.path, options.svgDir, ".svg");
     const bool png = options.pngs && isFrameOf(w.path, options.pngDir, ".png");
     if (svg || png)
@@ -179,6 +195,55 @@ Status checkOutputsAgainstInputs(const Options& options) {
   if (!options.stats.empty())
     if (Status s = checkOne("--stats", options.stats, "", inputs); !s) return s;
   return checkOutputsAgainstEachOther(options);
+}
+
+std::vector<std::string> earlierFrameWarnings(const Options& options, long frames) {
+  std::vector<std::string> warnings;
+  const std::vector<std::pair<std::string, std::string>> folders = {
+      {"-m", options.svgDir}, {"-g 1", options.pngs ? options.pngDir : std::string()}};
+  for (const auto& [option, dir] : folders) {
+    if (dir.empty()) continue;
+    DIR* d = opendir(dir.c_str());
+    if (!d) continue;  // made by the run
+    const std::string ending = option == "-m" ? ".svg" : ".png";
+    long count = 0;
+    std::string first, last;  // the earliest and latest names beyond this run's frames
+    auto number = [&](const std::string& name) {  // the digits without leading zeros, compared as numbers
+      const std::string digits = name.substr(5, name.size() - 5 - ending.size());
+      const size_t from = digits.find_first_not_of('0');
+      return from == std::string::npos ? std::string() : digits.substr(from);
+    };
+    auto less = [&](const std::string& a, const std::string& b) {
+      const std::string x = number(a), y = number(b);
+      return x.size() != y.size() ? x.size() < y.size() : x < y;
+    };
+    const std::string limit = std::to_string(frames);
+    while (const dirent* e = readdir(d)) {
+      const std::string name = e->d_name;
+      if (!isFrameName(name, ending)) continue;
+      const std::string n = number(name);
+      if (n.size() < limit.size() || (n.size() == limit.size() && n <= limit)) continue;  // this run writes it
+      ++count;
+      if (first.empty() || less(name, first)) first = name;
+      if (last.empty() || less(last, name)) last = name;
+    }
+    closedir(d);
+    if (count > 0)
+      warnings.push_back(option + ": \"" + dir + "\" holds " + std::to_string(count) + " frame" + (count == 1 ? "" : "s") +
+                         " of an earlier run beyond this run's " + std::to_string(frames) + " (" + first +
+                         (count == 1 ? "" : " to " + last) + "); they are left as they are, and the folder mixes the runs");
+  }
+  return warnings;
+}
+
+Status checkGradedFile(const Options& options) {
+  struct stat scene {}, graded {};
+  if (options.input.empty() || stat(options.scene.c_str(), &scene) != 0 || stat(options.input.c_str(), &graded) != 0)
+    return Status::ok();  // the loader and the reader report a missing file
+  if (scene.st_dev == graded.st_dev && scene.st_ino == graded.st_ino)
+    return Status::error("-i \"" + options.input + "\" is the scene file given to -s (\"" + options.scene +
+                         "\"): -i grades a trajectory file written with -o, not the scene");
+  return Status::ok();
 }
 
 Status StagedFile::prepare(const std::string& finalPath, const std::string& what, StagedFile& out) {

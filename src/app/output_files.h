@@ -19,6 +19,7 @@
 #include "fosssim/core/status.h"
 
 #include <string>
+#include <vector>
 
 namespace fosssim::app {
 
@@ -28,6 +29,14 @@ std::string partialName(const std::string& path);
 /// Fails (naming both) when an output of `options` is the same file as one of its inputs, or two
 /// outputs would write one file (a final or partial name of -o or --movie, --stats, a frame).
 Status checkOutputsAgainstInputs(const Options& options);
+
+/// Warnings about frames already in the folders of -m and -g that a run of `frames` frames does
+/// not write over (a longer earlier run's): left as they are, they would pass for this run's.
+std::vector<std::string> earlierFrameWarnings(const Options& options, long frames);
+
+/// Fails when -i names the scene file itself (under any name or link): its XML was read as
+/// records and graded, a "Failed" full of numbers made of text.
+Status checkGradedFile(const Options& options);
 
 /// One output written under its partial name and renamed at the end.
 class StagedFile {

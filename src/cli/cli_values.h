@@ -28,11 +28,13 @@ inline bool parseInteger(const std::string& text, long lo, long hi, long& out) {
   return true;
 }
 
-/// `text` as a whole finite number in [lo, hi] ("29.97", "1e5").
+/// `text` as a whole finite decimal number in [lo, hi] ("29.97", "1e5"). strtod also reads
+/// hexadecimal ("0x10" is 16), which the scene loader refuses too: no one means it.
 inline bool parseNumber(const std::string& text, double lo, double hi, double& out) {
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
   if (text.empty() || end == text.c_str() || *end != '\0' || !std::isfinite(v) || v < lo || v > hi) return false;
+  if (text.find_first_of("xX") != std::string::npos) return false;
   out = v;
   return true;
 }

@@ -30,7 +30,7 @@ std::string keywords(const Table& table) {
 void readSimtype(ElementReader& r, Builder&) {
   const std::string type = r.text("type");
   if (type != "particle-system")
-    r.fail("type", "simulation type \"" + type + "\" is not supported (valid: particle-system)");
+    r.fail("type", "simulation type \"" + clip(type) + "\" is not supported (valid: particle-system)");
 }
 
 void readDescription(ElementReader& r, Builder& b) { b.out.description = r.text("text"); }
@@ -46,7 +46,7 @@ void readDuration(ElementReader& r, Builder& b) {
 void readIntegrator(ElementReader& r, Builder& b) {
   const std::string type = r.text("type");
   if (r.has("type") && !findIntegrator(type))
-    r.fail("type", "unknown integrator \"" + type + "\" (valid: " + keywords(integratorTable()) + ")");
+    r.fail("type", "unknown integrator \"" + clip(type) + "\" (valid: " + keywords(integratorTable()) + ")");
   b.out.scene.integrator = findIntegrator(type) ? type : integratorTable().front().keyword;
   b.out.scene.dt = r.number("dt");
   b.integratorOk = r.ok();
@@ -92,7 +92,16 @@ void readEdge(ElementReader& r, Builder& b) {
 
 void readHalfplane(ElementReader& r, Builder& b) {
   HalfPlane h{readVec(r, "px", "py"), readVec(r, "nx", "ny")};
-  if (r.ok() && h.normal.squaredNorm() == 0.0) r.fail("nx", "the half-plane normal (nx, ny) must not be zero");
+  if (r.ok() && h.normal.x() == 0.0 && h.normal.y() == 0.0) r.fail("nx", "the half-plane normal (nx, ny) must not be zero");
+  // The normal need not be a unit vector, and the core takes its length as sqrt(nx^2 + ny^2):
+  // beyond about 1e154 the square overflows (every distance became 0 or NaN and particles fell
+  // through), below about 1e-154 it is subnormal or 0 (imprecise, or "must not be zero" for a
+  // normal that is not). Scaling by a power of two is exact and keeps the direction, so such a
+  // normal is brought to a largest component in [1, 2); any other is kept as written.
+  if (r.ok() && !std::isnormal(h.normal.squaredNorm())) {
+    const int exponent = std::ilogb(h.normal.cwiseAbs().maxCoeff());
+    h.normal = Vec2(std::ldexp(h.normal.x(), -exponent), std::ldexp(h.normal.y(), -exponent));
+  }
   b.out.scene.halfplanes.push_back(h);
 }
 
@@ -138,7 +147,7 @@ void readCollision(ElementReader& r, Builder& b) {
   const CollisionEntry* entry = findCollisionType(type);
   if (!entry) {
     if (r.has("type"))
-      r.fail("type", "unknown collision type \"" + type + "\" (valid: " + keywords(collisionTable()) + ")");
+      r.fail("type", "unknown collision type \"" + clip(type) + "\" (valid: " + keywords(collisionTable()) + ")");
     entry = &collisionTable().front();
   }
   c.type = entry->type;
@@ -148,7 +157,7 @@ void readCollision(ElementReader& r, Builder& b) {
   const std::string failsafe = r.text("failsafe");
   if (failsafe == "projection") c.failsafe = Failsafe::Projection;
   else if (failsafe == "rigid") c.failsafe = Failsafe::Rigid;
-  else r.fail("failsafe", "unknown failsafe \"" + failsafe + "\" (valid: projection, rigid)");
+  else r.fail("failsafe", "unknown failsafe \"" + clip(failsafe) + "\" (valid: projection, rigid)");
   c.penaltyK = r.number("k", entry->defaultK);
   c.penaltyThickness = r.number("thickness", entry->defaultThickness);
   b.collisionOk = r.ok();

@@ -13,6 +13,7 @@
 #include "xml_syntax.h"
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <new>
@@ -45,13 +46,13 @@ std::string elementNames() {
 
 /// Reports what lies inside a known element: the format's elements take attributes only.
 void reportContent(const tinyxml2::XMLElement& e, SceneMessages& m) {
-  const std::string parent = e.Name();
+  const std::string parent = e.Name();  // a known element's: short
   for (const tinyxml2::XMLNode* c = e.FirstChild(); c; c = c->NextSibling()) {
     if (c->ToComment()) continue;
     const int line = c->GetLineNum();
     if (const tinyxml2::XMLElement* child = c->ToElement())
       m.warn(line, "element inside <" + parent + ">", "elements inside <" + parent + ">",
-             m.at(line) + "<" + child->Name() + "> inside <" + parent +
+             m.at(line) + "<" + io::clip(child->Name()) + "> inside <" + parent +
                  "> ignored (elements are read only directly inside <scene>; <" + parent + "> takes attributes only)");
     else if (const tinyxml2::XMLText* text = c->ToText())
       m.warn(line, "text inside <" + parent + ">", "texts inside <" + parent + ">",
@@ -59,6 +60,20 @@ void reportContent(const tinyxml2::XMLElement& e, SceneMessages& m) {
                  "> ignored (<" + parent + "> takes attributes only)");
     else
       m.warn(line, "declaration", "declarations", m.at(line) + "<!" + clipped(c->Value()) + "> inside <" + parent + "> ignored");
+  }
+}
+
+/// Reports the format's elements anywhere inside an unknown element (<forces><simplegravity/>):
+/// the unknown one's warning alone did not say that the gravity written in it is not used.
+void reportKnownInside(const tinyxml2::XMLElement& unknown, SceneMessages& m) {
+  for (const tinyxml2::XMLElement* c = unknown.FirstChildElement(); c; c = c->NextSiblingElement()) {
+    if (io::findElement(c->Name())) {
+      const int line = c->GetLineNum();
+      m.warn(line, "element inside an unknown element", "elements inside unknown elements",
+             m.at(line) + "<" + c->Name() + "> inside <" + io::clip(unknown.Name()) +
+                 "> ignored (elements are read only directly inside <scene>)");
+    }
+    reportKnownInside(*c, m);
   }
 }
 
@@ -94,11 +109,13 @@ void readElement(const tinyxml2::XMLElement& e, Builder& b, std::vector<const El
       b.unknownElements.emplace_back(e.Name(), line);
     }
     const std::string& guess = known->second;
-    m.warn(line, "unknown element <" + std::string(e.Name()) + ">", "unknown elements <" + std::string(e.Name()) + ">",
-           m.at(line) + "<" + e.Name() + ">: unknown element ignored" +
+    const std::string shown = io::clip(e.Name());
+    m.warn(line, "unknown element <" + shown + ">", "unknown elements <" + shown + ">",
+           m.at(line) + "<" + shown + ">: unknown element ignored" +
                (!guess.empty() ? "; did you mean <" + guess + ">?"
                 : first        ? " (valid: " + elementNames() + ")"
                                : ""));
+    reportKnownInside(e, m);
     return;
   }
   if (spec->repeat == io::Repeat::FirstCounts) {
@@ -121,11 +138,25 @@ Status parseDocument(const std::string& raw, const std::string& name, SceneFile&
   if (const size_t nul = raw.find('\0'); nul != std::string::npos)
     return Status::error(messages.at(io::lineOf(raw, nul)) + "a NUL byte (at byte " + io::withThousands(static_cast<long>(nul)) +
                          "): a scene file is XML text, and nothing after it could be read");
+  // A control character would reach the terminal with the description or a message quoting a
+  // value (an escape sequence acts there), and XML does not allow one, even written as &#27;.
+  if (io::ControlCharacter control; io::findControlCharacter(raw, control)) {
+    const std::string at = ", at byte " + io::withThousands(static_cast<long>(control.offset));
+    if (control.code >= 0x20)
+      return Status::error(messages.at(io::lineOf(raw, control.offset)) + "the reference " + io::clip(control.written) +
+                           " names no character XML allows (surrogate halves, U+FFFE, U+FFFF and code points beyond "
+                           "U+10FFFF are none)" + at);
+    char code[8];
+    std::snprintf(code, sizeof code, "U+%04X", control.code);
+    return Status::error(messages.at(io::lineOf(raw, control.offset)) + "a control character, " + code +
+                         (control.written.empty() ? "" : " (written " + io::clip(control.written) + ")") + at +
+                         ": XML allows none but tab and line ends, and a scene file is text");
+  }
   const std::string text = io::normalizeLineEnds(raw);
   // Before tinyxml2, whose check for repeated attributes makes a flood of them on one element
   // take minutes (xml_syntax.h).
   if (io::CrowdedElement crowded; io::findCrowdedElement(text, crowded)) {
-    return Status::error(messages.at(crowded.line) + "<" + crowded.name + ">: " + io::withThousands(crowded.attributes) +
+    return Status::error(messages.at(crowded.line) + "<" + io::clip(crowded.name) + ">: " + io::withThousands(crowded.attributes) +
                          " attributes, more than the " + io::withThousands(io::kMaxAttributes) +
                          " an element may have (the scene format's take at most " + std::to_string(io::mostAttributes()) + ")");
   }
@@ -140,15 +171,15 @@ Status parseDocument(const std::string& raw, const std::string& name, SceneFile&
   const tinyxml2::XMLElement* root = doc.RootElement();
   if (!root) return Status::error(name + ": the file holds no XML element (expected <scene>)");
   if (std::string(root->Name()) != "scene")
-    return Status::error(messages.at(root->GetLineNum()) + "the root element is <" + root->Name() + ">, expected <scene>");
+    return Status::error(messages.at(root->GetLineNum()) + "the root element is <" + io::clip(root->Name()) + ">, expected <scene>");
   if (const tinyxml2::XMLElement* second = root->NextSiblingElement())
-    return Status::error(messages.at(second->GetLineNum()) + "unexpected element <" + second->Name() + "> after </scene>");
+    return Status::error(messages.at(second->GetLineNum()) + "unexpected element <" + io::clip(second->Name()) + "> after </scene>");
 
   for (const tinyxml2::XMLNode* n = doc.FirstChild(); n; n = n->NextSibling())
     if (n != root && !n->ToDeclaration()) reportOther(*n, messages);
   for (const tinyxml2::XMLAttribute* a = root->FirstAttribute(); a; a = a->Next())
     messages.warn(root->GetLineNum(), "attribute on <scene>", "attributes on <scene>",
-                  messages.at(root->GetLineNum()) + "<scene> attribute '" + a->Name() +
+                  messages.at(root->GetLineNum()) + "<scene> attribute '" + io::clip(a->Name()) +
                       "': ignored (<scene> takes no attributes)");
   Builder builder(out, messages);
   std::vector<const ElementSpec*> seen;

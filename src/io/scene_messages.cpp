@@ -97,4 +97,10 @@ Status SceneMessages::finish(SceneFile& out) {
   return Status::error(message);
 }
 
+std::string clip(const std::string& text) {
+  constexpr size_t kShown = 40;
+  if (text.size() <= kShown) return text;
+  return text.substr(0, kShown - 3) + "... (" + withThousands(static_cast<long>(text.size())) + " characters)";
+}
+
 }  // namespace fosssim::io

@@ -61,5 +61,8 @@ class SceneMessages {
 std::string withThousands(long n);
 /// A number as %g (no 300-digit times in messages).
 std::string shortNumber(double value);
+/// A name or word from the file as a message shows it: at most 40 characters, a longer one cut
+/// with its length ("sss... (3,000,000 characters)"): a 3 MB type or element name was a 3 MB line.
+std::string clip(const std::string& text);
 
 }  // namespace fosssim::io

@@ -9,6 +9,7 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -57,6 +58,15 @@ class Element {
   }
   Element& integer(const char* attribute, long value) { return text(attribute, std::to_string(value)); }
   Element& text(const char* attribute, const std::string& value) {
+    // XML carries no control character but tab and line ends, not even as a reference: the loader
+    // refuses the file, so the text would not load back.
+    for (const char c : value)
+      if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') {
+        char code[8];
+        std::snprintf(code, sizeof code, "U+%04X", static_cast<unsigned>(static_cast<unsigned char>(c)));
+        throw WriteError{std::string("<") + name_ + "> attribute '" + attribute + "' holds the control character " +
+                         code + " (a scene file is XML text, which has none but tab and line ends)"};
+      }
     out_ += std::string(" ") + attribute + "=\"" + escaped(value) + "\"";
     return *this;
   }

@@ -63,7 +63,7 @@ const tinyxml2::XMLAttribute* ElementReader::find(const char* attributeName) {
     std::vector<std::string> wanted = {attributeName};
     for (const tinyxml2::XMLAttribute* other = element_.FirstAttribute(); other; other = other->Next())
       if (!spec_.attribute(other->Name()) && !closestName(other->Name(), wanted).empty())
-        hint = "; is '" + std::string(other->Name()) + "' a misspelling of it?";
+        hint = "; is '" + clip(other->Name()) + "' a misspelling of it?";
     missing_.emplace_back(attributeName);
     fail(attributeName, "missing (required)" + hint);
   }
@@ -83,6 +83,13 @@ bool ElementReader::parseNumber(const tinyxml2::XMLAttribute& attribute, double&
   while (rest && isSpace(*rest)) ++rest;
   if (end == p || *rest != '\0') {
     fail(attribute.Name(), "expected a number, got " + quoted(text));
+    return false;
+  }
+  // strtod also reads C99 hexadecimal ("0x10" is 16, "0x1p-3" 0.125), which the course's stream
+  // extraction read as 0 followed by ignored junk: a value the two would read differently, and no
+  // scene means, so only decimal numbers are numbers.
+  if (std::find_if(p, static_cast<const char*>(end), [](char c) { return c == 'x' || c == 'X'; }) != end) {
+    fail(attribute.Name(), "expected a number (decimal; hexadecimal is not read), got " + quoted(text));
     return false;
   }
   // ERANGE also flags underflow ("1e-400" reads as 0 or a denormal), which is a fine value.
@@ -116,9 +123,12 @@ double ElementReader::checked(const AttributeSpec& spec, const tinyxml2::XMLAttr
       if (value < 0 || value > 1) return fail(spec.name, std::string("must lie in [0, 1]") + got), 1.0;
       break;
     case Kind::Index:
-      if (value != std::floor(value) || std::fabs(value) > 2e9)
-        return fail(spec.name, "expected an integer" + got), -1.0;
+      if (value != std::floor(value)) return fail(spec.name, "expected an integer" + got), -1.0;
       if (value < 0) return fail(spec.name, "expected an index >= 0" + got), -1.0;
+      // An index is kept as an int; "2147483648" is an integer (it was "expected an integer"),
+      // and names nothing: a scene file of at most 256 MiB holds far fewer elements.
+      if (value > 2e9)
+        return fail(spec.name, "index too large: no scene has 2e9 elements of a kind (numbered from 0)" + got), -1.0;
       break;
     case Kind::Flag:
       if (value != 0 && value != 1) return fail(spec.name, "expected 0 or 1" + got), 0.0;
@@ -178,10 +188,11 @@ void ElementReader::reportUnknownAttributes() {
     const std::string guess = closestName(a->Name(), valid);
     std::string list;
     for (const auto& v : valid) list += (list.empty() ? "" : ", ") + v;
-    const std::string text = where(a->Name()) + ": unknown attribute ignored" +
+    const std::string name = clip(a->Name());
+    const std::string text = where(name.c_str()) + ": unknown attribute ignored" +
                              (guess.empty() ? " (valid: " + list + ")" : "; did you mean '" + guess + "'?");
-    messages_.warn(line(), "unknown attribute '" + std::string(a->Name()) + "' of <" + spec_.name + ">",
-                   "unknown attributes '" + std::string(a->Name()) + "' of <" + spec_.name + ">", text);
+    messages_.warn(line(), "unknown attribute '" + name + "' of <" + spec_.name + ">",
+                   "unknown attributes '" + name + "' of <" + spec_.name + ">", text);
   }
 }
 

@@ -1,5 +1,7 @@
 #include "xml_syntax.h"
 
+#include "scene_messages.h"
+
 #include <tinyxml2.h>
 
 #include <algorithm>
@@ -41,8 +43,8 @@ class Scanner {
     if (stack_.empty()) return false;
     std::string open, missing;
     for (size_t k = stack_.size(); k-- > 0;) {
-      open += (open.empty() ? "" : k == 0 ? " and " : ", ") + ("<" + stack_[k].name + "> (line " + std::to_string(stack_[k].line) + ")");
-      missing += "</" + stack_[k].name + ">";
+      open += (open.empty() ? "" : k == 0 ? " and " : ", ") + ("<" + clip(stack_[k].name) + "> (line " + std::to_string(stack_[k].line) + ")");
+      missing += "</" + clip(stack_[k].name) + ">";
     }
     int last = line_;
     if (!t_.empty() && t_.back() == '\n') --last;
@@ -90,7 +92,7 @@ class Scanner {
   }
 
   bool declaration() {
-    if (!stack_.empty()) return fail("a <?...?> declaration inside <" + stack_.back().name + ">: declarations may only open the file");
+    if (!stack_.empty()) return fail("a <?...?> declaration inside <" + clip(stack_.back().name) + ">: declarations may only open the file");
     return until("?>", "a declaration (<?)");
   }
 
@@ -104,18 +106,18 @@ class Scanner {
     size_t q = p_ + 2;
     const std::string n = name(q);
     while (q < t_.size() && isSpace(t_[q])) ++q;
-    if (n.empty() || q >= t_.size() || t_[q] != '>') return fail("a closing tag </" + n + " must be a name followed by '>'");
-    if (stack_.empty()) return fail("</" + n + "> closes no open element");
+    if (n.empty() || q >= t_.size() || t_[q] != '>') return fail("a closing tag </" + clip(n) + " must be a name followed by '>'");
+    if (stack_.empty()) return fail("</" + clip(n) + "> closes no open element");
     const Open& top = stack_.back();
     if (top.name != n) {
       // The fix belongs where the unclosed element opens: report it there.
       for (const Open& o : stack_)
         if (o.name == n) {
-          problem_ = {top.line, "not well-formed XML: <" + top.name + "> is never closed (</" + n + "> on line " +
-                                    std::to_string(line_) + " comes first): end it with /> or add </" + top.name + ">"};
+          problem_ = {top.line, "not well-formed XML: <" + clip(top.name) + "> is never closed (</" + clip(n) + "> on line " +
+                                    std::to_string(line_) + " comes first): end it with /> or add </" + clip(top.name) + ">"};
           return false;
         }
-      return fail("</" + n + "> does not match the open <" + top.name + "> (line " + std::to_string(top.line) + ")");
+      return fail("</" + clip(n) + "> does not match the open <" + clip(top.name) + "> (line " + std::to_string(top.line) + ")");
     }
     stack_.pop_back();
     if (stack_.empty()) rootClosed_ = true;
@@ -133,9 +135,9 @@ class Scanner {
     for (;;) {
       while (q < t_.size() && isSpace(t_[q])) ++q;
       advanceTo(q);
-      if (q >= t_.size()) return fail("the file ends inside the tag <" + element + "> (line " + std::to_string(tagLine) + ")");
+      if (q >= t_.size()) return fail("the file ends inside the tag <" + clip(element) + "> (line " + std::to_string(tagLine) + ")");
       if (t_[q] == '/') {
-        if (q + 1 >= t_.size() || t_[q + 1] != '>') return fail("'/' in the tag <" + element + "> must be followed by '>'");
+        if (q + 1 >= t_.size() || t_[q + 1] != '>') return fail("'/' in the tag <" + clip(element) + "> must be followed by '>'");
         advanceTo(q + 2);
         return true;
       }
@@ -145,15 +147,15 @@ class Scanner {
         return true;
       }
       if (!nameStart(t_[q]))
-        return fail("unexpected character '" + std::string(1, t_[q]) + "' in the tag <" + element + ">");
+        return fail("unexpected character '" + std::string(1, t_[q]) + "' in the tag <" + clip(element) + ">");
       const std::string attribute = name(q);
-      const std::string who = "<" + element + "> attribute '" + attribute + "'";
+      const std::string who = "<" + clip(element) + "> attribute '" + clip(attribute) + "'";
       while (q < t_.size() && isSpace(t_[q])) ++q;
-      if (q >= t_.size() || t_[q] != '=') return fail(who + " has no value (write " + attribute + "=\"...\")");
+      if (q >= t_.size() || t_[q] != '=') return fail(who + " has no value (write " + clip(attribute) + "=\"...\")");
       ++q;
       while (q < t_.size() && isSpace(t_[q])) ++q;
       if (q >= t_.size() || (t_[q] != '"' && t_[q] != '\''))
-        return fail(who + ": the value must be in quotes (" + attribute + "=\"...\")");
+        return fail(who + ": the value must be in quotes (" + clip(attribute) + "=\"...\")");
       const size_t close = t_.find(t_[q], q + 1);
       if (close == std::string::npos) return fail(who + ": the value's closing quote (" + std::string(1, t_[q]) + ") is missing");
       if (std::find(attributes.begin(), attributes.end(), attribute) != attributes.end())
@@ -254,6 +256,47 @@ bool findCrowdedElement(const std::string& text, CrowdedElement& found) {
       p = tag + 1;  // "</name>", "<!DOCTYPE ...>", or a stray '<': nothing to count
     }
     if (p == std::string::npos) return false;  // the file ends in a comment: the parser says so
+  }
+  return false;
+}
+
+bool findControlCharacter(const std::string& text, ControlCharacter& found) {
+  const auto forbidden = [](unsigned c) { return c < 0x20 && c != '\t' && c != '\n' && c != '\r'; };
+  const size_t size = text.size();
+  size_t verbatimEnd = 0;  // inside a comment or CDATA section up to here: '&' is text there
+  for (size_t p = 0; p < size; ++p) {
+    const auto byte = static_cast<unsigned char>(text[p]);
+    if (forbidden(byte)) {
+      found = {p, byte, ""};
+      return true;
+    }
+    if (p < verbatimEnd || (byte != '<' && byte != '&')) continue;
+    if (byte == '<') {
+      const char* end = text.compare(p, 4, "<!--") == 0 ? "-->" : text.compare(p, 9, "<![CDATA[") == 0 ? "]]>" : nullptr;
+      if (end) verbatimEnd = std::min(size, text.find(end, p + 4));  // unclosed: the rest (the parser reports it)
+      continue;
+    }
+    if (p + 2 >= size || text[p + 1] != '#') continue;
+    const bool hex = text[p + 2] == 'x';
+    size_t q = p + (hex ? 3 : 2);
+    unsigned long code = 0;  // held at 0x110000 once beyond Unicode (no overflow for any number of digits)
+    const size_t digitsFrom = q;
+    for (; q < size; ++q) {
+      const char c = text[q];
+      const int digit = c >= '0' && c <= '9' ? c - '0'
+                        : hex && c >= 'a' && c <= 'f' ? c - 'a' + 10
+                        : hex && c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
+      if (digit < 0) break;
+      code = std::min(code * (hex ? 16 : 10) + static_cast<unsigned long>(digit), 0x110000UL);
+    }
+    if (q == digitsFrom || q >= size || text[q] != ';') continue;
+    // XML's characters besides the controls: no surrogate halves, U+FFFE or U+FFFF, nothing beyond
+    // U+10FFFF. tinyxml2 wrote a reference to one as bytes that are no UTF-8, or as nothing.
+    const bool noCharacter = code < 0x20 ? forbidden(static_cast<unsigned>(code))
+                                         : (code >= 0xD800 && code <= 0xDFFF) || code == 0xFFFE || code == 0xFFFF || code > 0x10FFFF;
+    if (!noCharacter) continue;
+    found = {p, static_cast<unsigned>(code), text.substr(p, q + 1 - p)};
+    return true;
   }
   return false;
 }

@@ -43,4 +43,17 @@ struct CrowdedElement {
 /// skipped; a tag it cannot read is left to the parser (and explainXmlError).
 bool findCrowdedElement(const std::string& text, CrowdedElement& found);
 
+struct ControlCharacter {
+  size_t offset = 0;   ///< where it (or its reference) begins
+  unsigned code = 0;   ///< U+0000 to U+001F; from a reference also a surrogate, U+FFFE, U+FFFF or 0x110000 (beyond)
+  std::string written; ///< the reference as written ("&#27;"), empty for the byte itself
+};
+
+/// Finds the first character XML 1.0 forbids in a document, U+0000 to U+001F other than tab, line
+/// feed and carriage return, as a byte or as a character reference ("&#27;", "&#x1B;"; those in
+/// comments and CDATA are text, not references), and a reference to what is no character at all
+/// (a surrogate half, U+FFFE, U+FFFF, beyond U+10FFFF). tinyxml2 accepts them, and a description
+/// with an escape sequence reached the terminal as one.
+bool findControlCharacter(const std::string& text, ControlCharacter& found);
+
 }  // namespace fosssim::io

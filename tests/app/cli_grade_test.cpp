@@ -249,6 +249,19 @@ TEST_F(CliGrade, ADeviceIsNotATrajectoryFile) {
   EXPECT_TRUE(contains(o.err, "/dev/zero: cannot read the trajectory file (it is a device, not a file")) << o;
 }
 
+// The scene given to -i as well (a slip of the shell's history) was read as records: a "Failed"
+// grade of numbers made of XML text. It is one error naming both options, and no verdicts.
+TEST_F(CliGrade, TheSceneItselfIsNoTrajectoryFile) {
+  const std::string scene = row("s.xml", 2);
+  fs::create_symlink(scene, path("s-link.bin"));
+  for (const std::string& graded : {scene, path("s-link.bin")}) {
+    const Outcome o = grade(scene, graded);
+    EXPECT_TRUE(exitedWith(o, 1)) << o;
+    EXPECT_EQ(o.out, "") << o;
+    EXPECT_TRUE(contains(o.err, "-i \"" + graded + "\" is the scene file given to -s")) << o;
+  }
+}
+
 TEST_F(CliGrade, AMissingFileIsOneErrorAndNoVerdicts) {
   const Outcome o = grade(row("s.xml", 2), path("missing.bin"));
   EXPECT_TRUE(exitedWith(o, 1)) << o;

@@ -125,7 +125,13 @@ TEST_F(CliOutputs, StatsIsNeitherAnInputNorAnotherOutput) {
   const std::string frame = path("svg/frame00000000000000000002.svg");
   expectClash({"-m", path("svg"), "--stats", frame}, {"--stats \"" + frame + "\" is a frame file that -m writes"},
               {frame});
+  // -m's folder under an output's name (or its partial name): the folder was made, then the
+  // output's open failed on it.
+  expectClash({"-o", o1, "-m", o1}, {"-o \"" + o1 + "\" is the folder that -m writes its frames into"}, {o1, o1Partial});
+  expectClash({"-o", o1, "-m", o1Partial + "/"}, {"the partial file \"" + o1Partial + "\" of -o", "-m"}, {o1, o1Partial});
+  expectClash({"--stats", o1, "-m", (dir_ / "." / "o1.bin").string()}, {"--stats \"" + o1 + "\" is the folder"}, {o1});
   if (FOSSSIM_WITH_RENDER) {
+    expectClash({"--stats", o1, "-g", "1", "--png-dir", o1}, {"is the folder that --png-dir writes"}, {o1});
     const std::string movie = path("base.mp4"), moviePartial = path("base.partial.mp4");
     expectClash({"--movie", movie, "--stats", movie}, {"--stats \"" + movie + "\" and --movie \"" + movie + "\""},
                 {movie, moviePartial});
@@ -142,6 +148,25 @@ TEST_F(CliOutputs, StatsIsNeitherAnInputNorAnotherOutput) {
   ASSERT_TRUE(exitedWith(both, 0)) << both;
   EXPECT_EQ(wholeFiniteRecords(o1, 2, kContinuousTime), 1 + 2 * 200);
   EXPECT_EQ(slurp(path("o1.csv")).rfind("step,time,", 0), 0u);
+}
+
+// Frames are written over by number: after a 20-step run, a 10-step run into the same folder left
+// frames 11 to 20 of the first, which passed for the second's without a word.
+TEST_F(CliOutputs, FramesOfAnEarlierRunAreWarnedAbout) {
+  const std::string longer = meeting("long.xml", "continuous-time", 0.2), shorter = meeting("short.xml", "continuous-time", 0.1);
+  const std::string svg = path("svg");
+  ASSERT_TRUE(exitedWith(runFosssim({"-s", longer, "-d", "0", "-q", "-m", svg}), 0));
+  const Outcome again = runFosssim({"-s", longer, "-d", "0", "-q", "-m", svg});  // the same frames: nothing to say
+  EXPECT_TRUE(exitedWith(again, 0)) << again;
+  EXPECT_FALSE(contains(again.err, "earlier run")) << again;
+  const Outcome o = runFosssim({"-s", shorter, "-d", "0", "-q", "-m", svg});
+  EXPECT_TRUE(exitedWith(o, 0)) << o;
+  EXPECT_TRUE(contains(o.err, "FOSSSim: warning: -m: \"" + svg + "\" holds 10 frames of an earlier run beyond this run's 10 "
+                              "(frame00000000000000000011.svg to frame00000000000000000020.svg)"))
+      << o;
+  // Thinned out: 20 steps, every 4th is 5 frames; frames 6 to 20 are the earlier run's.
+  const Outcome thinned = runFosssim({"-s", longer, "-d", "0", "-q", "-m", svg, "--frame-every", "4"});
+  EXPECT_TRUE(contains(thinned.err, "holds 15 frames of an earlier run beyond this run's 5")) << thinned;
 }
 
 // A run whose pictures fail says only what was written: frames up to the last one written, and

@@ -143,14 +143,53 @@ TEST(Cli, AFrameSizeWithNothingToDrawOnlyWarns) {
 TEST(Cli, ValuesAfterAnEqualsSign) {
   const Outcome o = runFosssim({"-s", goodScene(), "-d", "0", "-q", "--threads=2"});
   EXPECT_TRUE(exitedWith(o, 0)) << o;
+  // Short options too: "-o=out.bin" wrote a file named "=out.bin", and "-d=0" was refused.
+  const std::string out = std::filesystem::temp_directory_path() / ("fosssim-cli-eq-" + std::to_string(getpid()) + ".bin");
+  const Outcome shortForms = runFosssim({"-s=" + goodScene(), "-d=0", "-q", "-o=" + out});
+  EXPECT_TRUE(exitedWith(shortForms, 0)) << shortForms;
+  EXPECT_TRUE(std::filesystem::exists(out));
+  std::filesystem::remove(out);
+  expectUsageError({"-s", goodScene(), "-d=2"}, "option -d takes 0 or 1, got \"2\"");
+  const bool existed = std::filesystem::exists("=");
+  expectUsageError({"-s", goodScene(), "-d", "0", "-o="}, "option -o needs a value");
+  if (!existed && std::filesystem::remove("=")) ADD_FAILURE() << "-o= wrote a file named \"=\"";
   expectUsageError({"-s", goodScene(), "--threads=0"}, "option --threads takes an integer from 1 to");
   expectUsageError({"-s", goodScene(), "--threads="}, "option --threads needs a value");
   expectUsageError({"-s", goodScene(), "--fps=fast", "--movie", "m.mp4"}, "option --fps takes a frame rate");
+  expectUsageError({"-s", goodScene(), "--fps=0x10", "--movie", "m.mp4"}, "option --fps takes a frame rate");  // not 16
   // Flags take no value: "--compat=0" would read as "not compat" to some and be ignored by others.
   expectUsageError({"-s", goodScene(), "--compat=0"}, "option --compat takes no value");
   for (const char* flag : {"-q", "-h"}) {  // CLI11 reads "-q=1" as -q and an unknown word "-=1"
     expectUsageError({"-s", goodScene(), std::string(flag) + "=1"}, "option " + std::string(flag) + " takes no value");
     expectUsageError({"-s", goodScene(), "-d", "0", std::string(flag) + "=0"}, "takes no value");
+  }
+}
+
+// CLI11 takes the next word as an option's value whatever it is: "-o -i ref.bin" wrote the
+// trajectory to a file named "-i" (and graded nothing), "-o -q" ran without -q.
+TEST(Cli, AnOptionIsNoOtherOptionsValue) {
+  const std::vector<std::vector<std::string>> cases = {
+      {"-o", "-i", "ref.bin"}, {"-o", "-q"}, {"-o", "--verify"}, {"-o", "--threads=2"}, {"-m", "-d0"},
+      {"--stats", "-q"},       {"-s", "-d", "0"}, {"-i", "--compat"}, {"-d", "-q"}};
+  for (const auto& extra : cases) {
+    std::vector<std::string> args = {"-s", goodScene(), "-d", "0"};
+    if (extra[0] == "-s" || extra[0] == "-d") args = {};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const bool existed = std::filesystem::exists(extra[1]);
+    const Outcome o = runFosssim(args);
+    EXPECT_TRUE(exitedWith(o, 2)) << o;
+    EXPECT_TRUE(contains(o.err, "option " + extra[0] + " needs a value, and the next word \"" + extra[1] + "\" is an option"))
+        << o;
+    // Without the check a file of the option's name appeared in the working directory.
+    if (!existed && std::filesystem::remove_all(extra[1]) > 0) ADD_FAILURE() << "wrote \"" << extra[1] << "\"";
+  }
+  // "-" is standard output (or input) by convention: "-o -" wrote a file named "-".
+  for (const char* option : {"-o", "--stats", "-m", "-s"}) {
+    const bool existed = std::filesystem::exists("-");
+    std::vector<std::string> args = {"-d", "0", option, "-"};
+    if (option != std::string("-s")) args.insert(args.begin(), {"-s", goodScene()});
+    expectUsageError(args, "option " + std::string(option) + " takes a name, and \"-\"");
+    if (!existed && std::filesystem::remove_all("-") > 0) ADD_FAILURE() << option << " - wrote a file named \"-\"";
   }
 }
 

@@ -43,6 +43,21 @@ TEST(Options, ValuesJoinedOrAfterAnEqualsSign) {
   EXPECT_EQ(parse({"-s", "a.xml", "--threads=3"}).threads, 3);
   EXPECT_FALSE(parse({"-s", "a.xml", "-d0"}).display);
   EXPECT_EQ(parse({"-sa.xml"}).scene, "a.xml");
+  // "after '='" holds for the short options too: CLI11 alone gave -o the value "=out.bin".
+  const Options o = parse({"-s=a.xml", "-d=0", "-p=0", "-g=1", "-o=out.bin", "-m=svg"});
+  EXPECT_EQ(o.scene, "a.xml");
+  EXPECT_FALSE(o.display);
+  EXPECT_FALSE(o.paused);
+  EXPECT_TRUE(o.pngs);
+  EXPECT_EQ(o.output, "out.bin");
+  EXPECT_EQ(o.svgDir, "svg");
+  EXPECT_EQ(parse({"-s", "a.xml", "-i=ref.bin"}).input, "ref.bin");
+  EXPECT_EQ(parse({"-s", "a.xml", "-o", "=x.bin"}).output, "=x.bin");  // a separate word is the value as given
+  // A file whose name begins with '-' is given with a path: ./-i.
+  EXPECT_EQ(parse({"-s", "a.xml", "-o", "./-i"}).output, "./-i");
+  // After '=' a value is plainly one, even one that begins like an option.
+  EXPECT_EQ(parse({"-s", "a.xml", "--stats=-q.csv"}).stats, "-q.csv");
+  EXPECT_EQ(parse({"-s", "a.xml", "-o=-d.bin"}).output, "-d.bin");
 }
 
 TEST(Options, TheFrameRateIsADecimal) {

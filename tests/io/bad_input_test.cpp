@@ -73,7 +73,9 @@ TEST(BadInput, EveryElementLoadsWithItsGoodValues) {
 }
 
 TEST(BadInput, TextThatIsNotANumberIsLocated) {
-  for (const char* bad : {"abc", "1.5abc", "", "  ", "1,5", "0x", "--1", "1 2", "one", "1.0.0", "\"1\""}) {
+  // Hexadecimal ("0x10"): strtod reads 16 where the course's stream extraction read 0 and junk.
+  for (const char* bad : {"abc", "1.5abc", "", "  ", "1,5", "0x", "--1", "1 2", "one", "1.0.0", "\"1\"", "0x10",
+                          "0x1p3", "-0X1", " 0x0 ", "1x"}) {
     for (const ElementSpec& e : elements())
       for (const Attr& a : e.numeric) {
         SCOPED_TRACE(std::string(e.name) + " " + a.name + "=\"" + bad + "\"");
@@ -177,6 +179,23 @@ TEST(BadInput, ColourChannelsOutsideZeroOneAreRejected) {
         SCOPED_TRACE(text);
         expectError(extra(text + "/>"), {located(kExtraLine, element, channel), "[0, 1]", bad});
       }
+}
+
+// An integer beyond an int is no "expected an integer" (it is one): it is too large to name anything.
+TEST(BadInput, AnIndexBeyondAnyCountIsTooLarge) {
+  for (const char* big : {"2147483648", "2e9 ", "1e300", "99999999999999999999"}) {
+    SCOPED_TRACE(big);
+    const std::string v = std::string("\"") + big + "\"";
+    for (const std::string& text : {"  <particlecolor i=" + v + " r=\"0\" g=\"0\" b=\"0\"/>",
+                                    "  <springforce edge=" + v + " k=\"1\" l0=\"1\"/>"}) {
+      const std::string message = loadError(extra(text));
+      EXPECT_NE(message.find(located(kExtraLine, text[3] == 'p' ? "particlecolor" : "springforce", text[3] == 'p' ? "i" : "edge")),
+                std::string::npos) << message;
+      EXPECT_EQ(message.find("expected an integer"), std::string::npos) << message;
+      EXPECT_TRUE(message.find("too large") != std::string::npos || message.find("does not exist") != std::string::npos)
+          << message;
+    }
+  }
 }
 
 TEST(BadInput, IndicesMustBeNonNegativeIntegers) {

@@ -90,6 +90,34 @@ TEST(BadXml, ControlCharactersAndEncodings) {
   EXPECT_NE(loadError(utf16), "");
 }
 
+// XML 1.0 allows no control character but tab and line ends, neither as a byte nor as a
+// character reference; tinyxml2 took both, and a description's ESC reached the terminal.
+TEST(BadXml, ControlCharactersAreRefusedWhereverTheyAre) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"  <description text=\"red \x1b[31m\"/>", "U+001B"},
+      {"  <description text=\"bell &#7;\"/>", "U+0007 (written &#7;)"},
+      {"  <scenetag tag=\"&#x1B;[2J\"/>", "U+001B (written &#x1B;)"},
+      {"  <dragdamping b=\"&#0;1\"/>", "U+0000 (written &#0;)"},
+      {"  <!-- a form feed \f in a comment -->", "U+000C"},
+      {"  \x01", "U+0001"},
+  };
+  for (const auto& [element, code] : cases) {
+    SCOPED_TRACE(element);
+    expectError(extra(element), {kFile + ":" + std::to_string(kExtraLine) + ":", "control character, " + code});
+  }
+  // References to what is no character at all: tinyxml2 wrote bytes that are no UTF-8, or nothing.
+  for (const char* reference : {"&#xD800;", "&#57343;", "&#xFFFE;", "&#xffff;", "&#x110000;", "&#99999999999999999999;"}) {
+    SCOPED_TRACE(reference);
+    expectError(extra(std::string("  <description text=\"a ") + reference + " b\"/>"),
+                {kFile + ":" + std::to_string(kExtraLine) + ":", std::string("the reference ") + reference +
+                                                                     " names no character XML allows"});
+  }
+  EXPECT_EQ(loadError(extra("  <description text=\"&#xD7FF;&#xE000;&#xFFFD;&#x10FFFF;&#0000000000000065;\"/>")), "");
+  // Tab, CR and references to them are fine; in a comment or CDATA "&#27;" is text, not a reference.
+  EXPECT_EQ(loadError(extra("  <description text=\"a\tb&#9;c&#10;d&#13;&#32;\"/>\r")), "");
+  EXPECT_EQ(loadError(extra("  <!-- &#27; --><![CDATA[ &#x1b; ]]>")), "");
+}
+
 TEST(BadXml, MessagesNameTheFileGiven) {
   SceneFile file;
   const Status s = parseScene("<scene>", "some/dir/my scene.xml", file);

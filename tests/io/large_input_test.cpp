@@ -171,5 +171,36 @@ TEST(LargeInputText, HugeValuesAndCounts) {
   EXPECT_EQ(file.description.size(), words.size());
 }
 
+// A name or word of the file is shown cut, with its length: a 3 MB integrator type or element
+// name was a 3 MB line of stderr.
+TEST(LargeInputText, LongNamesAndWordsAreCutInMessages) {
+  const std::string longWord(1 << 20, 'z');
+  const std::vector<std::string> errors = {
+      replaced(3, "  <integrator type=\"" + longWord + "\" dt=\"0.01\"/>"),
+      extra("  <collision type=\"" + longWord + "\"/>"),
+      extra("  <collision type=\"hybrid\" failsafe=\"" + longWord + "\"/>"),
+      extra("  <simtype type=\"" + longWord + "\"/>"),
+      "<" + longWord + "/>\n",                                  // the root
+      join(baseLines()) + "<" + longWord + "/>\n",              // a second root
+      extra("  <" + longWord + ">"),                             // never closed
+      extra("  <edge i=\"0\" j=\"1\" " + longWord + "=1/>"),   // unquoted
+  };
+  for (const std::string& text : errors) {
+    const std::string message = loadError(text);
+    EXPECT_FALSE(message.empty());
+    EXPECT_LT(message.size(), 600u) << message.substr(0, 600);
+    EXPECT_NE(message.find("(1,048,576 characters)"), std::string::npos) << message.substr(0, 600);
+  }
+  // Warnings: an unknown element, an unknown attribute, an element nested where nothing reads it.
+  for (const std::string& element : {"  <" + longWord + "/>", "  <dragdamping b=\"0\" " + longWord + "=\"1\"/>",
+                                     "  <dragdamping b=\"0\"><" + longWord + "/></dragdamping>"}) {
+    SceneFile file;
+    ASSERT_TRUE(parseScene(extra(element), kFile, file).isOk());
+    ASSERT_EQ(file.warnings.size(), 1u);
+    EXPECT_LT(file.warnings[0].size(), 600u) << file.warnings[0].substr(0, 600);
+    EXPECT_NE(file.warnings[0].find("(1,048,576 characters)"), std::string::npos) << file.warnings[0].substr(0, 600);
+  }
+}
+
 }  // namespace
 }  // namespace fosssim::testing

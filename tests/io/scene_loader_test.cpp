@@ -3,6 +3,8 @@
 // from the format description (spec section 1), not from the loader.
 #include "scene_text.h"
 
+#include "fosssim/core/simulator.h"
+
 #include <cmath>
 
 namespace fosssim::testing {
@@ -249,6 +251,41 @@ TEST(SceneLoader, EverythingElse) {
   EXPECT_EQ(h.scene.halfplanes[0].normal, Vec2(3, 4));
   EXPECT_EQ(load(replaced(2, "  <duration time=\"0\"/>")).scene.numSteps(), 0);
   EXPECT_EQ(load(replaced(2, "  <duration time=\"0.105\"/>")).scene.numSteps(), 11);  // ceil(10.5)
+}
+
+/// The state after running `file` to its end (simple collisions: the contact uses |n|).
+State runToEnd(const SceneFile& file) {
+  std::unique_ptr<Simulator> simulator;
+  EXPECT_TRUE(Simulator::create(file.scene, SimulatorOptions{}, simulator).isOk());
+  State state = file.initial;
+  for (long k = 0; k < file.scene.numSteps(); ++k) EXPECT_TRUE(simulator->step(file.scene, state).isOk()) << k;
+  return state;
+}
+
+// "need not be a unit vector; not zero" (the format's words): the core takes |n| as
+// sqrt(nx^2 + ny^2), whose square overflowed beyond about 1e154 (the ball fell through the floor)
+// and underflowed below about 1e-154 (refused as "zero"). Any length must give the same wall.
+TEST(SceneLoader, AHalfPlaneNormalOfAnyLengthIsTheSameWall) {
+  const auto ball = [](const std::string& nx, const std::string& ny) {
+    return load("<scene><duration time=\"1\"/><integrator type=\"symplectic-euler\" dt=\"0.01\"/>"
+                "<particle m=\"1\" px=\"0\" py=\"0.5\" vx=\"0.3\" vy=\"0\" fixed=\"0\" radius=\"0.1\"/>"
+                "<simplegravity fx=\"0\" fy=\"-9.81\"/><collision type=\"simple\"/>"
+                "<halfplane px=\"0\" py=\"0\" nx=\"" + nx + "\" ny=\"" + ny + "\"/></scene>");
+  };
+  const State unit = runToEnd(ball("0", "1"));
+  ASSERT_GT(unit.x[1], 0.0);  // it bounced: the floor held
+  for (const char* length : {"1e155", "1e200", "1e308", "1e-155", "1e-170", "4e-320"}) {
+    SCOPED_TRACE(length);
+    const SceneFile f = ball("0", length);
+    const Vec2 n = f.scene.halfplanes.at(0).normal;
+    EXPECT_TRUE(std::isfinite(n.norm()) && n.norm() > 0) << n.transpose();
+    EXPECT_EQ(n.x(), 0.0);
+    EXPECT_EQ(runToEnd(f).x, unit.x);
+  }
+  // A slanted normal keeps its direction exactly (scaling by a power of two is exact).
+  const Vec2 slanted = ball("3e-200", "-4e-200").scene.halfplanes.at(0).normal;
+  EXPECT_NEAR(slanted.normalized().x(), 0.6, 1e-15);
+  EXPECT_NEAR(slanted.normalized().y(), -0.8, 1e-15);
 }
 
 }  // namespace

@@ -298,6 +298,14 @@ TEST(SceneWriter, RefusesWhatTheFormatCannotSay) {
     f.initial.v[3] = std::numeric_limits<double>::infinity();
     EXPECT_EQ(message(f), "cannot write the scene: <particle> attribute 'vy' is inf (a scene file holds finite numbers only)");
   }
+  {
+    SceneFile f = twoParticles();  // text the loader refuses: XML has no control characters
+    f.description = "red \x1b[31m";
+    EXPECT_NE(message(f).find("<description> attribute 'text' holds the control character U+001B"), std::string::npos);
+    f.description = "fine\ttab";
+    f.tag = std::string("nul\0", 4);
+    EXPECT_NE(message(f).find("<scenetag> attribute 'tag' holds the control character U+0000"), std::string::npos);
+  }
 }
 
 TEST(SceneWriter, WritesFilesAndNamesThePathOnFailure) {

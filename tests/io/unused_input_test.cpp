@@ -42,6 +42,24 @@ TEST(UnusedInput, ElementsInsideElementsAreReported) {
                  {kFile + ":7: text \"floor\" inside <halfplane> ignored"});
 }
 
+// The format's elements inside an unknown one: the warning named only <forces>, and the gravity
+// in it was dropped without a word about it.
+TEST(UnusedInput, ElementsInsideAnUnknownElementAreReported) {
+  const SceneFile file = loaded(extra("  <forces>\n    <simplegravity fx=\"0\" fy=\"-9.81\"/>\n"
+                                      "    <group><dragdamping b=\"1\"/></group>\n  </forces>"));
+  EXPECT_TRUE(file.scene.forces.empty());
+  ASSERT_EQ(file.warningCount, 3);
+  const auto has = [&](const std::string& fragment) {
+    return std::any_of(file.warnings.begin(), file.warnings.end(),
+                       [&](const std::string& w) { return w.find(fragment) != std::string::npos; });
+  };
+  EXPECT_TRUE(has(kFile + ":8: <forces>: unknown element ignored"));
+  EXPECT_TRUE(has(kFile + ":9: <simplegravity> inside <forces> ignored"));
+  EXPECT_TRUE(has(kFile + ":10: <dragdamping> inside <group> ignored"));
+  // A second <scene> inside the first, too.
+  EXPECT_EQ(loaded(extra("  <scene><particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/></scene>")).warningCount, 2);
+}
+
 TEST(UnusedInput, TextCdataAndDeclarationsAreReported) {
   expectContains(onlyWarning(extra("  gravity please")), {kFile + ":8: stray text \"gravity please\" ignored"});
   expectContains(onlyWarning(extra("  <![CDATA[<simplegravity fx=\"0\" fy=\"-1\"/>]]>")),
