@@ -217,7 +217,7 @@ const std::vector<ElementSpec>& elementTable() {
          "overlapping disks took 2 minutes at 10000 and 12 minutes per step at 100000 (--compat, 2 shared cores); "
          "the course's scenes use at most 10000"},
         {"failsafe", Kind::Text, "", "projection",
-         "hybrid and continuous-time, default mode: projection (inelastic projection of impact zones) or "
+         "hybrid and continuous-time, default mode: projection (projection of impact zones, with the COR's restitution for hits) or "
          "rigid (the course's rigid zones); --compat always uses rigid zones",
          "projection"},
         {"k", Kind::NonNegative, "N/m", "(by type: the table below)", "stiffness of the penalty force", "10"},
