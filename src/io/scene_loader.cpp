@@ -13,7 +13,6 @@
 #include "xml_syntax.h"
 
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <new>
@@ -146,9 +145,8 @@ Status parseDocument(const std::string& raw, const std::string& name, SceneFile&
       return Status::error(messages.at(io::lineOf(raw, control.offset)) + "the reference " + io::clip(control.written) +
                            " names no character XML allows (surrogate halves, U+FFFE, U+FFFF and code points beyond "
                            "U+10FFFF are none)" + at);
-    char code[8];
-    std::snprintf(code, sizeof code, "U+%04X", control.code);
-    return Status::error(messages.at(io::lineOf(raw, control.offset)) + "a control character, " + code +
+    return Status::error(messages.at(io::lineOf(raw, control.offset)) + "a control character, " +
+                         io::codePointName(control.code) +
                          (control.written.empty() ? "" : " (written " + io::clip(control.written) + ")") + at +
                          ": XML allows none but tab and line ends, and a scene file is text");
   }

@@ -3,13 +3,14 @@
 // scene can be written that way, so that loading the text gives back the same scene.
 #include "fosssim/io/scene_writer.h"
 
+#include "xml_syntax.h"
+
 #include "fosssim/core/collision_handler.h"
 #include "fosssim/core/forces.h"
 
 #include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -61,12 +62,9 @@ class Element {
     // XML carries no control character but tab and line ends, not even as a reference: the loader
     // refuses the file, so the text would not load back.
     for (const char c : value)
-      if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') {
-        char code[8];
-        std::snprintf(code, sizeof code, "U+%04X", static_cast<unsigned>(static_cast<unsigned char>(c)));
+      if (const auto code = static_cast<unsigned char>(c); io::isForbiddenControl(code))
         throw WriteError{std::string("<") + name_ + "> attribute '" + attribute + "' holds the control character " +
-                         code + " (a scene file is XML text, which has none but tab and line ends)"};
-      }
+                         io::codePointName(code) + " (a scene file is XML text, which has none but tab and line ends)"};
     out_ += std::string(" ") + attribute + "=\"" + escaped(value) + "\"";
     return *this;
   }

@@ -5,6 +5,7 @@
 #include <tinyxml2.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <vector>
 
 namespace fosssim::io {
@@ -260,8 +261,14 @@ bool findCrowdedElement(const std::string& text, CrowdedElement& found) {
   return false;
 }
 
+std::string codePointName(unsigned code) {
+  char name[16];
+  std::snprintf(name, sizeof name, "U+%04X", code);
+  return name;
+}
+
 bool findControlCharacter(const std::string& text, ControlCharacter& found) {
-  const auto forbidden = [](unsigned c) { return c < 0x20 && c != '\t' && c != '\n' && c != '\r'; };
+  const auto forbidden = isForbiddenControl;
   const size_t size = text.size();
   size_t verbatimEnd = 0;  // inside a comment or CDATA section up to here: '&' is text there
   for (size_t p = 0; p < size; ++p) {

@@ -43,6 +43,13 @@ struct CrowdedElement {
 /// skipped; a tag it cannot read is left to the parser (and explainXmlError).
 bool findCrowdedElement(const std::string& text, CrowdedElement& found);
 
+/// A control character XML 1.0 forbids: U+0000 to U+001F other than tab, line feed and carriage
+/// return (the loader refuses them, and the writer does not write them).
+inline bool isForbiddenControl(unsigned code) { return code < 0x20 && code != '\t' && code != '\n' && code != '\r'; }
+
+/// "U+001B": a code point as messages name it.
+std::string codePointName(unsigned code);
+
 struct ControlCharacter {
   size_t offset = 0;   ///< where it (or its reference) begins
   unsigned code = 0;   ///< U+0000 to U+001F; from a reference also a surrogate, U+FFFE, U+FFFF or 0x110000 (beyond)

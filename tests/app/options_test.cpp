@@ -21,14 +21,18 @@ Options parse(std::vector<std::string> args) {
   return o;
 }
 
-TEST(Options, TheReferenceForms) {
-  const Options o = parse({"-s", "a.xml", "-d", "0", "-p", "0", "-g", "1", "-o", "out.bin", "-m", "svg"});
+/// What -s a.xml -d 0 -p 0 -g 1 -o out.bin -m svg say, in whichever form they were written.
+void expectTheReferenceOptions(const Options& o) {
   EXPECT_EQ(o.scene, "a.xml");
   EXPECT_FALSE(o.display);
   EXPECT_FALSE(o.paused);
   EXPECT_TRUE(o.pngs);
   EXPECT_EQ(o.output, "out.bin");
   EXPECT_EQ(o.svgDir, "svg");
+}
+
+TEST(Options, TheReferenceForms) {
+  expectTheReferenceOptions(parse({"-s", "a.xml", "-d", "0", "-p", "0", "-g", "1", "-o", "out.bin", "-m", "svg"}));
   const Options defaults = parse({"-s", "a.xml"});  // the reference's defaults
   EXPECT_TRUE(defaults.display);
   EXPECT_TRUE(defaults.paused);
@@ -44,13 +48,7 @@ TEST(Options, ValuesJoinedOrAfterAnEqualsSign) {
   EXPECT_FALSE(parse({"-s", "a.xml", "-d0"}).display);
   EXPECT_EQ(parse({"-sa.xml"}).scene, "a.xml");
   // "after '='" holds for the short options too: CLI11 alone gave -o the value "=out.bin".
-  const Options o = parse({"-s=a.xml", "-d=0", "-p=0", "-g=1", "-o=out.bin", "-m=svg"});
-  EXPECT_EQ(o.scene, "a.xml");
-  EXPECT_FALSE(o.display);
-  EXPECT_FALSE(o.paused);
-  EXPECT_TRUE(o.pngs);
-  EXPECT_EQ(o.output, "out.bin");
-  EXPECT_EQ(o.svgDir, "svg");
+  expectTheReferenceOptions(parse({"-s=a.xml", "-d=0", "-p=0", "-g=1", "-o=out.bin", "-m=svg"}));
   EXPECT_EQ(parse({"-s", "a.xml", "-i=ref.bin"}).input, "ref.bin");
   EXPECT_EQ(parse({"-s", "a.xml", "-o", "=x.bin"}).output, "=x.bin");  // a separate word is the value as given
   // A file whose name begins with '-' is given with a path: ./-i.

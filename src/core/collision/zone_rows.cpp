@@ -81,10 +81,10 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
   }
   const auto rate = [&](int p) { return motion.rate(p); };
   bool curving = deepest >= 0.0;
+  double closing = 0.0;  // a rate (per step), along the normal of T (when not curving)
   if (curving) {  // the caller found it deepening already
     row = contactRow(scene, key, [&](int p) { return motion.at(p, deepest); }, n);
-  } else if (const double closing = closingSpeed(scene, key, n, alpha, rate, scale);
-             closing <= kRestingClosingFraction * scale) {
+  } else if (closing = closingSpeed(scene, key, n, alpha, rate, scale); closing <= kRestingClosingFraction * scale) {
     const double td = deepeningTime(scene, key, [&](int p, double t) { return motion.at(p, t); }, closing, T);
     curving = td >= 0.0;
     if (curving) row = contactRow(scene, key, [&](int p) { return motion.at(p, td); }, n);
@@ -95,11 +95,9 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
   // walls stopped dead). Resting contact does not bounce (kRestingBounceKicks, as for events),
   // and a curving row's normal is not the one it closes along now.
   double restitution = 0.0;
-  if (cor_ > 0.0 && !curving) {
-    const double closing = closingSpeed(scene, key, n, alpha, rate, scale);  // a rate: per step
-    if (closing > 0.0 && (cor_ >= 1.0 || closing > kRestingBounceKicks * h_ * kicksAlong(scene, key, n, alpha)))
-      restitution = cor_;
-  }
+  if (cor_ > 0.0 && !curving && closing > 0.0 &&
+      (cor_ >= 1.0 || closing > kRestingBounceKicks * h_ * kicksAlong(scene, key, n, alpha)))
+    restitution = cor_;
   if (const int* known = rowOf_.find(key)) {
     // A row no solve has seen yet was set at this instant (contacts of one instant wait for one
     // solve together): it stands. Replacing it would make its warm start, already applied, a
