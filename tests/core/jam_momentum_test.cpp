@@ -82,12 +82,13 @@ TEST(JamMomentum, APileSlidingOnAFrictionlessFloorKeepsItsMomentumThroughItsJams
 }
 
 // The control: a pile sliding across its kick by less than a kick (0.02 m/s; a kick is 0.05 m/s
-// at dt 0.005) has its jams stopped at rest, as before, and stops: the test above sees welds, not
-// a change that let nothing jam.
+// at dt 0.005) has its jams stopped at rest, as before, and loses much of its momentum: the test
+// above sees welds, not a change that let nothing jam. "Much": more than twice the welds' bound
+// above (5%), so that the two cannot be mistaken.
 TEST(JamMomentum, APileSlowerThanAKickAcrossItStopsAtItsJams) {
   const SlideRun run = slide("hybrid", 0.0, 10, 8, 1e-3, 0.02, 20);
   EXPECT_GT(run.jammed, 0);
-  EXPECT_GT(run.drift, 0.3) << "the slow pile's jams should have stopped much of it";
+  EXPECT_GT(run.drift, 0.1) << "the slow pile's jams should have stopped much of it";
 }
 
 }  // namespace

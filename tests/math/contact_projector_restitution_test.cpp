@@ -6,6 +6,10 @@
 //   * a pair pushed into a wall, the pair's row restituting and the wall's not: the push sends the
 //     second body into the wall with more energy than came in (worked below), so the restitution
 //     is taken back and the projection stands;
+//   * a wedge hit on one wall only (the other opening): the projection stops the body, loading the
+//     second wall through the first; the hit's restitution alone would send it off faster than it
+//     came, so restitute tries again with the loaded wall's coefficient too, which is Moreau's law
+//     with one coefficient: -e v;
 //   * restitution acts outside the multipliers: a later solve cannot take the bounce back, and
 //     totalImpulse (what warm-starts the contact in the next step) stays the projection's impulse.
 #include "fosssim/math/contact_projector.h"
@@ -69,6 +73,45 @@ TEST(ContactProjectorRestitution, AWedgeSendsABallBackAtETimesItsVelocity) {
     EXPECT_NEAR(cp.velocity(0).y(), -e * v.y(), 1e-9) << "e = " << e;
     EXPECT_NEAR(kinetic(cp, {1.0}), e * e * 0.5 * v.squaredNorm(), 1e-8) << "e = " << e;
   }
+}
+
+// The walls of the wedge above, the body moving into the first (n1 . v < 0) and away from the
+// second (n2 . v > 0), yet inside their polar cone: v = -(n1 + n2 / 2), so the projection is rest
+// and both walls push (impulses 1 and 1/2, unit mass). |v|^2 = 5/4 + n1 . n2 = 5/4 - cos 2 deg,
+// about 1/4.
+//   * e = 1: the hit wall alone would send the body off at n1 (|v|^2 = 1 against about 1/4):
+//     taken back; with the second wall's loaded coefficient (it was opening when set) both push
+//     again: -v, the energy kept.
+//   * e = 1/2: the hit wall alone sends it off at n1 / 2, |v|^2 = 1/4 exactly, less than came in
+//     (5/4 - cos 2 deg > 1/4): kept, the first try stands.
+TEST(ContactProjectorRestitution, AWallLoadedOnlyThroughTheHitBouncesWithIt) {
+  const double th = 1.0 * M_PI / 180.0;
+  const Vec2 n1(std::sin(th), std::cos(th)), n2(std::sin(th), -std::cos(th));
+  const Vec2 v = -(n1 + 0.5 * n2);
+  ASSERT_LT(n1.dot(v), 0.0);
+  ASSERT_GT(n2.dot(v), 0.0);
+  for (double e : {0.5, 1.0}) {
+    ContactProjector cp;
+    cp.reset(1);
+    cp.addBody(0, 1.0, v);
+    cp.setRestitution(cp.addRow(halfPlaneRow(0, n1)), e);
+    cp.setRestitution(cp.addRow(halfPlaneRow(0, n2)), 0.0, e);
+    ASSERT_TRUE(cp.solve(v.norm(), kTol, kBudget));
+    EXPECT_LE(cp.velocity(0).norm(), 1e-9);
+    ASSERT_TRUE(cp.restitute());
+    const Vec2 want = e == 1.0 ? Vec2(-v) : Vec2(e * n1);
+    EXPECT_NEAR(cp.velocity(0).x(), want.x(), 1e-9) << "e = " << e;
+    EXPECT_NEAR(cp.velocity(0).y(), want.y(), 1e-9) << "e = " << e;
+  }
+  // Without the loaded coefficient the restitution is taken back: the body stays at rest.
+  ContactProjector cp;
+  cp.reset(1);
+  cp.addBody(0, 1.0, v);
+  cp.setRestitution(cp.addRow(halfPlaneRow(0, n1)), 1.0);
+  cp.addRow(halfPlaneRow(0, n2));
+  ASSERT_TRUE(cp.solve(v.norm(), kTol, kBudget));
+  EXPECT_FALSE(cp.restitute());
+  EXPECT_LE(cp.velocity(0).norm(), 1e-9);
 }
 
 // Body 0 (mass 1) moves at 1 m/s into body 1 (mass 1) resting against a wall beyond it. The

@@ -86,6 +86,8 @@ int ContactZones::unite(int a, int b) {
   za.size += zb.size;
   zb.first = zb.last = zb.firstHoldable = zb.lastHoldable = -1;  // b is no root: its lists are a's
   za.metAgain = std::max(za.metAgain, zb.metAgain);
+  za.bounces = std::max(za.bounces, zb.bounces);
+  za.bounced = za.bounced && zb.bounced;
   za.solves = std::max(za.solves, zb.solves);
   za.rigid = za.rigid || zb.rigid;
   za.immovable = za.immovable || zb.immovable;
@@ -134,7 +136,11 @@ int ContactZones::absorb(const Scene& scene, const StepMotion& motion, const Pai
   const bool solved = known && *known < solvedRows_;
   int jammed = -1;       // a movable particle of a jammed contact (weldJammed)
   bool welded = false;   // whether that jam welded bodies that were apart
-  if (solved && !requeried_[*known]) ++record_[root(zone)].metAgain;
+  if (solved && !requeried_[*known]) {
+    ZoneRecord& z = record_[root(zone)];
+    if (z.bounced && z.bounces < kMaxZoneBounces) ++z.bounces;
+    else ++z.metAgain;
+  }
   if (solved && record_[root(zone)].metAgain > kMaxZoneProjections && record_[root(zone)].immovable && !rigidOnly_) {
     // A jam against an obstacle: the contact keeps closing although it was solved for again and
     // again. Its particles move as one for the rest of the step, and lose the freedom to close
@@ -233,7 +239,7 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
       // queued.
       // The hits among the rows bounce (Moreau's restitution on the solve's impulses), unless
       // that would add energy.
-      if (cor_ > 0.0) projector_.restitute();
+      z.bounced = cor_ > 0.0 && projector_.restitute();
       const bool capped = projector_.capEnergy() < 1.0;
       stats.energyCaps += capped;
       // The rows set since the last solve stand for contacts whose events were taken: one that

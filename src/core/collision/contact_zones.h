@@ -63,6 +63,12 @@ namespace fosssim {
 /// touching nothing moves rigidly for the rest of the step.
 constexpr int kMaxZoneProjections = 8;
 
+/// Times a zone's contacts may come back in one step after a solve that bounced them (its
+/// restitution kept, so no energy gained) without counting toward kMaxZoneProjections: a ball
+/// bouncing between two walls at the apex of a narrow wedge is not a jam, and comes back once
+/// for each bounce.
+constexpr int kMaxZoneBounces = 64;
+
 /// A jammed contact's particles stop at rest, as obstacles, instead of being welded, when their
 /// common velocity moves across their kick (the velocity change this step's forces gave them) by
 /// at most this many kicks (ContactZones::stopsAtRest): the speed a jam takes from motion across
@@ -323,6 +329,7 @@ class ContactZones {
   /// splices the smaller zone's lists after the larger's.
   struct ZoneRecord {
     int metAgain = 0;  ///< contacts back after a solve, failed solves (jam count)
+    int bounces = 0;   ///< contacts back after a solve that bounced (not jams: kMaxZoneBounces)
     int solves = 0;    ///< solves in this step
     int rowCount = 0;  ///< the projector rows set for its contacts in this step
     int size = 0;      ///< members
@@ -333,6 +340,7 @@ class ContactZones {
     int lastFrozen = -1;  ///< its members up to this one are frozen at rest (immovable and rigid); -1: none
     char rigid = 0;       ///< moving rigidly for the rest of the step
     char immovable = 0;   ///< a fixed particle or a half-plane among its rows
+    char bounced = 0;     ///< its last solve's restitution was kept (ContactProjector::restitute)
   };
   /// Calls f(p) for every member of zone `zone` (a root), in the order they joined.
   template <class F>

@@ -94,17 +94,21 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
   // scene's COR, not only the projection's inelastic answer (a COR 1 ball wedged between two
   // walls stopped dead). Resting contact does not bounce (kRestingBounceKicks, as for events),
   // and a curving row's normal is not the one it closes along now.
-  double restitution = 0.0;
+  // A row that is not closing at all (apart, or opening: the second wall of a wedge) takes the
+  // COR only if a hit loads it and the hit's restitution alone would add energy
+  // (ContactProjector::restitute).
+  double restitution = 0.0, loaded = 0.0;
   if (cor_ > 0.0 && !curving && closing > 0.0 &&
       (cor_ >= 1.0 || closing > kRestingBounceKicks * h_ * kicksAlong(scene, key, n, alpha)))
     restitution = cor_;
+  if (cor_ > 0.0 && !curving && closing <= 0.0) loaded = cor_;
   if (const int* known = rowOf_.find(key)) {
     // A row no solve has seen yet was set at this instant (contacts of one instant wait for one
     // solve together): it stands. Replacing it would make its warm start, already applied, a
     // push that the solve could no longer take back, and that can add energy.
     if (*known >= solvedRows_) return false;
     projector_.setRow(*known, row, z);
-    projector_.setRestitution(*known, restitution);
+    projector_.setRestitution(*known, restitution, loaded);
     requeried_[*known] = 0;
     curving_[*known] = curving;
     unsolved_.push_back(key);
@@ -117,7 +121,7 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
   // Nor for a hit: last step's impulse is a resting contact's, and it would bounce.
   const double* last = record.rigid || restitution > 0.0 ? nullptr : lastImpulse_.find(key);
   const int index = projector_.addRow(row, last ? *last : 0.0, z);
-  projector_.setRestitution(index, restitution);
+  projector_.setRestitution(index, restitution, loaded);
   rowOf_.insert(key, index);
   rowKey_.push_back(key);
   ++record.rowCount;
