@@ -66,6 +66,16 @@ TEST(Cli, UnknownOptionsAreNamed) {
   expectUsageError({"-s", goodScene(), "-D", "0"}, "\"-D\"");
 }
 
+// "--" ends the options, as is conventional (it was "unknown option \"--\""); FOSSSim takes
+// nothing but options, so a word after it is unexpected, and "-o --" names no file.
+TEST(Cli, DoubleDashEndsTheOptions) {
+  const Outcome o = runFosssim({"-s", goodScene(), "-d", "0", "-q", "--"});
+  EXPECT_TRUE(exitedWith(o, 0)) << o;
+  expectUsageError({"-d", "0", "--", "-s", goodScene()}, "unexpected argument \"-s\" after \"--\"");
+  expectUsageError({"-s", goodScene(), "-d", "0", "-o", "--"}, "option -o needs a value, and the next word \"--\"");
+  EXPECT_FALSE(std::filesystem::exists("--"));
+}
+
 // A number on the command line is the digits alone: strtol and strtod skipped leading spaces and
 // took a '+', so --threads " 2" and --threads +2 were 2.
 TEST(Cli, NumbersTakeNoSpacesOrPlusSign) {
