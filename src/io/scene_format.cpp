@@ -85,6 +85,8 @@ std::string sceneFormatMarkdown() {
         "  course's reader takes for 0). A number `> 0` is divided by, so its reciprocal must be finite\n"
         "  too: below about 5.6e-309 (`m=\"1e-320\"`) it is refused. A half-plane's normal may have any\n"
         "  finite length but 0: very long or very short normals are scaled exactly, by a power of two.\n"
+        "- **Keywords** (`type`, `failsafe`) are read as written: `type=\" explicit-euler\"` is refused, with a\n"
+        "  message that points at the space.\n"
         "- **Text** (descriptions, names) may not hold control characters other than tab and line ends,\n"
         "  written raw or as references (`&#27;`), nor references to what is no character (`&#xD800;`,\n"
         "  `&#xFFFE;`), as XML 1.0 requires; messages cut names longer than 40 characters.\n"
