@@ -90,6 +90,8 @@ std::string sceneFormatMarkdown() {
         "- **Text** (descriptions, names) may not hold control characters other than tab and line ends,\n"
         "  written raw or as references (`&#27;`), nor references to what is no character (`&#xD800;`,\n"
         "  `&#xFFFE;`), as XML 1.0 requires; messages cut names longer than 40 characters.\n"
+        "- A scene file is **UTF-8** (a byte-order mark is allowed): bytes that are not UTF-8, such as\n"
+        "  Latin-1's `0xE9` for an `é`, are refused with their line, column and value.\n"
         "- **Indices** count from 0 in file order, per kind: the first `<particle>` is particle 0, the first\n"
         "  `<edge>` edge 0. An index may name an element that comes later in the file.\n"
         "- **Errors** (a bad value, a missing required attribute or element, an index that names nothing)\n"
