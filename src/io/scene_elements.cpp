@@ -292,7 +292,8 @@ const std::vector<ElementSpec>& elementTable() {
        readHalfplane},
       // --- forces ------------------------------------------------------------------------------
       {"springforce", "Forces", false, Repeat::Adds,
-       "A spring along an edge: energy k/2 (l - l0)^2, plus damping b along the edge.",
+       "A spring along an edge: energy k/2 (l - l0)^2, plus damping b along the edge. The edge's two particles "
+       "may not start at one point (the spring would have no direction) unless both are fixed.",
        {{"edge", Kind::Index, "", nullptr, "the edge it acts along", "0"},
         {"k", Kind::NonNegative, "N/m", nullptr, "stiffness", "100"},
         {"l0", Kind::NonNegative, "m", nullptr, "rest length", "1"},
