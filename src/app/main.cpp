@@ -82,6 +82,11 @@ int run(int argc, char** argv) {
 
   // Before any output is opened: none may be an input.
   if (Status s = checkOutputsAgainstInputs(options); !s) return fail(s.message());
+  // A conflict of the command line with the scene: a usage error, as the options' own conflicts.
+  if (Status s = checkFrameEvery(options, file.scene.numSteps()); !s) {
+    std::fprintf(stderr, "FOSSSim: %s\n", s.message().c_str());
+    return kExitUsage;
+  }
   for (const std::string& w : earlierFrameWarnings(options, file.scene.numSteps() / options.frameEvery))
     std::fprintf(stderr, "FOSSSim: warning: %s\n", w.c_str());
   installStopHandlers();

@@ -59,7 +59,7 @@ class Judge {
     std::string v;
     if (!single(name, given, v)) return false;
     if (!given.empty() && !parseInt(v, 1, hi, out))
-      return fail("option " + name + " takes " + expected + ", got \"" + v + "\"");
+      return fail("option " + name + " takes " + expected + ", got \"" + v + "\"" + cli::numberHint(v));
     return true;
   }
   bool frameSize(const std::vector<std::string>& given) {
@@ -70,7 +70,7 @@ class Judge {
     if (x == std::string::npos || !parseInt(v.substr(0, x), 1, kMaxFrameSide, o_.frameWidth) ||
         !parseInt(v.substr(x + 1), 1, kMaxFrameSide, o_.frameHeight))
       return fail("option --frame-size takes WxH with sizes from 1 to " + std::to_string(kMaxFrameSide) + ", got \"" +
-                  v + "\"");
+                  v + "\"" + cli::numberHint(v));
     return true;
   }
   /// --movie: a name MovieWriter writes as a movie (render::isMovieName), checked before the run.
@@ -90,7 +90,8 @@ class Judge {
     if (!cli::parseNumber(v, kMinFps, kMaxFps, o_.fps)) {
       std::ostringstream range;
       range << kMinFps << " to " << kMaxFps;
-      return fail("option --fps takes a frame rate from " + range.str() + " (e.g. 25 or 29.97), got \"" + v + "\"");
+      return fail("option --fps takes a frame rate from " + range.str() + " (e.g. 25 or 29.97), got \"" + v + "\"" +
+                  cli::numberHint(v));
     }
     return true;
   }

@@ -279,12 +279,30 @@ std::string optionTakenAsValue(const CLI::App& app, const std::vector<std::strin
     const bool joined = equals != std::string::npos;
     if (!joined && k + 1 == words.size()) break;  // no value: CLI11's error
     const std::string name = w.substr(0, equals), value = joined ? w.substr(equals + 1) : words[++k];
-    if (!joined && isOptionWord(value, names))
-      return "option " + name + " needs a value, and the next word \"" + value +
-             "\" is an option (for a file of that name write ./" + value + ")";
+    if (!joined && (isOptionWord(value, names) || value == "--"))
+      return "option " + name + " needs a value, and the next word \"" + value + "\" is " +
+             (value == "--" ? "the end of the options" : "an option") + " (for a file of that name write ./" + value + ")";
     if (value == "-")
       return "option " + name + " takes a name, and \"-\" (standard input or output elsewhere) is none here: FOSSSim "
              "reads and writes named files only (for a file named - write ./-)";
+  }
+  return "";
+}
+
+/// "--" ends the options, as is conventional: CLI11 passed it on as a word, reported as unknown
+/// option "--". FOSSSim takes nothing but options, so "--" may only end the command line; it is
+/// removed from `words`. A "--" that is the value of the option before it is left alone. Returns
+/// an error for a word after it, "" otherwise.
+std::string endOfOptions(const CLI::App& app, std::vector<std::string>& words) {
+  for (size_t k = 1; k < words.size(); ++k) {
+    if (words[k] != "--") continue;
+    const std::string& before = words[k - 1];
+    if (k > 1 && before.find('=') == std::string::npos && valueOption(app, before)) continue;
+    if (k + 1 < words.size())
+      return "unexpected argument \"" + words[k + 1] + "\" after \"--\" (the end of the options): FOSSSim takes "
+             "options only, the scene file is given with -s (FOSSSim -h lists the options)";
+    words.erase(words.begin() + static_cast<long>(k));
+    break;
   }
   return "";
 }
@@ -349,6 +367,7 @@ bool parseOptions(int originalArgc, char** originalArgv, Options& o, std::string
   if (error = optionTakenAsValue(app, std::vector<std::string>(originalArgv, originalArgv + originalArgc)); !error.empty())
     return false;
   std::vector<std::string> words = splitShortValues(app, originalArgc, originalArgv);
+  if (error = endOfOptions(app, words); !error.empty()) return false;
   std::vector<char*> pointers;
   for (std::string& w : words) pointers.push_back(w.data());
   const int argc = static_cast<int>(pointers.size());

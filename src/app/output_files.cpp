@@ -1,5 +1,6 @@
 #include "output_files.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
@@ -234,6 +235,16 @@ std::vector<std::string> earlierFrameWarnings(const Options& options, long frame
                          (count == 1 ? "" : " to " + last) + "); they are left as they are, and the folder mixes the runs");
   }
   return warnings;
+}
+
+Status checkFrameEvery(const Options& options, long steps) {
+  const bool frames = options.pngs || !options.svgDir.empty() || !options.movie.empty();
+  if (!frames || options.frameEvery <= steps) return Status::ok();
+  const std::string k = std::to_string(options.frameEvery);
+  return Status::error("--frame-every " + k + " writes a frame after steps " + k + ", " +
+                       std::to_string(2L * options.frameEvery) + ", ..., and the scene runs " + std::to_string(steps) +
+                       " step" + (steps == 1 ? "" : "s") + ": -g 1, -m and --movie would write no frame (give at most " +
+                       "--frame-every " + std::to_string(std::max(steps, 1L)) + ")");
 }
 
 Status checkGradedFile(const Options& options) {

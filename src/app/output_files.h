@@ -34,6 +34,10 @@ Status checkOutputsAgainstInputs(const Options& options);
 /// not write over (a longer earlier run's): left as they are, they would pass for this run's.
 std::vector<std::string> earlierFrameWarnings(const Options& options, long frames);
 
+/// Fails when --frame-every K asks for frames after steps K, 2K, ... and the run of `steps` steps
+/// never reaches K: -g 1, -m and --movie would write no frame at all, without a word.
+Status checkFrameEvery(const Options& options, long steps);
+
 /// Fails when -i names the scene file itself (under any name or link): its XML was read as
 /// records and graded, a "Failed" full of numbers made of text.
 Status checkGradedFile(const Options& options);

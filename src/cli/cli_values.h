@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -18,8 +19,24 @@ namespace fosssim::cli {
 /// Exit status of a bad command line, for every program of the project.
 constexpr int kExitUsage = 2;
 
+/// `text` starts as a number written on a command line does: a digit, or '-' (or '.') and then
+/// one. strtol and strtod skip leading spaces and take a '+', so " 5" (a quoting slip) and "+5"
+/// were read as 5; a scene file allows spaces around numbers, but a word of the command line is
+/// the value itself.
+inline bool startsAsNumber(const std::string& text) {
+  const size_t k = !text.empty() && text[0] == '-' ? 1 : 0;
+  return k < text.size() && (std::isdigit(static_cast<unsigned char>(text[k])) || text[k] == '.');
+}
+
+/// " (spaces and a '+' sign are not read)" for a value that has either; "" otherwise: what a
+/// message about a refused number adds.
+inline std::string numberHint(const std::string& text) {
+  return text.find_first_of(" \t\n\r+") != std::string::npos ? " (spaces and a '+' sign are not read)" : "";
+}
+
 /// `text` as a whole decimal integer in [lo, hi].
 inline bool parseInteger(const std::string& text, long lo, long hi, long& out) {
+  if (!startsAsNumber(text)) return false;
   char* end = nullptr;
   errno = 0;
   const long v = std::strtol(text.c_str(), &end, 10);
@@ -31,6 +48,7 @@ inline bool parseInteger(const std::string& text, long lo, long hi, long& out) {
 /// `text` as a whole finite decimal number in [lo, hi] ("29.97", "1e5"). strtod also reads
 /// hexadecimal ("0x10" is 16), which the scene loader refuses too: no one means it.
 inline bool parseNumber(const std::string& text, double lo, double hi, double& out) {
+  if (!startsAsNumber(text)) return false;
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
   if (text.empty() || end == text.c_str() || *end != '\0' || !std::isfinite(v) || v < lo || v > hi) return false;
@@ -45,7 +63,8 @@ inline CLI::Validator integerIn(long lo, long hi) {
   return CLI::Validator(
       [=](std::string& text) {
         long v = 0;
-        return parseInteger(text, lo, hi, v) ? std::string() : "expected " + expected + ", got \"" + text + "\"";
+        return parseInteger(text, lo, hi, v) ? std::string()
+                                             : "expected " + expected + ", got \"" + text + "\"" + numberHint(text);
       },
       "");  // no description: -h shows each option's own (CLI11 would append this one to the type)
 }

@@ -78,7 +78,11 @@ std::string blameNonFinite(const Scene& scene, const State& start, const State& 
 /// that is non-finite on some particle at the step's start (coincident ends of a spring, a
 /// gravitational or a vortex pair), naming both. Empty when every force is finite there, or when
 /// evaluating each force separately is too costly (as blameNonFinite).
-std::string blameSolve(const Scene& scene, const State& start) {
+/// Otherwise, when one force is so stiff that its entry in the system (M - h dF/dv - h^2 dF/dx)
+/// swamps a free particle's mass (h^2 |d2E/dx2| + h |dF/dv| above 1e12 m on the diagonal; beyond
+/// about 1e16 the mass is lost in rounding and the matrix is singular, e.g. a spring of k = 1e300),
+/// that force and particle, with what to change.
+std::string blameSolve(const Scene& scene, const State& start, double dt) {
   const size_t n = scene.forces.size();
   if (n == 0 || static_cast<double>(n) * start.numParticles() > 5e7) return "";
   VecX gradient(start.x.size());
@@ -90,7 +94,32 @@ std::string blameSolve(const Scene& scene, const State& start) {
         return "; the force " + forceOrdinal(scene, static_cast<int>(f)) + " on particle " + std::to_string(i) +
                " is non-finite at the step's start";
   }
-  return "";
+  int blamed = -1, particle = -1;
+  double largest = 0;
+  Triplets jx, jv;
+  VecX diagonal(start.x.size());
+  for (size_t f = 0; f < n; ++f) {
+    if (!scene.forces[f]->hasJacobians()) continue;
+    jx.clear();
+    jv.clear();
+    scene.forces[f]->addJacobianX(scene, start.x, start.v, jx);
+    scene.forces[f]->addJacobianV(scene, start.x, start.v, jv);
+    diagonal.setZero();
+    for (const auto& t : jx)
+      if (t.row() == t.col()) diagonal[t.row()] += dt * dt * t.value();
+    for (const auto& t : jv)
+      if (t.row() == t.col()) diagonal[t.row()] += dt * t.value();
+    for (Eigen::Index r = 0; r < diagonal.size(); ++r) {
+      const int i = static_cast<int>(r / 2);
+      const double ratio = std::fabs(diagonal[r]) / scene.mass[r];
+      if (!scene.isFixed(i) && ratio > largest) largest = ratio, blamed = static_cast<int>(f), particle = i;
+    }
+  }
+  if (blamed < 0 || !(largest > 1e12)) return "";
+  return "; the stiffest force is " + forceOrdinal(scene, blamed) + " on particle " + std::to_string(particle) +
+         ": dt^2 times its stiffness is " + shortNumber(largest) +
+         " times the particle's mass (beyond about 1e16 the mass is lost in rounding); make that force softer (its k) "
+         "or dt smaller, until dt^2 k / m is far below 1e12";
 }
 
 /// to = from, the positions and velocities by ranges of particles on `threads`.
@@ -150,7 +179,7 @@ Status Simulator::step(const Scene& scene, State& state, StepObserver* observer)
     const Status s = integrator_->step(scene, state, dt, forces_);
     forces_.setResting(nullptr);
     stats_.newtonIterations = integrator_->newtonIterations();  // failed solves too: how far Newton got
-    if (!s) return failure(s.message() + blameSolve(scene, start_));
+    if (!s) return failure(s.message() + blameSolve(scene, start_, dt));
   }
   const bool predictionFinite = state.x.allFinite() && state.v.allFinite();  // to blame forces or response
   // A non-finite prediction is the forces' doing: said here, naming the particle and force,

@@ -65,6 +65,24 @@ void checkPaths(Builder& b) {
   }
 }
 
+/// A spring whose edge joins two particles that start at one point, one of them free: its
+/// direction (r / |r|, with r = 0) and so its force are undefined at the start, whatever l0 (the
+/// force divides by the length), and the run stopped at step 1 without the spring's line. Both
+/// fixed, it moves nothing and is left alone. States reached later are the run's to check.
+void checkSpringEnds(Builder& b) {
+  for (const SpringSpec& s : b.springs) {
+    const Edge& e = b.out.scene.edges[s.edge.value];
+    const Vec2 xi(b.positions[2 * e.i], b.positions[2 * e.i + 1]), xj(b.positions[2 * e.j], b.positions[2 * e.j + 1]);
+    if (xi != xj || (b.particles[e.i].fixed && b.particles[e.j].fixed)) continue;
+    b.messages.error(s.edge.line, s.edge.where + ": edge " + std::to_string(s.edge.value) + " joins particles " +
+                                      std::to_string(e.i) + " and " + std::to_string(e.j) + ", which both start at (" +
+                                      shortNumber(xi.x()) + ", " + shortNumber(xi.y()) +
+                                      "): the spring's direction, and so its force, is undefined there" +
+                                      (s.l0 == 0 ? " (even with l0 = 0: the force divides by the length)" : "") +
+                                      "; move one of them apart");
+  }
+}
+
 }  // namespace
 
 void assemble(Builder& b, const std::string& file) {
@@ -91,6 +109,8 @@ void assemble(Builder& b, const std::string& file) {
   for (const auto& c : b.halfplaneColors) checkIndex(messages, c.ref, planes, "half-plane");
   for (const auto& p : b.paths) checkIndex(messages, p.ref, n, "particle");
   if (messages.errors() > 0) return;  // nothing below may meet a placeholder
+  checkSpringEnds(b);
+  if (messages.errors() > 0) return;
 
   addParticles(scene, b.particles);
   out.initial.x = Eigen::Map<const VecX>(b.positions.data(), static_cast<Eigen::Index>(b.positions.size()));

@@ -27,10 +27,41 @@ std::string keywords(const Table& table) {
   return valid;
 }
 
+/// `text` without the XML white space (space, tab, line ends) around it.
+std::string trimmed(const std::string& text) {
+  const char* const space = " \t\n\r";
+  const size_t from = text.find_first_not_of(space);
+  return from == std::string::npos ? std::string() : text.substr(from, text.find_last_not_of(space) + 1 - from);
+}
+
+/// What is wrong with an unknown keyword `value` (a `what`: "integrator"), one of `valid`
+/// (isValid tells). Numbers may have spaces around them, keywords are compared as written (as the
+/// trajectory tools in oracle/ compare them): a keyword with spaces around it was refused as
+/// unknown, though it looked right; the message says so.
+std::string unknownKeyword(const std::string& what, const std::string& value, const std::string& valid,
+                           bool (*isValid)(const std::string&)) {
+  const std::string word = trimmed(value);
+  if (word == value) return "unknown " + what + " \"" + clip(value) + "\" (valid: " + valid + ")";
+  const char* const space = " \t\n\r";
+  const bool before = value.find_first_not_of(space) != 0, after = value.find_last_not_of(space) + 1 != value.size();
+  return what + " \"" + clip(value) + "\" has white space " + (before && after ? "around it" : before ? "before it" : "after it") +
+         ": keywords are read as written (only numbers may have spaces around them); " +
+         (isValid(word) ? "write \"" + clip(word) + "\"" : "valid: " + valid);
+}
+
+bool isSimtype(const std::string& type) { return type == "particle-system"; }
+bool isIntegrator(const std::string& type) { return findIntegrator(type) != nullptr; }
+bool isCollisionType(const std::string& type) { return findCollisionType(type) != nullptr; }
+bool isFailsafe(const std::string& type) { return type == "projection" || type == "rigid"; }
+
 void readSimtype(ElementReader& r, Builder&) {
   const std::string type = r.text("type");
-  if (type != "particle-system")
-    r.fail("type", "simulation type \"" + clip(type) + "\" is not supported (valid: particle-system)");
+  if (type != "particle-system") {
+    if (trimmed(type) == type)
+      r.fail("type", "simulation type \"" + clip(type) + "\" is not supported (valid: particle-system)");
+    else
+      r.fail("type", unknownKeyword("simulation type", type, "particle-system", isSimtype));
+  }
 }
 
 void readDescription(ElementReader& r, Builder& b) { b.out.description = r.text("text"); }
@@ -46,7 +77,7 @@ void readDuration(ElementReader& r, Builder& b) {
 void readIntegrator(ElementReader& r, Builder& b) {
   const std::string type = r.text("type");
   if (r.has("type") && !findIntegrator(type))
-    r.fail("type", "unknown integrator \"" + clip(type) + "\" (valid: " + keywords(integratorTable()) + ")");
+    r.fail("type", unknownKeyword("integrator", type, keywords(integratorTable()), isIntegrator));
   b.out.scene.integrator = findIntegrator(type) ? type : integratorTable().front().keyword;
   b.out.scene.dt = r.number("dt");
   b.integratorOk = r.ok();
@@ -147,7 +178,7 @@ void readCollision(ElementReader& r, Builder& b) {
   const CollisionEntry* entry = findCollisionType(type);
   if (!entry) {
     if (r.has("type"))
-      r.fail("type", "unknown collision type \"" + clip(type) + "\" (valid: " + keywords(collisionTable()) + ")");
+      r.fail("type", unknownKeyword("collision type", type, keywords(collisionTable()), isCollisionType));
     entry = &collisionTable().front();
   }
   c.type = entry->type;
@@ -157,7 +188,7 @@ void readCollision(ElementReader& r, Builder& b) {
   const std::string failsafe = r.text("failsafe");
   if (failsafe == "projection") c.failsafe = Failsafe::Projection;
   else if (failsafe == "rigid") c.failsafe = Failsafe::Rigid;
-  else r.fail("failsafe", "unknown failsafe \"" + clip(failsafe) + "\" (valid: projection, rigid)");
+  else r.fail("failsafe", unknownKeyword("failsafe", failsafe, "projection, rigid", isFailsafe));
   c.penaltyK = r.number("k", entry->defaultK);
   c.penaltyThickness = r.number("thickness", entry->defaultThickness);
   b.collisionOk = r.ok();
@@ -261,7 +292,8 @@ const std::vector<ElementSpec>& elementTable() {
        readHalfplane},
       // --- forces ------------------------------------------------------------------------------
       {"springforce", "Forces", false, Repeat::Adds,
-       "A spring along an edge: energy k/2 (l - l0)^2, plus damping b along the edge.",
+       "A spring along an edge: energy k/2 (l - l0)^2, plus damping b along the edge. The edge's two particles "
+       "may not start at one point (the spring would have no direction) unless both are fixed.",
        {{"edge", Kind::Index, "", nullptr, "the edge it acts along", "0"},
         {"k", Kind::NonNegative, "N/m", nullptr, "stiffness", "100"},
         {"l0", Kind::NonNegative, "m", nullptr, "rest length", "1"},

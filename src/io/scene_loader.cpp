@@ -150,6 +150,13 @@ Status parseDocument(const std::string& raw, const std::string& name, SceneFile&
                          (control.written.empty() ? "" : " (written " + io::clip(control.written) + ")") + at +
                          ": XML allows none but tab and line ends, and a scene file is text");
   }
+  // Bytes that are no UTF-8 (a file saved as Latin-1): tinyxml2 passed them through as they were.
+  if (io::InvalidUtf8 bad; io::findInvalidUtf8(raw, bad))
+    return Status::error(messages.at(io::lineOf(raw, bad.offset)) + "column " + std::to_string(io::columnOf(raw, bad.offset)) +
+                         ": " + bad.why + ", at byte " + io::withThousands(static_cast<long>(bad.offset)) +
+                         (bad.utf8 ? std::string(": a scene file is XML text")
+                                   : std::string(": a scene file is UTF-8 text (a file saved as Latin-1 or Windows-1252 "
+                                                 "has such bytes for accented letters; save it as UTF-8)")));
   const std::string text = io::normalizeLineEnds(raw);
   // Before tinyxml2, whose check for repeated attributes makes a flood of them on one element
   // take minutes (xml_syntax.h).

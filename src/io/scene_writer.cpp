@@ -65,6 +65,10 @@ class Element {
       if (const auto code = static_cast<unsigned char>(c); io::isForbiddenControl(code))
         throw WriteError{std::string("<") + name_ + "> attribute '" + attribute + "' holds the control character " +
                          io::codePointName(code) + " (a scene file is XML text, which has none but tab and line ends)"};
+    // Nor bytes that are not UTF-8 (Latin-1 text): the loader refuses those too.
+    if (io::InvalidUtf8 bad; io::findInvalidUtf8(value, bad))
+      throw WriteError{std::string("<") + name_ + "> attribute '" + attribute + "' holds " + bad.why +
+                       " (a scene file is UTF-8 text)"};
     out_ += std::string(" ") + attribute + "=\"" + escaped(value) + "\"";
     return *this;
   }

@@ -308,6 +308,66 @@ bool findControlCharacter(const std::string& text, ControlCharacter& found) {
   return false;
 }
 
+bool findInvalidUtf8(const std::string& text, InvalidUtf8& found) {
+  const size_t size = text.size();
+  auto hex = [](unsigned b) {
+    char name[8];
+    std::snprintf(name, sizeof name, "0x%02X", b);
+    return std::string(name);
+  };
+  for (size_t p = 0; p < size;) {
+    const auto lead = static_cast<unsigned char>(text[p]);
+    if (lead < 0x80) {
+      ++p;
+      continue;
+    }
+    // Unicode's table of well-formed sequences: the lead byte fixes the length and the range of
+    // the second byte (which excludes overlong forms, surrogates and code points beyond U+10FFFF).
+    size_t length = 0;
+    unsigned low = 0x80, high = 0xBF;
+    if (lead >= 0xC2 && lead <= 0xDF) length = 2;
+    else if (lead >= 0xE0 && lead <= 0xEF) length = 3, low = lead == 0xE0 ? 0xA0 : 0x80, high = lead == 0xED ? 0x9F : 0xBF;
+    else if (lead >= 0xF0 && lead <= 0xF4) length = 4, low = lead == 0xF0 ? 0x90 : 0x80, high = lead == 0xF4 ? 0x8F : 0xBF;
+    if (length == 0) {
+      found = {p, lead, "bytes that are not UTF-8, " + hex(lead) + (lead < 0xC0 ? " (a continuation byte, with no character begun before it)"
+                                                 : " (no UTF-8 character begins with it)")};
+      return true;
+    }
+    for (size_t k = 1; k < length; ++k) {
+      if (p + k >= size) {
+        found = {p, lead, "bytes that are not UTF-8, " + hex(lead) + " at the end of the file (a UTF-8 character of " + std::to_string(length) +
+                              " bytes, cut short)"};
+        return true;
+      }
+      const auto next = static_cast<unsigned char>(text[p + k]);
+      if (next < (k == 1 ? low : 0x80) || next > (k == 1 ? high : 0xBF)) {
+        found = {p, lead, "bytes that are not UTF-8, " + hex(lead) + " followed by " + hex(next) + " (not a UTF-8 character)"};
+        return true;
+      }
+    }
+    if (lead == 0xEF && static_cast<unsigned char>(text[p + 1]) == 0xBF && static_cast<unsigned char>(text[p + 2]) >= 0xBE) {
+      const unsigned code = static_cast<unsigned char>(text[p + 2]) == 0xBE ? 0xFFFE : 0xFFFF;
+      found = {p, lead,
+               "the character " + codePointName(code) + " (bytes 0xEF 0xBF " + hex(static_cast<unsigned char>(text[p + 2])) +
+                   "), which XML does not allow",
+               true};
+      return true;
+    }
+    p += length;
+  }
+  return false;
+}
+
+int columnOf(const std::string& text, size_t offset) {
+  size_t start = offset;
+  while (start > 0 && text[start - 1] != '\n' && text[start - 1] != '\r') --start;
+  if (start == 0 && text.compare(0, 3, "\xEF\xBB\xBF") == 0 && offset >= 3) start = 3;  // the byte-order mark
+  int column = 1;
+  for (size_t p = start; p < offset && p < text.size(); ++p)
+    if ((static_cast<unsigned char>(text[p]) & 0xC0) != 0x80) ++column;
+  return column;
+}
+
 XmlProblem explainXmlError(const std::string& text, int errorId, int errorLine) {
   XmlProblem problem;
   if (errorId != tinyxml2::XML_ELEMENT_DEPTH_EXCEEDED && Scanner(text).scan(problem)) return problem;

@@ -63,4 +63,22 @@ struct ControlCharacter {
 /// with an escape sequence reached the terminal as one.
 bool findControlCharacter(const std::string& text, ControlCharacter& found);
 
+struct InvalidUtf8 {
+  size_t offset = 0;     ///< the first byte of the sequence that is no UTF-8
+  unsigned byte = 0;     ///< that byte
+  std::string why;       ///< "bytes that are not UTF-8, 0xE9 followed by 0x20 (not a UTF-8 character)"
+  bool utf8 = false;     ///< UTF-8, but a character XML does not allow (U+FFFE, U+FFFF)
+};
+
+/// Finds the first bytes of `text` that are not UTF-8 (XML's encoding unless declared otherwise,
+/// and the only one the loader reads): a byte that begins no character (0x80 to 0xC1, 0xF5 to
+/// 0xFF), a character cut short or written with more bytes than it needs, a surrogate half, or
+/// U+FFFE and U+FFFF, which XML does not allow. tinyxml2 passed such bytes through: a Latin-1
+/// "é" (0xE9) reached the window and the terminal as garbage.
+bool findInvalidUtf8(const std::string& text, InvalidUtf8& found);
+
+/// The 1-based column of byte `offset` in `text`, in characters (UTF-8 continuation bytes do not
+/// count, nor a byte-order mark), from the line's start (after \n or \r).
+int columnOf(const std::string& text, size_t offset);
+
 }  // namespace fosssim::io

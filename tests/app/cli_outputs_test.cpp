@@ -169,6 +169,26 @@ TEST_F(CliOutputs, FramesOfAnEarlierRunAreWarnedAbout) {
   EXPECT_TRUE(contains(thinned.err, "holds 15 frames of an earlier run beyond this run's 5")) << thinned;
 }
 
+// --frame-every beyond the run's steps wrote no frame at all, without a word: refused as a usage
+// error (exit 2) before anything is created; up to the step count it writes its frames.
+TEST_F(CliOutputs, FrameEveryBeyondTheRunIsRefused) {
+  const std::string scene = meeting("scene.xml", "continuous-time", 0.1);  // 10 steps
+  const std::string svg = path("svg"), png = path("png");
+  for (const std::vector<std::string>& frames : {std::vector<std::string>{"-m", svg},
+                                                 std::vector<std::string>{"-g", "1", "--png-dir", png}}) {
+    const Outcome o = runFosssim(joined({"-s", scene, "-d", "0", "-q", "--frame-every", "11"}, frames));
+    EXPECT_TRUE(exitedWith(o, 2)) << o;
+    EXPECT_TRUE(contains(o.err, "FOSSSim: --frame-every 11 writes a frame after steps 11, 22, ..., and the scene runs 10 "
+                                "steps: -g 1, -m and --movie would write no frame (give at most --frame-every 10)"))
+        << o;
+    EXPECT_FALSE(fs::exists(frames[0] == "-m" ? svg : png));
+  }
+  const Outcome o = runFosssim({"-s", scene, "-d", "0", "-q", "-m", svg, "--frame-every", "10"});
+  EXPECT_TRUE(exitedWith(o, 0)) << o;
+  EXPECT_TRUE(fs::exists(path("svg/frame00000000000000000001.svg")));
+  EXPECT_FALSE(fs::exists(path("svg/frame00000000000000000002.svg")));
+}
+
 // A run whose pictures fail says only what was written: frames up to the last one written, and
 // no movie when ffmpeg could not create its file.
 TEST_F(CliOutputs, TheSummaryCountsOnlyWhatWasWritten) {

@@ -66,6 +66,30 @@ TEST(Cli, UnknownOptionsAreNamed) {
   expectUsageError({"-s", goodScene(), "-D", "0"}, "\"-D\"");
 }
 
+// "--" ends the options, as is conventional (it was "unknown option \"--\""); FOSSSim takes
+// nothing but options, so a word after it is unexpected, and "-o --" names no file.
+TEST(Cli, DoubleDashEndsTheOptions) {
+  const Outcome o = runFosssim({"-s", goodScene(), "-d", "0", "-q", "--"});
+  EXPECT_TRUE(exitedWith(o, 0)) << o;
+  expectUsageError({"-d", "0", "--", "-s", goodScene()}, "unexpected argument \"-s\" after \"--\"");
+  expectUsageError({"-s", goodScene(), "-d", "0", "-o", "--"}, "option -o needs a value, and the next word \"--\"");
+  EXPECT_FALSE(std::filesystem::exists("--"));
+}
+
+// A number on the command line is the digits alone: strtol and strtod skipped leading spaces and
+// took a '+', so --threads " 2" and --threads +2 were 2.
+TEST(Cli, NumbersTakeNoSpacesOrPlusSign) {
+  const std::vector<std::vector<std::string>> cases = {
+      {"--threads", " 2"}, {"--threads", "+2"}, {"--threads", "2 "}, {"--frame-every", "+2", "-g", "1"},
+      {"--frame-size", " 64x48"}, {"--frame-size", "64x+48"}, {"--fps", "+25", "--movie", "m.mp4"}};
+  for (const auto& extra : cases) {
+    std::vector<std::string> args = {"-s", goodScene(), "-d", "0"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    expectUsageError(args, "option " + extra[0] + " takes");
+    expectUsageError(args, "got \"" + extra[1] + "\" (spaces and a '+' sign are not read)");
+  }
+}
+
 TEST(Cli, OutputAndInputTogetherIsAUsageError) {
   expectUsageError({"-s", goodScene(), "-d", "0", "-o", "a.bin", "-i", "b.bin"}, "-o");
   expectUsageError({"-s", goodScene(), "-i", "b.bin", "-o", "a.bin"}, "cannot be used together");

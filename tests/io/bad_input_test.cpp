@@ -241,5 +241,24 @@ TEST(BadInput, AValueThatIsNoNumberIsOneMessage) {
   }
 }
 
+// A spring between two particles that start at one point has no direction there: its force was
+// NaN and the run stopped at step 1, without the spring's line. Refused at load, naming it; both
+// ends fixed, it moves nothing and loads.
+TEST(BadInput, ASpringWhoseEndsStartAtOnePointIsLocated) {
+  std::vector<std::string> lines = baseLines();
+  lines[4] = "  <particle m=\"2\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>";  // particle 1 onto particle 0
+  lines.insert(lines.begin() + (kExtraLine - 1), "  <springforce edge=\"0\" k=\"1\" l0=\"1\"/>");
+  expectError(join(lines), {located(kExtraLine, "springforce", "edge") +
+                                ": edge 0 joins particles 0 and 1, which both start at (0, 0): the spring's direction, "
+                                "and so its force, is undefined there; move one of them apart"});
+  lines[kExtraLine - 1] = "  <springforce edge=\"0\" k=\"1\" l0=\"0\"/>";
+  expectError(join(lines), {located(kExtraLine, "springforce", "edge"), "(even with l0 = 0"});
+  lines[3] = "  <particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"1\"/>";  // one end fixed: still
+  expectError(join(lines), {located(kExtraLine, "springforce", "edge")});
+  lines[4] = "  <particle m=\"2\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"1\"/>";  // both fixed: loads
+  EXPECT_EQ(loadError(join(lines)), "");
+  EXPECT_EQ(loadError(extra("  <springforce edge=\"0\" k=\"1\" l0=\"0\"/>")), "");  // apart: loads
+}
+
 }  // namespace
 }  // namespace fosssim::testing

@@ -118,6 +118,29 @@ TEST(BadXml, ControlCharactersAreRefusedWhereverTheyAre) {
   EXPECT_EQ(loadError(extra("  <!-- &#27; --><![CDATA[ &#x1b; ]]>")), "");
 }
 
+// Bytes that are not UTF-8 (a file saved as Latin-1) went through tinyxml2 as they were and
+// reached the window and the terminal as garbage: refused with line, column and the byte.
+TEST(BadXml, BytesThatAreNotUtf8AreRefusedWithLineAndColumn) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"  <description text=\"caf\xE9 au lait\"/>", ":" + std::to_string(kExtraLine) + ": column 25: bytes that are not UTF-8, 0xE9 followed by 0x20"},
+      {"  <description text=\"\xC3\xA9 \x80\"/>", "column 24: bytes that are not UTF-8, 0x80 (a continuation byte"},
+      {"  <description text=\"\xC0\xAF\"/>", "0xC0 (no UTF-8 character begins with it)"},         // overlong '/'
+      {"  <description text=\"\xED\xA0\x80\"/>", "0xED followed by 0xA0"},                         // a surrogate half
+      {"  <description text=\"\xF4\x90\x80\x80\"/>", "0xF4 followed by 0x90"},                   // beyond U+10FFFF
+      {"  <description text=\"\xEF\xBF\xBF\"/>", "the character U+FFFF (bytes 0xEF 0xBF 0xBF), which XML does not allow"},
+      {"  <!-- \xFF in a comment -->", "0xFF (no UTF-8 character begins with it)"},
+  };
+  for (const auto& [element, fragment] : cases) {
+    SCOPED_TRACE(element);
+    expectError(extra(element), {kFile + ":" + std::to_string(kExtraLine) + ": column ", fragment});
+  }
+  const std::string cut = join(baseLines()) + "\xE2\x82";
+  EXPECT_NE(loadError(cut).find("0xE2 at the end of the file (a UTF-8 character of 3 bytes, cut short)"), std::string::npos)
+      << loadError(cut);
+  // Every well-formed character is fine: 2, 3 and 4 bytes, the last below the surrogates and U+10FFFF.
+  EXPECT_EQ(loadError(extra("  <description text=\"\xC3\xA9 \xE2\x82\xAC \xED\x9F\xBF \xF0\x9F\x98\x80 \xF4\x8F\xBF\xBF\"/>")), "");
+}
+
 TEST(BadXml, MessagesNameTheFileGiven) {
   SceneFile file;
   const Status s = parseScene("<scene>", "some/dir/my scene.xml", file);

@@ -306,6 +306,16 @@ TEST(SceneWriter, RefusesWhatTheFormatCannotSay) {
     f.tag = std::string("nul\0", 4);
     EXPECT_NE(message(f).find("<scenetag> attribute 'tag' holds the control character U+0000"), std::string::npos);
   }
+  {
+    SceneFile f = twoParticles();  // nor bytes that are not UTF-8 (a Latin-1 "é")
+    f.description = "caf\xE9";
+    EXPECT_NE(message(f).find("<description> attribute 'text' holds bytes that are not UTF-8, 0xE9 at the end"),
+              std::string::npos)
+        << message(f);
+    f.description = "caf\xC3\xA9";  // the same "é" in UTF-8
+    std::string text;
+    EXPECT_TRUE(sceneToXml(f, text).isOk());
+  }
 }
 
 TEST(SceneWriter, WritesFilesAndNamesThePathOnFailure) {
