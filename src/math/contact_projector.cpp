@@ -298,7 +298,7 @@ bool ContactProjector::solve(const double* groupScale, double factor, double tol
       return false;
     }
     // A row Gauss-Seidel keeps coming back to, of a body alone against obstacles, is solved
-    // exactly with the body's other rows (tried at its 4th, 8th, 16th... update: a row that is
+    // exactly with the body's other rows (tried at its 32nd, 64th, 128th... update: a row that is
     // not alone costs a look at its body's rows now and then, not at every update).
     if (const int seen = ++revisits_[k]; seen >= kAloneAfterUpdates && (seen & (seen - 1)) == 0 &&
                                          solveAlone(k, source != nullptr))
