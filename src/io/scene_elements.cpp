@@ -7,6 +7,7 @@
 #include "fosssim/core/forces.h"
 #include "fosssim/core/integrator.h"
 #include "xml_reader.h"
+#include "xml_syntax.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,23 +28,15 @@ std::string keywords(const Table& table) {
   return valid;
 }
 
-/// `text` without the XML white space (space, tab, line ends) around it.
-std::string trimmed(const std::string& text) {
-  const char* const space = " \t\n\r";
-  const size_t from = text.find_first_not_of(space);
-  return from == std::string::npos ? std::string() : text.substr(from, text.find_last_not_of(space) + 1 - from);
-}
-
 /// What is wrong with an unknown keyword `value` (a `what`: "integrator"), one of `valid`
 /// (isValid tells). Numbers may have spaces around them, keywords are compared as written (as the
 /// trajectory tools in oracle/ compare them): a keyword with spaces around it was refused as
 /// unknown, though it looked right; the message says so.
 std::string unknownKeyword(const std::string& what, const std::string& value, const std::string& valid,
                            bool (*isValid)(const std::string&)) {
-  const std::string word = trimmed(value);
+  const std::string word = trimXmlSpace(value);
   if (word == value) return "unknown " + what + " \"" + clip(value) + "\" (valid: " + valid + ")";
-  const char* const space = " \t\n\r";
-  const bool before = value.find_first_not_of(space) != 0, after = value.find_last_not_of(space) + 1 != value.size();
+  const bool before = value.find_first_not_of(kXmlSpace) != 0, after = value.find_last_not_of(kXmlSpace) + 1 != value.size();
   return what + " \"" + clip(value) + "\" has white space " + (before && after ? "around it" : before ? "before it" : "after it") +
          ": keywords are read as written (only numbers may have spaces around them); " +
          (isValid(word) ? "write \"" + clip(word) + "\"" : "valid: " + valid);
@@ -57,7 +50,7 @@ bool isFailsafe(const std::string& type) { return type == "projection" || type =
 void readSimtype(ElementReader& r, Builder&) {
   const std::string type = r.text("type");
   if (type != "particle-system") {
-    if (trimmed(type) == type)
+    if (trimXmlSpace(type) == type)
       r.fail("type", "simulation type \"" + clip(type) + "\" is not supported (valid: particle-system)");
     else
       r.fail("type", unknownKeyword("simulation type", type, "particle-system", isSimtype));

@@ -26,9 +26,7 @@ using io::SceneMessages;
 
 /// The text trimmed and cut to 30 characters, on one line.
 std::string clipped(const char* value) {
-  std::string all(value);
-  const size_t from = all.find_first_not_of(" \t\n\r"), to = all.find_last_not_of(" \t\n\r");
-  all = from == std::string::npos ? "" : all.substr(from, to - from + 1);
+  const std::string all = io::trimXmlSpace(value);
   std::string s;
   for (size_t k = 0; k < all.size() && s.size() < 30; ++k) s += (all[k] == '\n' || all[k] == '\t') ? ' ' : all[k];
   if (all.size() > 30) s += "...";

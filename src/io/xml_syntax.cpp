@@ -75,7 +75,7 @@ class Scanner {
     size_t q = t_.find('<', p_);
     if (q == std::string::npos) q = t_.size();
     if (stack_.empty()) {
-      const size_t k = t_.find_first_not_of(" \t\n\r", p_);
+      const size_t k = t_.find_first_not_of(kXmlSpace, p_);
       if (k < q) {
         advanceTo(k);
         return fail("text " + excerpt(t_, k) + (rootClosed_ ? " after the root element's end" : " outside any element"));
@@ -315,6 +315,10 @@ bool findInvalidUtf8(const std::string& text, InvalidUtf8& found) {
     std::snprintf(name, sizeof name, "0x%02X", b);
     return std::string(name);
   };
+  auto notUtf8 = [&](size_t p, unsigned lead, const std::string& detail) {
+    found = {p, "bytes that are not UTF-8, " + hex(lead) + detail};
+    return true;
+  };
   for (size_t p = 0; p < size;) {
     const auto lead = static_cast<unsigned char>(text[p]);
     if (lead < 0x80) {
@@ -328,26 +332,20 @@ bool findInvalidUtf8(const std::string& text, InvalidUtf8& found) {
     if (lead >= 0xC2 && lead <= 0xDF) length = 2;
     else if (lead >= 0xE0 && lead <= 0xEF) length = 3, low = lead == 0xE0 ? 0xA0 : 0x80, high = lead == 0xED ? 0x9F : 0xBF;
     else if (lead >= 0xF0 && lead <= 0xF4) length = 4, low = lead == 0xF0 ? 0x90 : 0x80, high = lead == 0xF4 ? 0x8F : 0xBF;
-    if (length == 0) {
-      found = {p, lead, "bytes that are not UTF-8, " + hex(lead) + (lead < 0xC0 ? " (a continuation byte, with no character begun before it)"
-                                                 : " (no UTF-8 character begins with it)")};
-      return true;
-    }
+    if (length == 0)
+      return notUtf8(p, lead, lead < 0xC0 ? " (a continuation byte, with no character begun before it)"
+                                          : " (no UTF-8 character begins with it)");
     for (size_t k = 1; k < length; ++k) {
-      if (p + k >= size) {
-        found = {p, lead, "bytes that are not UTF-8, " + hex(lead) + " at the end of the file (a UTF-8 character of " + std::to_string(length) +
-                              " bytes, cut short)"};
-        return true;
-      }
+      if (p + k >= size)
+        return notUtf8(p, lead, " at the end of the file (a UTF-8 character of " + std::to_string(length) +
+                                    " bytes, cut short)");
       const auto next = static_cast<unsigned char>(text[p + k]);
-      if (next < (k == 1 ? low : 0x80) || next > (k == 1 ? high : 0xBF)) {
-        found = {p, lead, "bytes that are not UTF-8, " + hex(lead) + " followed by " + hex(next) + " (not a UTF-8 character)"};
-        return true;
-      }
+      if (next < (k == 1 ? low : 0x80) || next > (k == 1 ? high : 0xBF))
+        return notUtf8(p, lead, " followed by " + hex(next) + " (not a UTF-8 character)");
     }
     if (lead == 0xEF && static_cast<unsigned char>(text[p + 1]) == 0xBF && static_cast<unsigned char>(text[p + 2]) >= 0xBE) {
       const unsigned code = static_cast<unsigned char>(text[p + 2]) == 0xBE ? 0xFFFE : 0xFFFF;
-      found = {p, lead,
+      found = {p,
                "the character " + codePointName(code) + " (bytes 0xEF 0xBF " + hex(static_cast<unsigned char>(text[p + 2])) +
                    "), which XML does not allow",
                true};

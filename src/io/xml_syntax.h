@@ -18,6 +18,15 @@ std::string normalizeLineEnds(const std::string& text);
 /// The 1-based line of byte `offset` in `text`, counting \r\n, \r and \n as line ends.
 int lineOf(const std::string& text, size_t offset);
 
+/// XML's white space: space, tab and the line ends.
+inline constexpr const char* kXmlSpace = " \t\n\r";
+
+/// `text` without the XML white space around it.
+inline std::string trimXmlSpace(const std::string& text) {
+  const size_t from = text.find_first_not_of(kXmlSpace);
+  return from == std::string::npos ? std::string() : text.substr(from, text.find_last_not_of(kXmlSpace) + 1 - from);
+}
+
 struct XmlProblem {
   int line = 0;
   std::string what;  ///< "not well-formed XML: ..."
@@ -65,7 +74,6 @@ bool findControlCharacter(const std::string& text, ControlCharacter& found);
 
 struct InvalidUtf8 {
   size_t offset = 0;     ///< the first byte of the sequence that is no UTF-8
-  unsigned byte = 0;     ///< that byte
   std::string why;       ///< "bytes that are not UTF-8, 0xE9 followed by 0x20 (not a UTF-8 character)"
   bool utf8 = false;     ///< UTF-8, but a character XML does not allow (U+FFFE, U+FFFF)
 };

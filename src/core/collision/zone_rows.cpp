@@ -98,10 +98,10 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
   // COR only if a hit loads it and the hit's restitution alone would add energy
   // (ContactProjector::restitute).
   double restitution = 0.0, loaded = 0.0;
-  if (cor_ > 0.0 && !curving && closing > 0.0 &&
-      (cor_ >= 1.0 || closing > kRestingBounceKicks * h_ * kicksAlong(scene, key, n, alpha)))
-    restitution = cor_;
-  if (cor_ > 0.0 && !curving && closing <= 0.0) loaded = cor_;
+  if (cor_ > 0.0 && !curving) {
+    if (closing <= 0.0) loaded = cor_;
+    else if (cor_ >= 1.0 || closing > kRestingBounceKicks * h_ * kicksAlong(scene, key, n, alpha)) restitution = cor_;
+  }
   if (const int* known = rowOf_.find(key)) {
     // A row no solve has seen yet was set at this instant (contacts of one instant wait for one
     // solve together): it stands. Replacing it would make its warm start, already applied, a
