@@ -2,20 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
-// Forces inlining where the compiler's own choice was measured to cost (GCC and Clang).
-#if defined(__GNUC__)
-#define FOSSSIM_ALWAYS_INLINE __attribute__((always_inline))
-#else
-#define FOSSSIM_ALWAYS_INLINE
-#endif
+#include "contact_projector_update.h"
 
+// The projector's rows, bodies, queue and Gauss-Seidel solve; its welds and locks. A body alone
+// against obstacles is solved in contact_projector_alone.cpp, the energy guard and restitution
+// are in contact_projector_energy.cpp.
 namespace fosssim::math {
 namespace {
 
 Vec2 perp(const Vec2& a) { return Vec2(-a.y(), a.x()); }
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 }  // namespace
 
@@ -107,126 +103,6 @@ void ContactProjector::setRow(int index, const ConstraintRow& row, int group) {
   queue(index);
 }
 
-// Sets row k's multiplier to `lambda`: its movable bodies' velocities change by
-// w_b coef_b (lambda - old), and their other rows are queued (row k itself is satisfied by a
-// Gauss-Seidel update; a warm start has it queued by addRow). Inlined into solve's loop, which
-// calls it for every update (GCC otherwise kept the call: rain and chains at N = 1,000-2,500
-// took 3-5% longer per step, fastest of 18 runs each).
-FOSSSIM_ALWAYS_INLINE inline void ContactProjector::apply(int k, double lambda) {
-  touch(k);
-  Row& row = row_[k];
-  const double delta = lambda - row.lambda;
-  row.lambda = lambda;
-  for (int m = 0; m < row.r.count; ++m) {
-    const int s = row.r.body[m];
-    if (inverseMass_[s] == 0.0) continue;
-    markChanged(s);
-    velocity_[s] += inverseMass_[s] * delta * row.r.coef[m];
-  }
-  for (int m = 0; m < row.r.count; ++m)
-    if (inverseMass_[row.r.body[m]] != 0.0) queueRowsOf(row.r.body[m], k);
-}
-
-// One body b alone against obstacles (every other body in its rows immovable, though a frozen
-// one may move): its rows are G_k v = g_k . u + c_k >= 0, with g_k its coefficient and c_k the
-// obstacles' part (0 unless one moves), and the projection is
-//     u = argmin |u - v0|^2 (mass norm: one mass, so the plain norm) subject to g_k . u + c_k >= 0,
-// v0 = v - w sum_k lambda_k g_k being b's velocity without its rows' impulses (w = 1/m). The
-// feasible set is a convex polygon of the plane (maybe unbounded), so u is v0 itself, or v0
-// projected onto one row's line, u = v0 - ((g_k . v0 + c_k) / |g_k|^2) g_k, or a corner where two
-// rows' lines meet: of those that are feasible, the nearest to v0 (the projection onto a convex
-// set is the feasible point nearest to v0, and it is one of them). Its multipliers follow from
-// u - v0 = w sum_k mu_k g_k, on the one or two rows it lies on (a corner's by Cramer's rule, kept
-// only with both mu >= 0, the projection's optimality condition). Gauss-Seidel converges on such
-// rows at the rate of the cosine between their normals, squared, per sweep: in a wedge of
-// 2 degrees, 0.9988, and a solve's budget ended long before it stopped the disk.
-bool ContactProjector::solveAlone(int k, bool refreshing) {
-  int b = -1;
-  {
-    const Row& row = row_[k];
-    for (int m = 0; m < row.r.count; ++m) {
-      const int s = row.r.body[m];
-      if (inverseMass_[s] == 0.0 || s == b) continue;
-      if (b >= 0) return false;  // two bodies move
-      b = s;
-    }
-  }
-  if (b < 0 || axis_[b] != Vec2::Zero() || body_[b].rowCount > kAloneRows) return false;
-  int rows[kAloneRows];
-  Vec2 g[kAloneRows];
-  double c[kAloneRows];
-  int count = 0;
-  bool alone = true;
-  const double w = inverseMass_[b];
-  Vec2 v0 = velocity_[b];
-  double scale = 0;  // of the rows' terms, for the slack
-  body_[b].forEachRow([&](int q) {
-    const Row& rq = row_[q];
-    Vec2 gq = Vec2::Zero();
-    double cq = 0;
-    bool mine = false;
-    for (int m = 0; m < rq.r.count; ++m) {
-      const int s = rq.r.body[m];
-      if (s == b) gq += rq.r.coef[m], mine = true;
-      else if (inverseMass_[s] != 0.0) alone = false;
-      else cq += rq.r.coef[m].dot(velocity_[s]), scale = std::max(scale, velocity_[s].norm());
-    }
-    if (!mine || rq.diag <= 0.0) return;   // a list's stale entry, or a row that cannot act
-    if (refreshing && rq.epoch != epoch_) alone = false;  // to be made again first (RowSource)
-    v0 -= (w * rq.lambda) * gq;
-    rows[count] = q, g[count] = gq, c[count] = cq, ++count;
-  });
-  if (!alone || count == 0) return false;
-  scale = std::max(scale, v0.norm());
-  const auto feasible = [&](const Vec2& u) {
-    for (int j = 0; j < count; ++j)
-      if (g[j].dot(u) + c[j] < -kAloneSlack * scale * g[j].norm()) return false;
-    return true;
-  };
-  double mu[kAloneRows] = {};
-  if (!feasible(v0)) {
-    double nearest = std::numeric_limits<double>::infinity();
-    int first = -1, second = -1;
-    double muFirst = 0, muSecond = 0;
-    for (int i = 0; i < count; ++i) {
-      const double violation = g[i].dot(v0) + c[i];
-      if (violation >= 0.0) continue;  // a line the projection can lie on is one v0 violates
-      const double m = -violation / (w * g[i].squaredNorm());
-      const Vec2 u = v0 + (w * m) * g[i];
-      const double distance = (u - v0).squaredNorm();
-      if (distance < nearest && feasible(u)) nearest = distance, first = i, second = -1, muFirst = m;
-    }
-    for (int i = 0; i < count; ++i)
-      for (int j = i + 1; j < count; ++j) {
-        const double det = cross(g[i], g[j]);
-        if (!(std::abs(det) > kAloneParallel * g[i].norm() * g[j].norm())) continue;  // no corner to trust
-        // The corner: g_i . u = -c_i and g_j . u = -c_j; then u - v0 = w (mu_i g_i + mu_j g_j).
-        const Vec2 u = (-c[i] * perp(g[j]) + c[j] * perp(g[i])) / -det;
-        const Vec2 d = (u - v0) / w;
-        const double mi = cross(d, g[j]) / det, mj = cross(g[i], d) / det;
-        const double distance = (u - v0).squaredNorm();
-        if (mi < 0.0 || mj < 0.0 || !(distance < nearest) || !feasible(u)) continue;
-        nearest = distance, first = i, second = j, muFirst = mi, muSecond = mj;
-      }
-    if (first < 0) return false;  // infeasible (a frozen obstacle moving in): Gauss-Seidel's budget
-    mu[first] = muFirst;
-    if (second >= 0) mu[second] = muSecond;
-  }
-  // Exact arithmetic would never end above where the energy guard started the body (the
-  // projection of v0 is no faster than any feasible velocity, the guard's start included when it
-  // was feasible); rounding can, where two rows' lines are nearly parallel (a corner with huge
-  // multipliers that nearly cancel) or the speeds are tiny against the multipliers' history.
-  // The guard would then scale the solve back (capEnergy) and its contacts come back, to be
-  // solved the same way again: Gauss-Seidel's update goes on instead.
-  Vec2 u = v0;
-  for (int j = 0; j < count; ++j) u += (w * mu[j]) * g[j];
-  const Vec2& start = changedFlag_[b] ? startVelocity_[b] : velocity_[b];
-  if (u.squaredNorm() > start.squaredNorm()) return false;
-  for (int j = 0; j < count; ++j)
-    if (mu[j] != row_[rows[j]].lambda) apply(rows[j], mu[j]);
-  return true;
-}
-
 void ContactProjector::queue(int k) {
   if (queued_[k]) return;
   queued_[k] = 1;
@@ -246,24 +122,6 @@ void ContactProjector::growRoom(size_t n) {
     if (tail_ + n <= work_.size()) return;
   }
   work_.resize(2 * (tail_ + n));
-}
-
-// Without a branch per row: whether a row is queued already is a coin toss in a pile. The slot
-// past the queue's end is written either way and kept only when the row is new to the queue
-// (the order is queue()'s).
-FOSSSIM_ALWAYS_INLINE inline void ContactProjector::queueRowsOf(int slot, int except) {
-  const Body& body = body_[slot];
-  makeRoom(static_cast<size_t>(body.rowCount));
-  int* work = work_.data();
-  char* queued = queued_.data();
-  size_t tail = tail_;
-  body.forEachRow([&](int k) {
-    const bool add = (k != except) & (queued[k] == 0);
-    work[tail] = k;
-    queued[k] = static_cast<char>(queued[k] | add);
-    tail += add;
-  });
-  tail_ = tail;
 }
 
 // One Gauss-Seidel step on row k (ZoneProjector's, in velocity form): w = G_k v, then
@@ -486,87 +344,6 @@ void ContactProjector::takeChanged(std::vector<int>& out) {
   changed_.clear();
   for (int k : touched_) touchedFlag_[k] = 0, revisits_[k] = 0;
   touched_.clear();
-}
-
-// The changed bodies' kinetic energy along the line from the guard's start (f = 0) to now
-// (f = 1) is KE(0) + f B + f^2 C (see the header); C > 0 whenever anything moved. A gain
-// B + C > 0 is taken back to f = -B / C, where the energy is KE(0) again, or to f = 0 when the
-// changes only add (B >= 0). Multipliers on the same line stay non-negative (both ends are).
-double ContactProjector::energyFraction() const {
-  double b = 0, c = 0, start = 0;
-  for (int s : changed_) {
-    if (inverseMass_[s] == 0.0) continue;
-    const double m = 1.0 / inverseMass_[s];
-    const Vec2 d = velocity_[s] - startVelocity_[s];
-    b += m * startVelocity_[s].dot(d);
-    c += 0.5 * m * d.squaredNorm();
-    start += 0.5 * m * startVelocity_[s].squaredNorm();
-  }
-  if (!(b + c > kEnergyRoundingFraction * (start + c))) return 1.0;
-  return b < 0.0 ? -b / c : 0.0;
-}
-
-double ContactProjector::capEnergy() {
-  const double f = energyFraction();
-  if (f < 1.0) moveBack(f);
-  return f;
-}
-
-bool ContactProjector::restitute() {
-  // The hits alone first; then, if they would add energy, with the rows they loaded too.
-  const Push first = pushAgain([&](int k) { return restitution_[k]; });
-  if (first != Push::TakenBack) return first == Push::Kept;
-  return pushAgain([&](int k) { return std::max(restitution_[k], loadedRestitution_[k]); }) == Push::Kept;
-}
-
-// One try of restitute's, with the coefficients e(k).
-template <class Coefficient>
-ContactProjector::Push ContactProjector::pushAgain(const Coefficient& e) {
-  // The row's impulse since the guard's start: its multiplier's change, plus what setRow moved
-  // from its multiplier into replaced_ meanwhile.
-  const auto impulse = [&](int k) { return startReplaced_[k] + row_[k].lambda - startLambda_[k]; };
-  restituted_.clear();
-  for (int k : touched_) {
-    const double ek = e(k), pushed = impulse(k);
-    if (!(ek > 0.0) || !(pushed > 0.0)) continue;
-    const ConstraintRow& r = row_[k].r;
-    for (int m = 0; m < r.count; ++m) {
-      const int s = r.body[m];
-      if (inverseMass_[s] == 0.0) continue;
-      markChanged(s);
-      restituted_.emplace_back(s, velocity_[s]);
-      velocity_[s] += (inverseMass_[s] * ek * pushed) * r.coef[m];
-    }
-  }
-  if (restituted_.empty()) return Push::Nothing;
-  if (energyFraction() < 1.0) {  // taken back exactly: each slot's first saved velocity wins
-    for (auto it = restituted_.rbegin(); it != restituted_.rend(); ++it) velocity_[it->first] = it->second;
-    return Push::TakenBack;
-  }
-  // A restituted row's multiplier is set aside as setRow sets a replaced one's (still applied,
-  // counted in totalImpulse): a later solve that found the row opening would otherwise take the
-  // multiplier back, and with it the bounce. Rows the pushes close (a disk pushed back into its
-  // neighbours) are not queued here: their contacts come back as events, at their own times.
-  for (int k : touched_) {
-    if (!(e(k) > 0.0) || !(impulse(k) > 0.0)) continue;
-    startReplaced_[k] += row_[k].lambda - startLambda_[k];
-    startLambda_[k] = 0.0;
-    replaced_[k] += row_[k].lambda;
-    row_[k].lambda = 0.0;
-  }
-  return Push::Kept;
-}
-
-void ContactProjector::rollBack() { moveBack(0.0); }
-
-void ContactProjector::moveBack(double f) {
-  for (int s : changed_)
-    if (inverseMass_[s] != 0.0) velocity_[s] = startVelocity_[s] + f * (velocity_[s] - startVelocity_[s]);
-  for (int k : touched_) {
-    row_[k].lambda = startLambda_[k] + f * (row_[k].lambda - startLambda_[k]);
-    replaced_[k] -= (1.0 - f) * startReplaced_[k];
-    queue(k);  // settled or not, it may close again
-  }
 }
 
 }  // namespace fosssim::math
