@@ -1,6 +1,7 @@
 // Helpers for the property tests of the default mode's contact physics (contact_physics_test.cpp,
 // contact_physics_random_test.cpp, contact_physics_pile_test.cpp; the promises: spec "Contact
-// physics in the default mode"). Every scene is built inline with the symplectic Euler integrator (x += h v_new: free flight is exact).
+// physics in the default mode"). Every scene is built inline with the symplectic Euler
+// integrator (x += h v_new: free flight is exact).
 #pragma once
 
 #include "support/collision_type.h"
