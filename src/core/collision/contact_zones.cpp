@@ -32,6 +32,7 @@ void ContactZones::reset(int n) {
     for (int r : roots_) forEachMember(r, [&](int p) { parent_[p] = -1, stopped_[p] = 0, jammed_[p] = 0; });
   }
   roots_.clear();
+  rattles_.clear();
   for (int p : zoneWokenList_) zoneWoken_[p] = 0;
   zoneWokenList_.clear();
   // The impulses of this step's contacts start the next step's (warm start; addRow): each one's
@@ -87,6 +88,7 @@ int ContactZones::unite(int a, int b) {
   zb.first = zb.last = zb.firstHoldable = zb.lastHoldable = -1;  // b is no root: its lists are a's
   za.metAgain = std::max(za.metAgain, zb.metAgain);
   za.bounces = std::max(za.bounces, zb.bounces);
+  if (zb.firstBounce >= 0.0 && !(za.firstBounce >= 0.0 && za.firstBounce <= zb.firstBounce)) za.firstBounce = zb.firstBounce;
   za.bounced = za.bounced && zb.bounced;
   za.solves = std::max(za.solves, zb.solves);
   za.rigid = za.rigid || zb.rigid;
@@ -138,18 +140,25 @@ int ContactZones::absorb(const Scene& scene, const StepMotion& motion, const Pai
   bool welded = false;   // whether that jam welded bodies that were apart
   if (solved && !requeried_[*known]) {
     ZoneRecord& z = record_[root(zone)];
-    if (z.bounced && z.bounces < kMaxZoneBounces) ++z.bounces;
+    if (z.bounced && z.bounces < kMaxZoneBounces) {
+      if (z.bounces++ == 0) z.firstBounce = T;
+    }
     else ++z.metAgain;
   }
+  int rattler = -1;      // a rattle's particle (rattlerOf), whose velocity the jam takes
+  Vec2 beforeJam = Vec2::Zero();
   if (solved && record_[root(zone)].metAgain > kMaxZoneProjections && record_[root(zone)].immovable && !rigidOnly_) {
     // A jam against an obstacle: the contact keeps closing although it was solved for again and
     // again. Its particles move as one for the rest of the step, and lose the freedom to close
     // on the obstacles it has (weldJammed, lockJammed); the rest of the zone goes on.
+    rattler = rattlerOf(scene, zone, pair);
+    if (rattler >= 0) beforeJam = projector_.velocity(rattler);
     jammed = weldJammed(scene, pair, welded);
   }
   setRow(scene, motion, zone, key, T, deepest);
   if (const int* row = rowOf_.find(key); jammed >= 0 && row != nullptr)
     lockJammed(jammed, *row, welded, rateScale_[root(zone)] / h);
+  if (rattler >= 0) keepRattle(rattler, beforeJam, zone, T);
   int added = 0;
   return grow(scene, motion, candidates, zone, T, h, added);
 }

@@ -66,7 +66,9 @@ constexpr int kMaxZoneProjections = 8;
 /// Times a zone's contacts may come back in one step after a solve that bounced them (its
 /// restitution kept, so no energy gained) without counting toward kMaxZoneProjections: a ball
 /// bouncing between two walls at the apex of a narrow wedge is not a jam, and comes back once
-/// for each bounce.
+/// for each bounce. A particle alone against obstacles that bounces more often than that in a
+/// step (a ball rattling between two walls a hair wider than it, faster than the step can follow)
+/// jams, and keeps its bounce's speed for the next step (ContactZones::giveBackRattles).
 constexpr int kMaxZoneBounces = 64;
 
 /// A jammed contact's particles stop at rest, as obstacles, instead of being welded, when their
@@ -218,6 +220,11 @@ class ContactZones {
   /// stopped the lower.
   double kicksAlong(const Scene& scene, uint64_t key, const Vec2& n, double alpha) const;
 
+  /// Gives back to each rattle's particle (see rattlerOf) what its jams took from its velocity,
+  /// reversed and times the COR, in v (2N) at the end of the step: the speed of its bounces,
+  /// kept as a ball rattling between walls keeps it, never above its speed before its first jam.
+  void giveBackRattles(VecX& v) const;
+
   /// Whether the contact of pair `key`, found closing at a later time of the step, is to be
   /// solved at the current instant too (its event also stays at its own time, for a contact that
   /// is not closing yet at this instant); true at most once per contact and step. So it is
@@ -303,6 +310,12 @@ class ContactZones {
   /// the contact's obstacles (its row `row`), or stops it if the jam took nothing else.
   int weldJammed(const Scene& scene, const PairParticles& pair, bool& welded);
   void lockJammed(int p, int row, bool welded, double speedScale);
+  /// The one movable particle of a zone that jams after spending its bounces (kMaxZoneBounces,
+  /// a COR above 0) alone against obstacles: a rattle, not a pile. -1 for any other jam.
+  int rattlerOf(const Scene& scene, int zone, const PairParticles& pair) const;
+  /// Records what a rattle's jam at instant T took from particle p's velocity (`before`: its
+  /// velocity then), and what share of it the rest of the step leaves.
+  void keepRattle(int p, const Vec2& before, int zone, double T);
   /// Whether a jammed contact's particles stop at rest instead (kJamRestKicks).
   bool stopsAtRest(const Scene& scene, const PairParticles& pair) const;
   /// Marks the particles welded to p jammed, and stopped if the weld has no freedom left.
@@ -330,6 +343,7 @@ class ContactZones {
   struct ZoneRecord {
     int metAgain = 0;  ///< contacts back after a solve, failed solves (jam count)
     int bounces = 0;   ///< contacts back after a solve that bounced (not jams: kMaxZoneBounces)
+    double firstBounce = -1.0;  ///< the instant (fraction of the step) of the first of those; -1: none
     int solves = 0;    ///< solves in this step
     int rowCount = 0;  ///< the projector rows set for its contacts in this step
     int size = 0;      ///< members
@@ -354,6 +368,15 @@ class ContactZones {
   std::vector<char> stopped_;       ///< N: stopped for the rest of the step: kJam, kHeld or 0
   std::vector<char> jammed_;        ///< N: welded or locked by a jam in this step (statistics)
   std::vector<int> roots_;          ///< every particle that has been a root this step
+  /// A rattle's particle (rattlerOf), what its jams took from its velocity in this step (summed),
+  /// and its squared speed before the first.
+  struct Rattle {
+    int p = -1;
+    Vec2 taken = Vec2::Zero();
+    double speedSquared = 0.0;
+    double share = 1.0;  ///< of `taken`, given back reversed (keepRattle)
+  };
+  std::vector<Rattle> rattles_;     ///< this step's (few: a rattle is one particle's)
   PairKeyMap<int> rowOf_;           ///< the projector's row of each pair with one this step
   PairKeyMap<double> lastImpulse_;  ///< each contact's positive impulse at the end of the last step
   std::vector<uint64_t> unsolved_;  ///< pairs whose rows were set since the last solve (any zone's)

@@ -75,8 +75,9 @@ Status EventHandler::handle(const Scene& scene, const State& start, State& state
     if (Status s = detectChanged(scene, e.t, ctx); !s) return s;
     changed_.clear();
   }
-  // Finish: the end of every particle's last piece.
+  // Finish: the end of every particle's last piece; rattles keep their speed.
   copyByParticles(motion_.end(), state.x, threads_);
+  zones_.giveBackRattles(state.v);
   sleepers_.end(scene, start, state);
   ctx.stats->asleep = sleepers_.sleeping();
   zones_.sizes(*ctx.stats);

@@ -4,6 +4,7 @@
 // obstacles, or stopped at rest.
 #include "contact_zones.h"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 
@@ -207,6 +208,60 @@ void ContactZones::settleJam(int p) {
     jammed_[q] = 1;
     if (frozen) stopped_[q] = kJam;
   });
+}
+
+// A rattle: a ball between two walls a hair wider than it bounces u h / gap times in a step (200
+// at 20 m/s across a gap of 1 mm, dt 0.01), past the zone's bounces, and jams; its lock took its
+// speed across the walls for good (at COR 1, four fifths of its kinetic energy there). The
+// time-ordered events cannot follow it (their count has no bound as the gap shrinks), but its
+// outcome is plain: it goes on rattling, its mean motion across the walls nil, which is what the
+// lock gives its path for the rest of the step. So its velocity at the step's end gets back what
+// the jams took, reversed (away from the wall it last closed on), times what the bounces of the
+// rest of the step leave of it. Those follow from the rattle so far: between parallel walls each
+// bounce multiplies the speed across by e and the time to the next by 1 / e, so from an interval
+// d the bounces in the time R left take e^n with d (e^-n - 1) / (1 / e - 1) = R, that is
+//     e^n = 1 / (1 + (R / d) (1 / e - 1)),
+// and with the jam's own bounce the share given back is e^(n + 1); at COR 1 it is 1, exactly.
+// d is the zone's mean interval since its first bounce of the step: the last one is longer when
+// e < 1, so n comes out high and the share low, on the side of losing energy. Only a zone with
+// one movable particle qualifies (its obstacles take what its momentum changes), and never above
+// the speed it had before its first jam: the lock leaves it its motion along the walls, so with
+// one jam |v_end|^2 + share^2 |taken|^2 is at most that speed squared; with two (a second lock
+// stops it) the cap decides.
+int ContactZones::rattlerOf(const Scene& scene, int zone, const PairParticles& pair) const {
+  const ZoneRecord& z = record_[root(zone)];
+  if (!(cor_ > 0.0) || z.bounces < kMaxZoneBounces || z.size != 1) return -1;
+  for (int k = 0; k < pair.count; ++k)
+    if (!isImmobile(scene, pair.p[k])) return pair.p[k];
+  return -1;
+}
+
+void ContactZones::keepRattle(int p, const Vec2& before, int zone, double T) {
+  const Vec2 taken = before - projector_.velocity(p);
+  if (taken == Vec2::Zero()) return;
+  for (Rattle& r : rattles_)
+    if (r.p == p) {
+      r.taken += taken;
+      return;
+    }
+  const ZoneRecord& z = record_[root(zone)];
+  double share = cor_;
+  if (cor_ < 1.0) {
+    const double elapsed = T - z.firstBounce, bounces = z.bounces + z.metAgain;
+    share = elapsed > 0.0 ? cor_ / (1.0 + (1.0 - T) * bounces / elapsed * (1.0 / cor_ - 1.0)) : 0.0;
+  }
+  rattles_.push_back(Rattle{p, taken, before.squaredNorm(), share});
+}
+
+void ContactZones::giveBackRattles(VecX& v) const {
+  for (const Rattle& r : rattles_) {
+    const Vec2 now = at(v, r.p), back = -r.share * r.taken;
+    // The largest s in [0, 1] with |now + s back|^2 <= speedSquared: a s^2 + 2 b s + c <= 0.
+    const double a = back.squaredNorm(), b = now.dot(back), c = now.squaredNorm() - r.speedSquared;
+    double s = 1.0;
+    if (a + 2.0 * b + c > 0.0) s = c > 0.0 ? 0.0 : std::min(1.0, (-b + std::sqrt(std::max(0.0, b * b - a * c))) / a);
+    at(v, r.p) = now + s * back;
+  }
 }
 
 }  // namespace fosssim
