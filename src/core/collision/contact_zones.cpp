@@ -88,7 +88,7 @@ int ContactZones::unite(int a, int b) {
   zb.first = zb.last = zb.firstHoldable = zb.lastHoldable = -1;  // b is no root: its lists are a's
   za.metAgain = std::max(za.metAgain, zb.metAgain);
   za.bounces = std::max(za.bounces, zb.bounces);
-  if (zb.firstBounce >= 0.0 && !(za.firstBounce >= 0.0 && za.firstBounce <= zb.firstBounce)) za.firstBounce = zb.firstBounce;
+  if (zb.firstBounce >= 0.0 && (za.firstBounce < 0.0 || zb.firstBounce < za.firstBounce)) za.firstBounce = zb.firstBounce;
   za.bounced = za.bounced && zb.bounced;
   za.solves = std::max(za.solves, zb.solves);
   za.rigid = za.rigid || zb.rigid;
@@ -142,8 +142,9 @@ int ContactZones::absorb(const Scene& scene, const StepMotion& motion, const Pai
     ZoneRecord& z = record_[root(zone)];
     if (z.bounced && z.bounces < kMaxZoneBounces) {
       if (z.bounces++ == 0) z.firstBounce = T;
+    } else {
+      ++z.metAgain;
     }
-    else ++z.metAgain;
   }
   int rattler = -1;      // a rattle's particle (rattlerOf), whose velocity the jam takes
   Vec2 beforeJam = Vec2::Zero();

@@ -221,8 +221,9 @@ class ContactZones {
   double kicksAlong(const Scene& scene, uint64_t key, const Vec2& n, double alpha) const;
 
   /// Gives back to each rattle's particle (see rattlerOf) what its jams took from its velocity,
-  /// reversed and times the COR, in v (2N) at the end of the step: the speed of its bounces,
-  /// kept as a ball rattling between walls keeps it, never above its speed before its first jam.
+  /// reversed and times the share the rest of the step's bounces leave of it (keepRattle), in v
+  /// (2N) at the end of the step: a ball rattling between walls keeps its speed across them,
+  /// never above its speed before its first jam.
   void giveBackRattles(VecX& v) const;
 
   /// Whether the contact of pair `key`, found closing at a later time of the step, is to be
