@@ -48,7 +48,17 @@ bool ContactZones::wakeHitSleepers(const Scene& scene, int zone, StepStats& stat
   projector_.forEachTouchedRow([&](int row) {
     const uint64_t key = rowKey_[row];
     const PairParticles pair = pairParticles(scene, key);
-    const double wakeSpeed = sleepers_->wakeSpeed(scene, pair.p, pair.count);
+    // The awake movable side's kicks along the row (its coefficients: the normal, weighted at an
+    // edge's ends), each body once (a weld's coefficient is its particles' together).
+    double kicksAlong = 0;
+    for (int k = 0; k < pair.count; ++k) {
+      const int p = pair.p[k];
+      const auto moves = [&](int q) { return !scene.isFixed(q) && !sleepers_->asleep(q) && projector_.hasBody(q); };
+      bool counted = !moves(p);  // a held or stopped member counts: what the row stopped was its motion
+      for (int j = 0; j < k && !counted; ++j) counted = moves(pair.p[j]) && projector_.sameBody(p, pair.p[j]);
+      if (!counted) kicksAlong += std::fabs(sleepers_->kickVector(p).dot(projector_.coefficientOn(row, p)));
+    }
+    const double wakeSpeed = sleepers_->wakeSpeed(scene, pair.p, pair.count, kicksAlong);
     if (!std::isfinite(wakeSpeed)) return;  // no sleeper
     bool ours = false;
     for (int k = 0; k < pair.count; ++k) ours = ours || zoneOf(pair.p[k]) == zone;
@@ -72,10 +82,15 @@ bool ContactZones::wakeHitSleepers(const Scene& scene, int zone, StepStats& stat
       if (sleepers_->asleep(pair.p[k])) hitSleepers_.push_back(pair.p[k]);
   });
   if (hitSleepers_.empty()) return false;
-  double moving = 0, resting = 0;  // twice the kinetic energies: before the solve, and at rest
+  // Twice the kinetic energies of the bodies' own motion (their velocities before the solve less
+  // this step's kicks: what they brought into the step) and of rest. A resting body brings what
+  // its contacts left it of the last kick, up to about a kick. Measured on the whole velocity
+  // against kWakeKickFactor kicks, a disk sliding along a floor slower than 2 g h (the kick across
+  // its contact) counted as resting, and the sleeper it hit was a wall.
+  double moving = 0, resting = 0;
   projector_.forEachChangedBody([&](int p, const Vec2& v0, double m) {
-    const double restingSpeed = kWakeKickFactor * sleepers_->kick(p) + sleepers_->sleepSpeed(scene, p);
-    moving += m * v0.squaredNorm();
+    const double restingSpeed = (kWakeKickFactor - 1.0) * sleepers_->kick(p) + sleepers_->sleepSpeed(scene, p);
+    moving += m * (v0 - sleepers_->kickVector(p)).squaredNorm();
     resting += m * restingSpeed * restingSpeed;
   });
   if (!(moving > resting)) {
