@@ -1,6 +1,7 @@
 #include "py_scene.h"
 
 #include "errors.h"
+#include "staged_output.h"
 #include "fosssim/core/collision_handler.h"
 #include "fosssim/core/forces.h"
 #include "fosssim/core/integrator.h"
@@ -40,6 +41,7 @@ int rank(const Force& f) {
 }  // namespace
 
 std::shared_ptr<PyScene> PyScene::load(const std::string& path) {
+  checkPath(path, "Scene.load");
   auto s = std::make_shared<PyScene>();
   check<SceneError>(loadScene(path, s->file));
   return s;

@@ -2,6 +2,7 @@
 #include "arrays.h"
 #include "bindings.h"
 #include "py_scene.h"
+#include "staged_output.h"
 
 #include "fosssim/core/collision_handler.h"
 #include "fosssim/core/forces.h"
@@ -56,8 +57,14 @@ void bindScene(nb::module_& m) {
       .def_static("from_xml", &PyScene::fromXml, nb::arg("text"), nb::arg("name") = "<string>",
                   "Parses XML text; `name` stands for the file in messages.")
       .def("to_xml", &PyScene::toXml, "The scene as XML text that loads back to the same scene.")
-      .def("write", [](const PyScene& s, const std::string& path) { check<FileError>(writeScene(path, s.file)); },
-           nb::arg("path"), "Writes the scene as an XML scene file.")
+      .def("write",
+           [](const PyScene& s, const std::string& path) {
+             // Under the partial name, renamed when complete: a full disk does not cut the old file.
+             StagedOutput out(path, "Scene.write");
+             out.keepingPartial("the scene so far", [&] { check<FileError>(writeScene(out.writePath(), s.file)); });
+             out.commit();
+           },
+           nb::arg("path"), "Writes the scene as an XML scene file (under NAME.partial.EXT, renamed when complete).")
       .def("copy", &PyScene::copy)
       .def_prop_ro("path", [](const PyScene& s) { return s.file.path; })
       .def_prop_ro("warnings", [](const PyScene& s) { return s.file.warnings; },
