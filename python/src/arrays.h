@@ -40,10 +40,11 @@ nb::object copyArray(const T* data, size_t rows, size_t cols = 0) {
   return toPython(nb::ndarray<nb::numpy, T>(copy, cols ? 2 : 1, shape, owner));
 }
 
-/// The values of an (N, 2) or (2N,) input for N particles; throws SceneError otherwise.
+/// The values of an (N, 2) input for N particles; throws SceneError otherwise. A flat (2N,) array
+/// is refused too: it may be a mistaken array of N x-values and N y-values, and read as pairs it
+/// would be taken silently.
 inline const double* pairsOf(const Input& a, long particles, const char* what) {
-  const bool ok = (a.ndim() == 2 && a.shape(0) == static_cast<size_t>(particles) && a.shape(1) == 2) ||
-                  (a.ndim() == 1 && a.shape(0) == static_cast<size_t>(2 * particles));
+  const bool ok = a.ndim() == 2 && a.shape(0) == static_cast<size_t>(particles) && a.shape(1) == 2;
   if (!ok) {
     std::string shape;
     for (size_t d = 0; d < a.ndim(); ++d) shape += (d ? ", " : "") + std::to_string(a.shape(d));

@@ -5,6 +5,7 @@
 #include "interrupt_check.h"
 #include "py_simulator.h"
 #include "simulator_lock.h"
+#include "staged_output.h"
 
 #include "fosssim/io/scene_writer.h"
 #include "fosssim/render/picture.h"
@@ -18,7 +19,14 @@
 #include <nanobind/stl/optional.h>
 #include <nanobind/stl/string.h>
 
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <map>
+#include <unistd.h>
 
 namespace fosssim::py {
 namespace {
@@ -55,6 +63,29 @@ render::Image frame(const PySimulator& s, int width, int height) {
   check<SimulationError>(renderer(width, height).render(picture(s, width, height), image));
   return image;
 }
+/// A PNG for a device or a named pipe (written directly, nothing to rename): libpng's writer
+/// removes its file when a write fails, so it writes a temporary file, whose bytes are then copied.
+void writePngDirectly(const std::string& path, const render::Image& image) {
+  std::string temp = (std::filesystem::temp_directory_path() / "fosssim-png-XXXXXX").string();
+  const int fd = mkstemp(temp.data());
+  if (fd < 0) throw FileError("save_png: cannot make a temporary file for \"" + path + "\" (" + std::strerror(errno) + ")");
+  ::close(fd);
+  struct Remove {
+    const std::string& p;
+    ~Remove() { (void)std::remove(p.c_str()); }
+  } remove{temp};
+  check<FileError>(render::writePng(temp, image));
+  std::ifstream in(temp, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) throw FileError("cannot write PNG file \"" + path + "\": " + std::strerror(errno));
+  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
+  const bool flushed = std::fflush(f) == 0;
+  const int err = errno;
+  const bool closed = std::fclose(f) == 0;
+  if (!written || !flushed || !closed)
+    throw FileError("cannot write PNG file \"" + path + "\": " + std::strerror(written && flushed ? errno : err));
+}
 #else
 [[noreturn]] void noRenderer() {
   throw SimulationError("this fosssim was built without its renderer (FOSSSIM_RENDER=OFF): no raster frames; "
@@ -82,7 +113,15 @@ void bindPictures(nb::module_& m) {
       "The current state drawn as an (height, width, 3) uint8 RGB array, top row first.");
   cls.def("save_png", [](const PySimulator& s, const std::string& path, int width, int height) {
 #ifdef FOSSSIM_HAVE_RENDER
-        check<FileError>(render::writePng(path, frame(s, width, height)));
+        StagedOutput out(path, "save_png", s.scene().file.path);
+        const render::Image image = frame(s, width, height);
+        if (!out.staged()) return writePngDirectly(path, image);
+        // libpng removes the partial file when its write fails: the final name was never touched.
+        if (Status written = render::writePng(out.writePath(), image); !written) {
+          out.discard();
+          throw FileError(written.message() + " (\"" + path + "\" was not written)");
+        }
+        out.commit();
 #else
         (void)s, (void)path, (void)width, (void)height;
         noRenderer();
@@ -91,7 +130,13 @@ void bindPictures(nb::module_& m) {
   cls.def("svg", [](const PySimulator& s, int width, int height) { return render::svgDocument(picture(s, width, height)); },
           nb::arg("width") = 512, nb::arg("height") = 512, "The current state as an SVG document.");
   cls.def("save_svg", [](const PySimulator& s, const std::string& path, int width, int height) {
-        check<FileError>(render::writeSvg(path, picture(s, width, height)));
+        StagedOutput out(path, "save_svg", s.scene().file.path);
+        const render::Picture p = picture(s, width, height);
+        if (Status written = render::writeSvg(out.writePath(), p); !written) {
+          out.discard();  // a cut SVG is of no use
+          throw FileError(written.message() + (out.staged() ? " (\"" + path + "\" was not written)" : ""));
+        }
+        out.commit();
       }, nb::arg("path"), nb::arg("width") = 512, nb::arg("height") = 512);
   cls.def("record_movie", [](PySimulator& s, const std::string& path, std::optional<long> steps, long every, double fps,
                              int width, int height) {
@@ -100,22 +145,27 @@ void bindPictures(nb::module_& m) {
         checkArgument(fps > 0, "fps must be > 0, got " + formatNumber(fps));
         if (steps) checkSteps(*steps);  // before the movie's file is made
         checkSize(width, height);
+        // As --movie: "run.partial.mp4" (ffmpeg picks the format by the ending), renamed when complete.
+        StagedOutput out(path, "record_movie", s.scene().file.path);
         SimulatorLock lock(s);  // the movie's steps and frames follow one another, no other thread's between
         std::unique_ptr<render::MovieWriter> movie;
-        check<FileError>(render::MovieWriter::open(path, width, height, fps, movie));
-        check<FileError>(movie->write(frame(s, width, height)));
-        const long total = steps ? *steps : std::max(0L, s.numSteps() - s.stepsTaken());
-        for (long k = 1; k <= total; ++k) {
-          {
-            nb::gil_scoped_release release;
-            s.step();
+        check<FileError>(render::MovieWriter::open(out.writePath(), width, height, fps, movie));
+        out.keepingPartial("the movie so far", [&] {
+          check<FileError>(movie->write(frame(s, width, height)));
+          const long total = steps ? *steps : std::max(0L, s.numSteps() - s.stepsTaken());
+          for (long k = 1; k <= total; ++k) {
+            {
+              nb::gil_scoped_release release;
+              s.step();
+            }
+            // The GIL is back between steps here: Ctrl-C's KeyboardInterrupt now, not at the end
+            // (MovieWriter's destructor ends the movie so far, in the partial file).
+            if (PyErr_CheckSignals() != 0) throw nb::python_error();
+            if (k % every == 0) check<FileError>(movie->write(frame(s, width, height)));
           }
-          // The GIL is back between steps here: Ctrl-C's KeyboardInterrupt now, not at the end
-          // (MovieWriter's destructor ends the movie so far).
-          if (PyErr_CheckSignals() != 0) throw nb::python_error();
-          if (k % every == 0) check<FileError>(movie->write(frame(s, width, height)));
-        }
-        check<FileError>(movie->close());
+          check<FileError>(movie->close());
+        });
+        out.commit();
         return movie->frames();
 #else
         (void)s, (void)path, (void)steps, (void)every, (void)fps, (void)width, (void)height;

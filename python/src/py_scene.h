@@ -7,6 +7,7 @@
 #include "fosssim/io/scene_file.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace fosssim::py {
@@ -25,13 +26,15 @@ struct PyScene {
   int addHalfplane(const Vec2& point, const Vec2& normal);
   /// Inserts `force` after the last force of the same or an earlier kind in the format's order.
   void addForce(std::unique_ptr<Force> force);
+  void addGravity(const Vec2& g);
+  void addConstantForce(const Vec2& f);
   void addSpring(int edge, double k, double l0, double b);
   void addGravitational(int i, int j, double G);
   void addVortex(int i, int j, double kbs, double kvc);
   /// The collision settings and, for penalty and hybrid, its penalty force (k and thickness
-  /// negative: the type's defaults).
-  void setCollision(const std::string& type, double cor, int maxIterations, const std::string& failsafe, double k,
-                    double thickness);
+  /// not given: the type's defaults; given, >= 0 as the loader's).
+  void setCollision(const std::string& type, double cor, int maxIterations, const std::string& failsafe,
+                    std::optional<double> k, std::optional<double> thickness);
   void setIntegrator(const std::string& type, double dt);
   void setDuration(double duration);
 

@@ -10,6 +10,8 @@ namespace fosssim::py {
 PySimulator::PySimulator(const PyScene& scene, bool compat, int threads, bool diagnostics, bool sleep)
     : scene_(scene.copy()), compat_(compat), diagnostics_(diagnostics) {
   checkArgument(threads >= 1, "threads must be >= 1, got " + std::to_string(threads));
+  // The command line's --threads limit: far beyond any machine's cores, more would only exhaust the process.
+  checkArgument(threads <= 1024, "threads must be an integer from 1 to 1024, got " + std::to_string(threads));
   SimulatorOptions options;
   options.handler.compat = compat;
   options.handler.threads = threads;

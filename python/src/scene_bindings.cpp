@@ -2,6 +2,7 @@
 #include "arrays.h"
 #include "bindings.h"
 #include "py_scene.h"
+#include "staged_output.h"
 
 #include "fosssim/core/collision_handler.h"
 #include "fosssim/core/forces.h"
@@ -56,8 +57,14 @@ void bindScene(nb::module_& m) {
       .def_static("from_xml", &PyScene::fromXml, nb::arg("text"), nb::arg("name") = "<string>",
                   "Parses XML text; `name` stands for the file in messages.")
       .def("to_xml", &PyScene::toXml, "The scene as XML text that loads back to the same scene.")
-      .def("write", [](const PyScene& s, const std::string& path) { check<FileError>(writeScene(path, s.file)); },
-           nb::arg("path"), "Writes the scene as an XML scene file.")
+      .def("write",
+           [](const PyScene& s, const std::string& path) {
+             // Under the partial name, renamed when complete: a full disk does not cut the old file.
+             StagedOutput out(path, "Scene.write");
+             out.keepingPartial("the scene so far", [&] { check<FileError>(writeScene(out.writePath(), s.file)); });
+             out.commit();
+           },
+           nb::arg("path"), "Writes the scene as an XML scene file (under NAME.partial.EXT, renamed when complete).")
       .def("copy", &PyScene::copy)
       .def_prop_ro("path", [](const PyScene& s) { return s.file.path; })
       .def_prop_ro("warnings", [](const PyScene& s) { return s.file.warnings; },
@@ -83,7 +90,7 @@ void bindScene(nb::module_& m) {
       .def("set_collision",
            [](PyScene& s, const std::string& type, double cor, int maxiters, const std::string& failsafe,
               std::optional<double> k, std::optional<double> thickness) {
-             s.setCollision(type, cor, maxiters, failsafe, k.value_or(-1.0), thickness.value_or(-1.0));
+             s.setCollision(type, cor, maxiters, failsafe, k, thickness);
            },
            nb::arg("type"), nb::arg("cor") = 1.0, nb::arg("maxiters") = 10, nb::arg("failsafe") = "projection",
            nb::arg("k") = nb::none(), nb::arg("thickness") = nb::none(),
@@ -158,9 +165,9 @@ void bindScene(nb::module_& m) {
       .def("add_halfplane", [](PyScene& s, const P& p, const P& n) { return s.addHalfplane(vec(p), vec(n)); },
            nb::arg("point"), nb::arg("normal"), "Adds a half-plane (free side where (x - point) . normal > 0).")
       .def("add_spring", &PyScene::addSpring, nb::arg("edge"), nb::arg("k"), nb::arg("l0"), nb::arg("b") = 0.0)
-      .def("add_gravity", [](PyScene& s, const P& g) { s.addForce(std::make_unique<SimpleGravityForce>(vec(g))); },
+      .def("add_gravity", [](PyScene& s, const P& g) { s.addGravity(vec(g)); },
            nb::arg("g") = P{0, -9.81})
-      .def("add_constant_force", [](PyScene& s, const P& f) { s.addForce(std::make_unique<ConstantForce>(vec(f))); },
+      .def("add_constant_force", [](PyScene& s, const P& f) { s.addConstantForce(vec(f)); },
            nb::arg("f"))
       .def("add_gravitational_force", &PyScene::addGravitational, nb::arg("i"), nb::arg("j"), nb::arg("G"))
       .def("add_drag", [](PyScene& s, double b) {

@@ -3,6 +3,7 @@
 #include "errors.h"
 #include "interrupt_check.h"
 #include "py_scene.h"
+#include "staged_output.h"
 
 #include "fosssim/core/simulator.h"
 #include "fosssim/io/grader.h"
@@ -33,16 +34,18 @@ std::unique_ptr<Simulator> simulatorFor(const PyScene& scene, const SimulatorOpt
   return sim;
 }
 
-/// Writes the records of a run of `steps` steps (default: the whole scene), as FOSSSim -o does.
+/// Writes the records of a run of `steps` steps (default: the whole scene), as FOSSSim -o does:
+/// under the partial name, renamed to `path` when every record is written (staged_output.h).
 long writeTrajectory(const PyScene& given, const std::string& path, bool compat, std::optional<long> steps) {
   if (steps) checkSteps(*steps);  // before the file is made
+  StagedOutput out(path, "write_trajectory", given.file.path);
   // The run goes without the GIL, while another Python thread may change the Scene (add a
   // particle, and its vectors move): it runs a copy, taken here with the GIL.
   const auto copy = given.copy();
   const PyScene& scene = *copy;
   auto sim = simulatorFor(scene, optionsFor(compat));
   std::unique_ptr<TrajectoryWriter> writer;
-  check<FileError>(TrajectoryWriter::open(path, sim->layout(), writer));
+  check<FileError>(TrajectoryWriter::open(out.writePath(), sim->layout(), writer, path));
   // A mid-step record (continuous-time, hybrid) comes from inside collision handling.
   struct MidStep final : StepObserver {
     TrajectoryWriter* writer;
@@ -55,16 +58,21 @@ long writeTrajectory(const PyScene& given, const std::string& path, bool compat,
   observer.writer = writer.get();
   State state = scene.file.initial;
   InterruptCheck interrupted;
-  nb::gil_scoped_release release;
-  check<FileError>(writer->write(state, CollisionLog{}));
   const long total = steps ? *steps : scene.file.scene.numSteps();
-  for (long k = 0; k < total; ++k) {
-    check<SimulationError>(sim->step(scene.file.scene, state, sim->layout().midStep ? &observer : nullptr));
-    check<FileError>(observer.status);
-    check<FileError>(writer->write(state, sim->log()));
-    interrupted();  // the file so far is left as it is, cut short
+  {
+    nb::gil_scoped_release release;
+    out.keepingPartial("the trajectory so far", [&] {
+      check<FileError>(writer->write(state, CollisionLog{}));
+      for (long k = 0; k < total; ++k) {
+        check<SimulationError>(sim->step(scene.file.scene, state, sim->layout().midStep ? &observer : nullptr));
+        check<FileError>(observer.status);
+        check<FileError>(writer->write(state, sim->log()));
+        interrupted();  // KeyboardInterrupt: the records so far stay in the partial file
+      }
+      check<FileError>(writer->close());
+    });
   }
-  check<FileError>(writer->close());
+  out.commit();
   return total;
 }
 
@@ -72,6 +80,7 @@ long writeTrajectory(const PyScene& given, const std::string& path, bool compat,
 /// failing file that passes in the other mode gets -i's hint to grade it with (or without)
 /// --compat.
 std::tuple<bool, std::string> gradeTrajectoryFile(const PyScene& given, const std::string& path, bool compat) {
+  checkPath(path, "grade_trajectory");
   const auto copy = given.copy();  // as in writeTrajectory: graded without the GIL
   const PyScene& scene = *copy;
   const SimulatorOptions options = optionsFor(compat);

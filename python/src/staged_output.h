@@ -1,0 +1,63 @@
+// The module's output files, written as the command line writes -o and --movie
+// (src/app/output_files.h): under a partial name next to the final one ("out.bin" as
+// "out.partial.bin", "run.mp4" as "run.partial.mp4": ffmpeg picks the format by the ending) and
+// renamed over the final name only when complete. A write that fails leaves the final name as it
+// was (an older file of that name is not cut or removed) and the exception says where the data so
+// far is. Devices and named pipes are written directly: there is nothing to rename, and a device
+// node must never be replaced or removed (libpng's simplified writer removes its file on error).
+#pragma once
+
+#include "errors.h"
+
+#include <string>
+
+namespace fosssim::py {
+
+/// Raises ValueError("<what>: embedded null byte", as Python's open()) when `path` holds a NUL: the C
+/// library would stop at it and read or write a file of another name.
+void checkPath(const std::string& path, const char* what);
+
+/// "dir/out.bin" -> "dir/out.partial.bin"; "traj" -> "traj.partial" (the command line's names).
+std::string partialName(const std::string& path);
+
+class StagedOutput {
+ public:
+  /// Checks the path (NUL, a folder, the scene file `input` the Scene was loaded from, under any
+  /// name or link) and removes a stale partial file (the partial name is FOSSSim's own). `what`
+  /// names the function in messages. Throws ValueError or FileError; nothing is written then.
+  StagedOutput(const std::string& finalPath, const char* what, const std::string& input = "");
+
+  /// Where to write now: the partial name, or the final one for a device or a named pipe.
+  const std::string& writePath() const { return writePath_; }
+  const std::string& finalPath() const { return finalPath_; }
+  bool staged() const { return writePath_ != renameTo_; }
+
+  /// The output is complete: the partial file takes the final name (and the old file's
+  /// permissions). Throws FileError naming both when the rename fails.
+  void commit();
+  /// For the message of a write that did not complete: where its data is, and that the final name
+  /// was left as it was.
+  std::string whereIncomplete() const;
+  /// Removes the partial file (for outputs whose partial file holds nothing useful, a PNG).
+  void discard();
+
+  /// Runs `body` (the writing); a FileError or SimulationError it throws is raised again, same
+  /// type, saying where `data` ("the trajectory so far") is: the partial file, kept.
+  template <class F>
+  auto keepingPartial(const char* data, F&& body) {
+    try {
+      return body();
+    } catch (const FileError& e) {
+      throw FileError(std::string(e.what()) + "; " + data + " is in " + whereIncomplete());
+    } catch (const SimulationError& e) {
+      throw SimulationError(std::string(e.what()) + "; " + data + " is in " + whereIncomplete());
+    }
+  }
+
+ private:
+  std::string finalPath_;  ///< as the caller gave it
+  std::string renameTo_;   ///< the final path, a symbolic link resolved (the link keeps pointing at it)
+  std::string writePath_;
+};
+
+}  // namespace fosssim::py
