@@ -8,14 +8,6 @@ import pytest
 import fosssim
 
 
-def small_scene():
-    s = fosssim.Scene()
-    s.add_particle((0.0, 0.0), (0.0, 0.0), 1.0, 0.1, False)
-    s.set_integrator("symplectic-euler", 0.01)
-    s.duration = 0.1
-    return s
-
-
 @pytest.mark.parametrize("call, message", [
     (lambda s: s.add_gravity((math.nan, 0.0)), r"add_gravity: g\[0\] must be finite, got nan"),
     (lambda s: s.add_gravity((0.0, -math.inf)), r"add_gravity: g\[1\] must be finite, got -inf"),
@@ -25,16 +17,16 @@ def small_scene():
     (lambda s: s.set_collision("hybrid", thickness=-1.0), r"set_collision: thickness must be >= 0, got -1"),
     (lambda s: s.set_collision("penalty", k=math.nan), r"set_collision: k must be finite, got nan"),
 ])
-def test_builder_refuses_at_the_call(call, message):
-    s = small_scene()
+def test_builder_refuses_at_the_call(call, message, one_disk_scene):
+    s = one_disk_scene()
     before = s.to_xml()
     with pytest.raises(fosssim.SceneError, match=message):
         call(s)
     assert s.to_xml() == before  # nothing half-applied
 
 
-def test_duration_and_dt_may_not_ask_for_more_steps_than_the_loader_allows():
-    s = small_scene()
+def test_duration_and_dt_may_not_ask_for_more_steps_than_the_loader_allows(one_disk_scene):
+    s = one_disk_scene()
     with pytest.raises(fosssim.SceneError, match=r"duration: duration / dt = 1e\+308 / 0.01 asks for .* steps; at most 1e12"):
         s.duration = 1e308
     s.duration = 1e9  # 1e11 steps: allowed, as in a file
@@ -43,8 +35,8 @@ def test_duration_and_dt_may_not_ask_for_more_steps_than_the_loader_allows():
     assert s.dt == 0.01 and s.duration == 1e9
 
 
-def test_penalty_settings_default_only_when_not_given():
-    s = small_scene()
+def test_penalty_settings_default_only_when_not_given(one_disk_scene):
+    s = one_disk_scene()
     s.set_collision("penalty")
     assert s.collision["k"] == 100 and s.collision["thickness"] == 0.01  # the type's defaults
     s.set_collision("penalty", k=0.0, thickness=0.0)  # 0 is a value (>= 0, as in a file), not the default

@@ -7,17 +7,9 @@ import pytest
 import fosssim
 
 
-def small_scene():
-    s = fosssim.Scene()
-    s.add_particle((0.0, 0.0), (0.0, 0.0), 1.0, 0.1, False)
-    s.set_integrator("symplectic-euler", 0.01)
-    s.duration = 0.1
-    return s
-
-
 @pytest.mark.parametrize("target", ["scene", "simulator"])
-def test_flat_position_arrays_are_refused(target):
-    s = small_scene()
+def test_flat_position_arrays_are_refused(target, one_disk_scene):
+    s = one_disk_scene()
     s.add_particle((1.0, 0.0))
     obj = s if target == "scene" else fosssim.Simulator(s)
     with pytest.raises(fosssim.SceneError, match=r"positions: expected an array of shape \(2, 2\), got shape \(4\)"):
@@ -27,9 +19,9 @@ def test_flat_position_arrays_are_refused(target):
     assert np.array_equal(obj.positions, [[0.0, 0.0], [1.0, 0.0]])
 
 
-def test_threads_are_capped_as_on_the_command_line():
+def test_threads_are_capped_as_on_the_command_line(one_disk_scene):
     with pytest.raises(ValueError, match="threads must be an integer from 1 to 1024, got 1000000"):
-        fosssim.Simulator(small_scene(), threads=10**6)
+        fosssim.Simulator(one_disk_scene(), threads=10**6)
     with pytest.raises(ValueError, match="threads must be >= 1, got 0"):
-        fosssim.Simulator(small_scene(), threads=0)
-    assert fosssim.Simulator(small_scene(), threads=2).num_particles == 1
+        fosssim.Simulator(one_disk_scene(), threads=0)
+    assert fosssim.Simulator(one_disk_scene(), threads=2).num_particles == 1
