@@ -1,10 +1,11 @@
 // Outputs on a full disk, without mounting one: RunOptions::fileSize caps every file the run
 // writes (RLIMIT_FSIZE, SIGXFSZ ignored), so a write past the cap fails with EFBIG where a full
 // disk fails with ENOSPC, through the same code. Each output must end the run with exit 1 and
-// leave only whole data: --movie no broken movie under its final name (ffmpeg exited 0 after
-// "Error writing trailer").
+// leave only whole data: --stats whole rows, -m no frame cut short, --movie no broken movie under
+// its final name (ffmpeg exited 0 after "Error writing trailer").
 #include "run_fosssim.h"
 
+#include <algorithm>
 #include <sstream>
 
 namespace fosssim::testing {
@@ -36,6 +37,38 @@ RunOptions capped(rlim_t bytes) {
   RunOptions options;
   options.fileSize = bytes;
   return options;
+}
+
+TEST_F(CliDiskFull, StatsKeepsWholeRowsAndSaysHowMany) {
+  const std::string s = scene(2, 2000), csv = path("s.csv");
+  const Outcome o = runFosssim({"-s", s, "-d", "0", "-q", "--stats", csv}, capped(100000));
+  EXPECT_TRUE(exitedWith(o, 1)) << o;
+  EXPECT_TRUE(contains(o.err, csv + ": cannot write the --stats file (File too large)")) << o;
+  EXPECT_TRUE(contains(o.err, "--stats: the rows of steps 0 to ")) << o;
+  const std::string text = slurp(csv);
+  ASSERT_FALSE(text.empty());
+  EXPECT_EQ(text.back(), '\n') << "the file ends in the middle of a row";
+  std::istringstream lines(text);
+  std::string header, line;
+  std::getline(lines, header);
+  const auto commas = std::count(header.begin(), header.end(), ',');
+  long rows = 0;
+  while (std::getline(lines, line)) {
+    EXPECT_EQ(std::count(line.begin(), line.end(), ','), commas) << "row " << rows;
+    ++rows;
+  }
+  EXPECT_GT(rows, 0);
+  EXPECT_LT(rows, 2001);
+  EXPECT_TRUE(contains(o.err, "(" + std::to_string(rows) + " whole rows under the header) are in " + csv)) << o;
+}
+
+TEST_F(CliDiskFull, NoSvgFrameIsLeftCutShort) {
+  const std::string s = scene(60, 3);  // a frame of 60 circles is larger than the cap
+  const Outcome o = runFosssim({"-s", s, "-d", "0", "-q", "-m", path("svg")}, capped(4096));
+  EXPECT_TRUE(exitedWith(o, 1)) << o;
+  EXPECT_TRUE(contains(o.err, "cannot write SVG file")) << o;
+  EXPECT_TRUE(contains(o.err, "no frame was written")) << o;
+  for (const auto& entry : fs::directory_iterator(path("svg"))) ADD_FAILURE() << "left behind: " << entry.path();
 }
 
 TEST_F(CliDiskFull, AMovieThatCannotBeFinishedKeepsItsPartialName) {
