@@ -42,8 +42,8 @@ Status checkOne(const std::string& option, const std::string& output, const std:
   const char* kind = S_ISFIFO(st.st_mode) ? "a named pipe" : S_ISSOCK(st.st_mode) ? "a socket"
                      : S_ISBLK(st.st_mode) ? "a block device" : nullptr;
   if (kind)
-    return Status::error(option + " \"" + output + "\": cannot write " + (role.empty() ? "the output " : role) + "(it is " +
-                         kind + ", not a file): choose a file name");
+    return Status::error(option + " \"" + output + "\": cannot write " + (role.empty() ? "the output " : role) +
+                         "(it is " + kind + ", not a file): choose a file name");
   for (const Input& in : inputs)
     if (st.st_dev == in.device && st.st_ino == in.inode)
       return Status::error(option + " \"" + output + "\"" + (role.empty() ? " " : ": " + role) + "is the same file as the " +

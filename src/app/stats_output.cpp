@@ -21,7 +21,9 @@ StatsOutput::StatsOutput(std::string path, Simulator& simulator) : path_(std::mo
   simulator.setTiming(true);
 }
 
+// A run that ends without finish() (an exception) keeps its rows, as the ofstream's did.
 StatsOutput::~StatsOutput() {
+  (void)flush();
   if (fd_ >= 0) ::close(fd_);
 }
 
@@ -69,6 +71,7 @@ Status StatsOutput::flush() {
       (void)!::ftruncate(fd_, wholeBytes_);
       ::close(fd_);
       fd_ = -1;
+      pending_.clear();
       return Status::error(path_ + ": cannot write the --stats file (" + std::strerror(error) + ")");
     }
     data += n;

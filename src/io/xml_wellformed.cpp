@@ -78,8 +78,11 @@ class Scan {
       const bool hex = q + 1 < t_.size() && t_[q + 1] == 'x';
       q += hex ? 2 : 1;
       const size_t digits = q;
-      while (q < t_.size() && (hex ? std::isxdigit(static_cast<unsigned char>(t_[q])) : std::isdigit(static_cast<unsigned char>(t_[q]))))
-        ++q;
+      auto digit = [hex](char c) {
+        const auto u = static_cast<unsigned char>(c);
+        return hex ? std::isxdigit(u) != 0 : std::isdigit(u) != 0;
+      };
+      while (q < t_.size() && digit(t_[q])) ++q;
       if (q > digits && q < t_.size() && t_[q] == ';') return true;
       return fail(p, "a malformed character reference " + clip(t_.substr(p, q + 1 - p)) +
                          " (write &#NNN; or &#xHHH;, or &amp; for an '&')");
@@ -90,8 +93,9 @@ class Scan {
       return fail(p, "a bare '&' (write &amp; for an ampersand)");
     for (const char* known : {"lt", "gt", "amp", "apos", "quot"})
       if (name == known) return true;
-    return fail(p, "an undefined entity &" + clip(name) + "; (XML defines &lt; &gt; &amp; &apos; &quot; and FOSSSim reads "
-                   "no others; write &amp;" + clip(name) + "; for the text)");
+    return fail(p, "an undefined entity &" + clip(name) +
+                       "; (XML defines &lt; &gt; &amp; &apos; &quot; and FOSSSim reads no others; write &amp;" +
+                       clip(name) + "; for the text)");
   }
 
   /// An element's tag at p: its attributes' values. Returns where scanning goes on: past the

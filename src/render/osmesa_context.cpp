@@ -38,7 +38,8 @@ constexpr std::size_t kMiB = std::size_t{1} << 20;
 
 /// llvmpipe's rasterizer threads: LP_NUM_THREADS, else one per processor, at most 32.
 std::size_t rasterizerThreads() {
-  if (const char* given = std::getenv("LP_NUM_THREADS")) return static_cast<std::size_t>(std::max(0L, std::atol(given)));
+  if (const char* given = std::getenv("LP_NUM_THREADS"))
+    return static_cast<std::size_t>(std::max(0L, std::atol(given)));
   return static_cast<std::size_t>(std::clamp(sysconf(_SC_NPROCESSORS_ONLN), 1L, 32L));
 }
 
@@ -72,9 +73,11 @@ Status checkMemory(int width, int height) {
       return outOfMemory(width, height, needed, "and the address-space limit (ulimit -v) leaves " +
                                                     std::to_string(room / kMiB) + " MiB");
   }
-  const std::size_t frameBytes = static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * (3 + 4) + 64 * kMiB;
+  const std::size_t frameBytes =
+      static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * (3 + 4) + 64 * kMiB;
   void* volatile probe = std::malloc(frameBytes);  // volatile: the compiler may not drop an unused malloc
-  if (!probe) return outOfMemory(width, height, needed, "and " + std::to_string(frameBytes / kMiB) + " MiB cannot be had");
+  if (!probe)
+    return outOfMemory(width, height, needed, "and " + std::to_string(frameBytes / kMiB) + " MiB cannot be had");
   std::free(probe);
   return Status::ok();
 }

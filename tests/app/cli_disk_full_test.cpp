@@ -26,7 +26,8 @@ class CliDiskFull : public ::testing::Test {
     std::string text = "<scene><duration time=\"" + std::to_string(steps / 100.0) +
                        "\"/><integrator type=\"symplectic-euler\" dt=\"0.01\"/><simplegravity fx=\"0\" fy=\"-1\"/>";
     for (int k = 0; k < particles; ++k)
-      text += "<particle m=\"1\" px=\"" + std::to_string(k) + "\" py=\"0\" vx=\"0.1\" vy=\"0\" fixed=\"0\" radius=\"0.3\"/>";
+      text += "<particle m=\"1\" px=\"" + std::to_string(k) +
+              "\" py=\"0\" vx=\"0.1\" vy=\"0\" fixed=\"0\" radius=\"0.3\"/>";
     std::ofstream(path("scene.xml")) << text << "</scene>\n";
     return path("scene.xml");
   }

@@ -75,12 +75,14 @@ TEST_F(CliFiles, NamedPipesAreRefusedAsOutputs) {
     args.insert(args.end(), extra.begin(), extra.end());
     return args;
   };
-  expectFailure(runFosssim(with({"-o", fifo}), options), {"-o \"" + fifo + "\": cannot write", "named pipe, not a file"});
+  expectFailure(runFosssim(with({"-o", fifo}), options),
+                {"-o \"" + fifo + "\": cannot write", "named pipe, not a file"});
   expectFailure(runFosssim(with({"--stats", fifo}), options), {"--stats \"" + fifo + "\": cannot write", "named pipe"});
   expectFailure(runFosssim(with({"-m", path("svg")}), options),
                 {"-m \"" + path("svg/frame00001.svg") + "\": cannot write the frame file", "named pipe"});
   if (FOSSSIM_WITH_RENDER)
-    expectFailure(runFosssim(with({"--movie", movie}), options), {"--movie \"" + movie + "\": cannot write", "named pipe"});
+    expectFailure(runFosssim(with({"--movie", movie}), options),
+                  {"--movie \"" + movie + "\": cannot write", "named pipe"});
   // Nothing was written next to them, and a character device is still an output.
   EXPECT_FALSE(fs::exists(path("out.partial.fifo")));
   EXPECT_TRUE(exitedWith(runFosssim(with({"-o", "/dev/null", "--stats", "/dev/null"}), options), 0));

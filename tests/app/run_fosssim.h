@@ -86,7 +86,8 @@ inline Outcome runFosssim(const std::vector<std::string>& args, const RunOptions
     const rlimit limit{options.addressSpace, options.addressSpace};
     if (options.addressSpace > 0 && setrlimit(RLIMIT_AS, &limit) != 0) _exit(126);
     const rlimit fileLimit{options.fileSize, options.fileSize};
-    if (options.fileSize > 0 && (signal(SIGXFSZ, SIG_IGN) == SIG_ERR || setrlimit(RLIMIT_FSIZE, &fileLimit) != 0)) _exit(126);
+    if (options.fileSize > 0 && (signal(SIGXFSZ, SIG_IGN) == SIG_ERR || setrlimit(RLIMIT_FSIZE, &fileLimit) != 0))
+      _exit(126);
     if (options.asNobody && (setgroups(0, nullptr) != 0 || setgid(65534) != 0 || setuid(65534) != 0)) _exit(125);
     // The build may live where nobody cannot reach it (a checkout under /root): that is a
     // limit of the test machine: the test skips, saying so.

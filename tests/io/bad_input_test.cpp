@@ -245,7 +245,8 @@ TEST(BadInput, AValueThatIsNoNumberIsOneMessage) {
 // also warned of as "a fixed particle with a velocity", from the placeholders 1; and a velocity
 // that is no number, on a fixed particle, likewise. Only the errors remain.
 TEST(BadInput, PlaceholdersOfMissingValuesDrawNoWarning) {
-  for (const char* particle : {"  <particle m=\"1\"/>", "  <particle m=\"1\" px=\"0\" py=\"0\" vx=\"fast\" vy=\"0\" fixed=\"1\"/>",
+  for (const char* particle : {"  <particle m=\"1\"/>",
+                               "  <particle m=\"1\" px=\"0\" py=\"0\" vx=\"fast\" vy=\"0\" fixed=\"1\"/>",
                                "  <particle m=\"1\" px=\"0\" py=\"0\" fixed=\"1\"/>"}) {
     SCOPED_TRACE(particle);
     SceneFile file;
@@ -270,10 +271,12 @@ TEST(BadInput, InvisibleCharactersInAValueAreNamed) {
 TEST(BadInput, APositiveValueThatUnderflowsIsSaidToRoundToZero) {
   expectError(replaced(4, "  <particle m=\"1e-400\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>"),
               {located(4, "particle", "m") + ": too small: it rounds to 0 (underflows", "got \"1e-400\""});
-  expectError(replaced(3, "  <integrator type=\"explicit-euler\" dt=\"0.5e-9999\"/>"), {located(3, "integrator", "dt"), "rounds to 0"});
+  expectError(replaced(3, "  <integrator type=\"explicit-euler\" dt=\"0.5e-9999\"/>"),
+              {located(3, "integrator", "dt"), "rounds to 0"});
   for (const char* zero : {"0", "0.000e-400", "-0"}) {
     SCOPED_TRACE(zero);
-    const std::string message = loadError(replaced(3, std::string("  <integrator type=\"explicit-euler\" dt=\"") + zero + "\"/>"));
+    const std::string message =
+        loadError(replaced(3, std::string("  <integrator type=\"explicit-euler\" dt=\"") + zero + "\"/>"));
     EXPECT_NE(message.find(located(3, "integrator", "dt") + ": must be > 0"), std::string::npos) << message;
   }
 }

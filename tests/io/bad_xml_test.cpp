@@ -1,6 +1,7 @@
 // Files that are not a scene at all: not XML, truncated at every byte, binary junk, empty, the
-// wrong or no root element, a second root, what tinyxml2 accepts but XML does not. Each must give an error naming the file (and the line
-// where there is one), never a crash or a scene built from half a file.
+// wrong or no root element, a second root, what tinyxml2 accepts but XML does not. Each must give
+// an error naming the file (and the line where there is one), never a crash or a scene built from
+// half a file.
 #include "scene_text.h"
 
 #include <random>
@@ -150,7 +151,8 @@ TEST(BadXml, WhatTinyxml2AcceptsButXmlDoesNotIsRefused) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"  <description text=\"undefined &h; entity\"/>", at + "32: not well-formed XML: an undefined entity &h;"},
       {"  <description text=\"salt & pepper\"/>", at + "27: not well-formed XML: a bare '&' (write &amp;"},
-      {"  <description text=\"a < b\"/>", at + "24: not well-formed XML: a '<' in the value of <description> attribute 'text'"},
+      {"  <description text=\"a < b\"/>",
+       at + "24: not well-formed XML: a '<' in the value of <description> attribute 'text'"},
       {"  <description text=\"&#12a;\"/>", at + "22: not well-formed XML: a malformed character reference"},
       {"  <!-- a comment -->text &nbsp; here", at + "26: not well-formed XML: an undefined entity &nbsp;"},
   };
@@ -159,9 +161,11 @@ TEST(BadXml, WhatTinyxml2AcceptsButXmlDoesNotIsRefused) {
     expectError(extra(element), {fragment});
   }
   const std::string scene = join(baseLines());
-  expectError("<?xml version=\"2.0\"?>\n" + scene, {kFile + ":1: column 7: not well-formed XML: the declaration's version=\"2.0\""});
+  expectError("<?xml version=\"2.0\"?>\n" + scene,
+              {kFile + ":1: column 7: not well-formed XML: the declaration's version=\"2.0\""});
   expectError("<?xml version=\"1.0\" encoding=\"UTF-16\"?>\n" + scene,
-              {kFile + ":1: column 21: not well-formed XML: the declaration's encoding=\"UTF-16\": the loader reads UTF-8 only"});
+              {kFile + ":1: column 21: not well-formed XML: the declaration's encoding=\"UTF-16\": "
+                                                "the loader reads UTF-8 only"});
   // What XML allows stays allowed: its five entities and character references anywhere, '>' in a
   // value, '&' and '<' in comments and CDATA, a declaration of XML 1.x in UTF-8 or US-ASCII.
   EXPECT_EQ(loadError(extra("  <description text=\"&lt;&gt;&amp;&apos;&quot;&#65;&#x42; a > b\"/>")), "");
