@@ -31,11 +31,19 @@ std::vector<Input> inputsOf(const Options& options) {
   return inputs;
 }
 
-/// Follows symbolic links: a link to an input is that input.
+/// Follows symbolic links: a link to an input is that input. Named pipes and sockets are refused:
+/// opening a pipe for writing blocks until a reader opens it, which may never happen (a run hung
+/// in open() before its first step, deaf to SIGTERM), and a socket cannot be opened at all. A
+/// block device is a disk, never a wanted output. Character devices (/dev/null) are written.
 Status checkOne(const std::string& option, const std::string& output, const std::string& role,
                 const std::vector<Input>& inputs) {
   struct stat st {};
   if (stat(output.c_str(), &st) != 0) return Status::ok();  // does not exist (yet): not an input
+  const char* kind = S_ISFIFO(st.st_mode) ? "a named pipe" : S_ISSOCK(st.st_mode) ? "a socket"
+                     : S_ISBLK(st.st_mode) ? "a block device" : nullptr;
+  if (kind)
+    return Status::error(option + " \"" + output + "\": cannot write " + (role.empty() ? "the output " : role) +
+                         "(it is " + kind + ", not a file): choose a file name");
   for (const Input& in : inputs)
     if (st.st_dev == in.device && st.st_ino == in.inode)
       return Status::error(option + " \"" + output + "\"" + (role.empty() ? " " : ": " + role) + "is the same file as the " +

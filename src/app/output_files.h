@@ -11,7 +11,8 @@
 //   user). After an error or a signal the partial file stays, holding whole records (a movie
 //   closed properly), and the final name is untouched: an older file of that name is left as it
 //   was. A process killed outright (SIGKILL, power loss) leaves only the partial file.
-// - Devices and named pipes (-o /dev/null) are written directly: there is nothing to rename.
+// - Character devices (-o /dev/null) are written directly: there is nothing to rename. Named pipes,
+//   sockets and block devices are refused (a pipe without a reader would block the open forever).
 #pragma once
 
 #include "options.h"

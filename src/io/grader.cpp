@@ -339,6 +339,11 @@ GradeReport gradeFile(const Scene& scene, const State& initial, Simulator& simul
   if (!report.structuralError.empty() && report.layout.polynomials && readsAsCompact(path, scene, report.layout)) {
     report.hint = "this file looks written with -o --compact, which leaves out the polynomial log that grading "
                   "compares: write it again without --compact";
+    // Read as full records, its numbers are no states, and stepping from them may fail: "energy
+    // blow-up ... try a smaller dt" would send the user after the scene instead of the file.
+    if (report.structuralError.rfind("the simulation failed:", 0) == 0)
+      report.structuralError = "the file does not read as this scene's full records (read with the polynomial log "
+                               "it lacks, its numbers are no states, and the simulation failed from them)";
     printGrade(report, scene, out, options);
     return report;
   }

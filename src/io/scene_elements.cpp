@@ -95,8 +95,9 @@ void readParticle(ElementReader& r, Builder& b) {
   p.radius = r.number("radius");
   // The course simulator moves a fixed particle at the velocity it starts with; the default
   // mode's continuous-time and hybrid handling refuse one (EventHandler::fixedAtRest), at run
-  // time, where this line is no longer known.
-  if (p.fixed && v != Vec2::Zero())
+  // time, where this line is no longer known. Only of values read: a velocity already reported
+  // (missing, not a number) holds a placeholder, no velocity.
+  if (r.ok() && p.fixed && v != Vec2::Zero())
     b.messages.warn(r.line(), "moving fixed particle", "moving fixed particles",
                     r.where(v.x() != 0.0 ? "vx" : "vy") +
                         ": a fixed particle with a velocity moves at it, as in the course simulator (--compat); "

@@ -11,6 +11,7 @@
 #include "fosssim/io/spelling.h"
 #include "xml_reader.h"
 #include "xml_syntax.h"
+#include "xml_wellformed.h"
 
 #include <cerrno>
 #include <cstring>
@@ -155,6 +156,10 @@ Status parseDocument(const std::string& raw, const std::string& name, SceneFile&
                          (bad.utf8 ? std::string(": a scene file is XML text")
                                    : std::string(": a scene file is UTF-8 text (a file saved as Latin-1 or Windows-1252 "
                                                  "has such bytes for accented letters; save it as UTF-8)")));
+  // What tinyxml2 lets through although XML does not (xml_wellformed.h): "&h;" kept as text.
+  if (io::MarkupFault fault; io::findMarkupFault(raw, fault))
+    return Status::error(messages.at(io::lineOf(raw, fault.offset)) + "column " +
+                         std::to_string(io::columnOf(raw, fault.offset)) + ": not well-formed XML: " + fault.what);
   const std::string text = io::normalizeLineEnds(raw);
   // Before tinyxml2, whose check for repeated attributes makes a flood of them on one element
   // take minutes (xml_syntax.h).

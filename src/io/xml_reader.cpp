@@ -5,22 +5,65 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
+#include <utility>
 
 namespace fosssim::io {
 namespace {
 
 bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
 
+/// Characters that look like a space or like nothing in a terminal, named: "1" followed by a
+/// no-break space was shown as "1 ", which reads as a number with a space the reader allows.
+const std::pair<const char*, const char*> kInvisible[] = {
+    {"\xC2\xA0", "U+00A0 no-break space"},      {"\xE2\x80\xAF", "U+202F narrow no-break space"},
+    {"\xE2\x80\x8B", "U+200B zero-width space"}, {"\xEF\xBB\xBF", "U+FEFF zero-width no-break space"},
+    {"\xE2\x80\x89", "U+2009 thin space"},       {"\xE3\x80\x80", "U+3000 ideographic space"}};
+
 std::string quoted(const char* value) {
   std::string s(value);
   if (s.size() > 40) s = s.substr(0, 37) + "...";
-  return "\"" + s + "\"";
+  std::string shown;
+  for (std::size_t k = 0; k < s.size();) {
+    bool named = false;
+    for (const auto& [bytes, name] : kInvisible)
+      if (s.compare(k, std::strlen(bytes), bytes) == 0) {
+        shown += std::string("<") + name + ">";
+        k += std::strlen(bytes);
+        named = true;
+        break;
+      }
+    if (named) continue;
+    const unsigned char c = static_cast<unsigned char>(s[k++]);
+    if (c < 0x20 || c == 0x7F) {  // a control character (a tab or a line break inside the value)
+      char code[16];
+      std::snprintf(code, sizeof code, "<U+%04X>", c);
+      shown += code;
+    } else {
+      shown += static_cast<char>(c);
+    }
+  }
+  return "\"" + shown + "\"";
+}
+
+/// True when the number `text` (read by strtod as 0) is written with a digit other than 0 in its
+/// significand: "1e-400" underflowed, "0.0e5" is zero.
+bool underflowed(const char* text) {
+  for (const char* p = text; *p && *p != 'e' && *p != 'E'; ++p)
+    if (*p >= '1' && *p <= '9') return true;
+  return false;
 }
 
 bool numeric(Kind kind) { return kind != Kind::Text; }
+
+/// The value of an attribute already reported (unreadable or missing): one that upsets no later
+/// check, as after the range checks below. An index of -1 is one already reported (the element's
+/// and the assembly's checks skip it; 1 made <edge i="O" j="1"/> "i = j = 1"), a flag 0 (1 made
+/// <particle m="1"/>, fixed and velocity missing, warn of a moving fixed particle).
+double placeholder(Kind kind) { return kind == Kind::Index ? -1.0 : kind == Kind::Flag ? 0.0 : 1.0; }
 
 }  // namespace
 
@@ -102,13 +145,13 @@ bool ElementReader::parseNumber(const tinyxml2::XMLAttribute& attribute, double&
 
 double ElementReader::checked(const AttributeSpec& spec, const tinyxml2::XMLAttribute& attribute) {
   double value = 0;
-  // A placeholder that upsets no later check, as after the range checks below: an index of -1 is
-  // one already reported (the element's and the assembly's checks skip it; 1 made
-  // <edge i="O" j="1"/> "i = j = 1"), a flag 0 (1 warned of a moving fixed particle).
-  if (!parseNumber(attribute, value)) return spec.kind == Kind::Index ? -1.0 : spec.kind == Kind::Flag ? 0.0 : 1.0;
+  if (!parseNumber(attribute, value)) return placeholder(spec.kind);
   const std::string got = ", got " + quoted(attribute.Value());
   switch (spec.kind) {
     case Kind::Positive:
+      // "1e-400" is positive as written but reads as 0: "must be > 0" would contradict the file.
+      if (value == 0 && underflowed(attribute.Value()))
+        return fail(spec.name, "too small: it rounds to 0 (underflows; at least about 5.6e-309)" + got), 1.0;
       if (!(value > 0)) return fail(spec.name, "must be > 0" + got), 1.0;
       // Masses, time steps, radii and sizes are divided by: a subnormal such as 1e-320 is > 0,
       // yet its reciprocal is infinite.
@@ -150,7 +193,7 @@ double ElementReader::number(const char* attributeName) {
                            "' has a computed default: the reader must give it");
   const tinyxml2::XMLAttribute* a = find(attributeName);
   if (a) return checked(spec, *a);
-  return spec.fallback ? std::strtod(spec.fallback, nullptr) : (spec.kind == Kind::Index ? -1.0 : 1.0);
+  return spec.fallback ? std::strtod(spec.fallback, nullptr) : placeholder(spec.kind);
 }
 
 double ElementReader::number(const char* attributeName, double computedDefault) {

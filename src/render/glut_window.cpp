@@ -201,7 +201,10 @@ class Window {
       anchor_ = now;
       anchorSteps_ = 0;
     }
-    const long n = std::max(0L, static_cast<long>(due));
+    // Compared in double: at <maxsimfreq max="1e30"/> `due` is beyond any long, and converting it
+    // is undefined (it came out negative, and the window never stepped). The steps left bound it.
+    const double left = static_cast<double>(settings_.totalSteps - stepsTaken_);
+    const long n = due >= left ? settings_.totalSteps - stepsTaken_ : due > 0 ? static_cast<long>(due) : 0L;
     const auto begin = Clock::now();
     long done = 0;
     while (done < n && !finished() && seconds(Clock::now() - begin) < kMaxStepTimePerTick)

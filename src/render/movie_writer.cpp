@@ -105,7 +105,9 @@ Status MovieWriter::open(const std::string& path, int width, int height, double 
   const std::string size = std::to_string(width) + "x" + std::to_string(height);
   char rate[32];
   std::snprintf(rate, sizeof rate, "%g", fps);
-  std::vector<std::string> args = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-nostdin", "-y",
+  // -xerror: without it ffmpeg exits 0 after "Error writing trailer" (a full disk as the movie
+  // ends), leaving an unplayable file that the run would have renamed to the final name.
+  std::vector<std::string> args = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-nostdin", "-xerror", "-y",
                                    "-f", "rawvideo", "-pixel_format", "rgb24", "-video_size", size,
                                    "-framerate", rate, "-i", "pipe:0", "-an"};
   if (endsWith(path, ".mp4") || endsWith(path, ".mov") || endsWith(path, ".mkv")) {

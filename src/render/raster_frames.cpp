@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace fosssim::render {
 
@@ -62,9 +63,19 @@ MovieTiming movieTiming(double requestedFps, double dt, int frameEvery) {
     return t;
   }
   // The smallest k with rate / k <= the cap (a hair of slack: 1 / (0.01 * 1) is not exactly 100).
-  t.every = std::max(1L, static_cast<long>(std::ceil(rate / kMaxRealTimeFps * (1 - 1e-12))));
-  t.fps = rate / static_cast<double>(t.every);
+  const double every = std::ceil(rate / kMaxRealTimeFps * (1 - 1e-12));
   t.speed = 1;
+  // Beyond 1e18 steps a frame (dt = 1e-30: 1.7e28), converting to long was undefined: it came out
+  // as 1, and ffmpeg was asked for 1e+30 fps and refused. No run takes that many steps, so the
+  // movie is its first frame alone, at the cap's rate; `every` times frameEvery still fits a long.
+  const long sequenceEvery = std::max(frameEvery, 1);
+  if (!(every * static_cast<double>(sequenceEvery) < 1e18)) {
+    t.every = std::numeric_limits<long>::max() / sequenceEvery;
+    t.fps = kMaxRealTimeFps;
+    return t;
+  }
+  t.every = std::max(1L, static_cast<long>(every));
+  t.fps = rate / static_cast<double>(t.every);
   return t;
 }
 

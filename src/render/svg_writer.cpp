@@ -196,7 +196,13 @@ Status writeSvg(const std::string& path, const Picture& picture) {
   if (!f) return Status::error("cannot write SVG file \"" + path + "\": " + std::strerror(errno));
   const bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size();
   const bool closed = std::fclose(f) == 0;
-  if (!written || !closed) return Status::error("cannot write SVG file \"" + path + "\": " + std::strerror(errno));
+  if (!written || !closed) {
+    // A frame cut short (a full disk) is no picture and would pass for one among whole frames
+    // (-m said "frames 1 to 16" next to an empty frame 17): it is removed.
+    const int error = errno;
+    std::remove(path.c_str());
+    return Status::error("cannot write SVG file \"" + path + "\": " + std::strerror(error));
+  }
   return Status::ok();
 }
 

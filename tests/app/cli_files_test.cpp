@@ -1,6 +1,7 @@
 // Files the command line cannot use: unreadable scene paths (missing, a directory, a named pipe,
-// no read permission, an endless device), -o where nothing can be written, -i with a file that does not
-// fit the scene. Each gives exit 1 and a message naming the path, never a crash or a hang.
+// no read permission, an endless device), outputs that are named pipes, -o where nothing can be
+// written, -i with a file that does not fit the scene. Each gives exit 1 and a message naming the
+// path, never a crash or a hang.
 #include "run_fosssim.h"
 
 #include <sys/stat.h>
@@ -55,6 +56,36 @@ TEST_F(CliFiles, NamedPipesAreRefusedNotWaitedOn) {
   expectFailure(runFosssim({"-s", fifo, "-d", "0"}, options), {fifo + ": cannot read the scene file", "named pipe"});
   expectFailure(runFosssim({"-s", scene("a.xml", 1), "-d", "0", "-q", "-i", fifo}, options),
                 {fifo + ": cannot read the trajectory file", "named pipe"});
+}
+
+// Opening a named pipe for writing blocks until someone reads it: every output refuses one before
+// the open, naming the option and the path, instead of hanging (deaf to the first SIGTERM).
+TEST_F(CliFiles, NamedPipesAreRefusedAsOutputs) {
+  const std::string s = scene("s.xml", 1);
+  const std::string fifo = path("out.fifo"), movie = path("m.mkv");
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  ASSERT_EQ(mkfifo(movie.c_str(), 0600), 0);
+  fs::create_directories(path("svg"));
+  ASSERT_EQ(mkfifo(path("svg/frame00001.svg").c_str(), 0600), 0);
+  RunOptions options;
+  options.timeoutSeconds = 20;
+  const std::vector<std::string> run = {"-s", s, "-d", "0", "-q"};
+  auto with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = run;
+    args.insert(args.end(), extra.begin(), extra.end());
+    return args;
+  };
+  expectFailure(runFosssim(with({"-o", fifo}), options),
+                {"-o \"" + fifo + "\": cannot write", "named pipe, not a file"});
+  expectFailure(runFosssim(with({"--stats", fifo}), options), {"--stats \"" + fifo + "\": cannot write", "named pipe"});
+  expectFailure(runFosssim(with({"-m", path("svg")}), options),
+                {"-m \"" + path("svg/frame00001.svg") + "\": cannot write the frame file", "named pipe"});
+  if (FOSSSIM_WITH_RENDER)
+    expectFailure(runFosssim(with({"--movie", movie}), options),
+                  {"--movie \"" + movie + "\": cannot write", "named pipe"});
+  // Nothing was written next to them, and a character device is still an output.
+  EXPECT_FALSE(fs::exists(path("out.partial.fifo")));
+  EXPECT_TRUE(exitedWith(runFosssim(with({"-o", "/dev/null", "--stats", "/dev/null"}), options), 0));
 }
 
 TEST_F(CliFiles, SceneWithoutReadPermission) {

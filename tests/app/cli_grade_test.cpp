@@ -241,6 +241,20 @@ TEST_F(CliGrade, ACompactFileGetsAHint) {
   EXPECT_FALSE(contains(cut.out, "Hint:")) << cut;
 }
 
+// Read as full records, a compact file's numbers are no states: stepping from them failed with an
+// "energy blow-up ... try a smaller time step" line before the hint, sending the user after the
+// scene instead of the file (seesaw.xml's compact file). The hint alone says what to do.
+TEST_F(CliGrade, ACompactFileIsNotBlamedOnTheScene) {
+  const std::string seesaw = std::string(FOSSSIM_SOURCE_DIR) + "/assets/t2m2/HolisticTests/seesaw.xml";
+  ASSERT_TRUE(exitedWith(runFosssim({"-s", seesaw, "-d", "0", "-q", "-o", path("c.bin"), "--compact"}), 0));
+  const Outcome o = grade(seesaw, path("c.bin"));
+  expectFailedGrade(o, "Failed: ");
+  EXPECT_TRUE(contains(o.out, "Hint: this file looks written with -o --compact")) << o;
+  EXPECT_TRUE(contains(o.out, "the file does not read as this scene's full records")) << o;
+  EXPECT_FALSE(contains(o.out, "energy blow-up")) << o;
+  EXPECT_FALSE(contains(o.out, "smaller time step")) << o;
+}
+
 // A device has no size to read records against: /dev/zero was graded as an empty file.
 TEST_F(CliGrade, ADeviceIsNotATrajectoryFile) {
   const Outcome o = grade(row("s.xml", 2), "/dev/zero");

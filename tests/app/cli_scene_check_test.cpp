@@ -255,5 +255,27 @@ TEST(CliSceneCheck, AnAllocationFailureIsAClearErrorWithExitOne) {
   EXPECT_TRUE(contains(err, "FOSSSim: error: out of memory")) << err;
 }
 
+// OSMesa crashed (SIGSEGV, exit 139) when one of its allocations failed: at some limits between
+// 650 and 750 MB with 8000x8000 frames, inside OSMesaCreateContextExt. What it will need is now
+// checked first (osmesa_context.cpp): at every limit the run ends with exit 0 or 1, never a signal.
+TEST(CliSceneCheck, FramesTooLargeForTheMemoryAreAClearError) {
+  if (kSanitized) GTEST_SKIP() << "sanitizers reserve terabytes of address space: no limit can be set";
+  if (!FOSSSIM_WITH_RENDER) GTEST_SKIP() << "this build has no renderer (-g)";
+  const TempScene scene("<scene><duration time=\"0.01\"/><integrator type=\"explicit-euler\" dt=\"0.01\"/>"
+                        "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/></scene>\n");
+  constexpr rlim_t kMiB = 1 << 20;
+  const std::string pngs = fs::temp_directory_path() / ("fosssim-check-mem-png-" + std::to_string(getpid()));
+  bool refused = false;
+  for (rlim_t limit = 600 * kMiB; limit <= 1200 * kMiB; limit += 25 * kMiB) {
+    SCOPED_TRACE(std::to_string(limit / kMiB) + " MiB");
+    const auto [code, err] = runWithMemoryLimit(
+        {"-s", scene.path, "-d", "0", "-q", "-g", "1", "--png-dir", pngs, "--frame-size", "8000x8000"}, limit);
+    EXPECT_TRUE(code == 0 || code == 1) << "exit " << code << "\n" << err;
+    if (code == 1 && contains(err, "FOSSSim: error: -g: out of memory for 8000x8000 frames")) refused = true;
+  }
+  fs::remove_all(pngs);
+  EXPECT_TRUE(refused) << "no limit up to 1200 MiB refused 8000x8000 frames";
+}
+
 }  // namespace
 }  // namespace fosssim::testing

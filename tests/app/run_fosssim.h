@@ -42,6 +42,9 @@ struct RunOptions {
   int timeoutSeconds = 120;
   bool asNobody = false;  ///< drop root privileges to uid/gid 65534 before running
   rlim_t addressSpace = 0;  ///< > 0: limit the child's address space to this many bytes (RLIMIT_AS)
+  /// > 0: files the child writes end at this many bytes (RLIMIT_FSIZE, SIGXFSZ ignored): a write
+  /// past it fails with EFBIG, as one fails with ENOSPC on a full disk, without mounting one.
+  rlim_t fileSize = 0;
 };
 
 inline std::string slurp(const std::string& path) {
@@ -82,6 +85,9 @@ inline Outcome runFosssim(const std::vector<std::string>& args, const RunOptions
     if (in < 0 || out < 0 || err < 0 || dup2(in, 0) < 0 || dup2(out, 1) < 0 || dup2(err, 2) < 0) _exit(126);
     const rlimit limit{options.addressSpace, options.addressSpace};
     if (options.addressSpace > 0 && setrlimit(RLIMIT_AS, &limit) != 0) _exit(126);
+    const rlimit fileLimit{options.fileSize, options.fileSize};
+    if (options.fileSize > 0 && (signal(SIGXFSZ, SIG_IGN) == SIG_ERR || setrlimit(RLIMIT_FSIZE, &fileLimit) != 0))
+      _exit(126);
     if (options.asNobody && (setgroups(0, nullptr) != 0 || setgid(65534) != 0 || setuid(65534) != 0)) _exit(125);
     // The build may live where nobody cannot reach it (a checkout under /root): that is a
     // limit of the test machine: the test skips, saying so.

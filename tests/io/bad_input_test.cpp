@@ -123,7 +123,7 @@ TEST(BadInput, ValuesOutOfRangeAreRejected) {
   const std::vector<RangeCase> cases = {
       {"particle", "m", "  <particle m=\"0\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>", 4, "> 0"},
       {"particle", "m", "  <particle m=\"-1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>", 4, "> 0"},
-      {"particle", "m", "  <particle m=\"1e-400\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>", 4, "> 0"},
+      {"particle", "m", "  <particle m=\"1e-400\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>", 4, "rounds to 0"},
       // Subnormal: > 0, but 1/m is infinite.
       {"particle", "m", "  <particle m=\"1e-320\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>", 4,
        "1/m is not finite"},
@@ -238,6 +238,46 @@ TEST(BadInput, AValueThatIsNoNumberIsOneMessage) {
     EXPECT_EQ(file.messages[0].text.rfind(located(c.line ? c.line : kExtraLine, c.element, c.attribute) +
                                           ": expected a number", 0), 0u)
         << file.messages[0].text;
+  }
+}
+
+// Missing attributes read as placeholders: <particle m="1"/> (fixed and the velocity missing) was
+// also warned of as "a fixed particle with a velocity", from the placeholders 1; and a velocity
+// that is no number, on a fixed particle, likewise. Only the errors remain.
+TEST(BadInput, PlaceholdersOfMissingValuesDrawNoWarning) {
+  for (const char* particle : {"  <particle m=\"1\"/>",
+                               "  <particle m=\"1\" px=\"0\" py=\"0\" vx=\"fast\" vy=\"0\" fixed=\"1\"/>",
+                               "  <particle m=\"1\" px=\"0\" py=\"0\" fixed=\"1\"/>"}) {
+    SCOPED_TRACE(particle);
+    SceneFile file;
+    const Status s = parseScene(replaced(4, particle), kFile, file);
+    ASSERT_FALSE(s.isOk());
+    EXPECT_EQ(file.warningCount, 0) << s.message();
+    EXPECT_EQ(s.message().find("moves at it"), std::string::npos) << s.message();
+  }
+}
+
+// What messages quote is shown as it is, invisible characters named: a no-break space after a
+// number was shown as "1 ", which reads as a number with a space that the reader allows.
+TEST(BadInput, InvisibleCharactersInAValueAreNamed) {
+  expectError(replaced(4, "  <particle m=\"1\xC2\xA0\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>"),
+              {located(4, "particle", "m") + ": expected a number, got \"1<U+00A0 no-break space>\""});
+  expectError(replaced(4, "  <particle m=\"\xE2\x80\x8B" "2\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>"),
+              {"got \"<U+200B zero-width space>2\""});
+}
+
+// A positive value written so small that it reads as 0 was "must be > 0", which the file
+// contradicts: it says the value underflows. A zero written as zero is still "must be > 0".
+TEST(BadInput, APositiveValueThatUnderflowsIsSaidToRoundToZero) {
+  expectError(replaced(4, "  <particle m=\"1e-400\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>"),
+              {located(4, "particle", "m") + ": too small: it rounds to 0 (underflows", "got \"1e-400\""});
+  expectError(replaced(3, "  <integrator type=\"explicit-euler\" dt=\"0.5e-9999\"/>"),
+              {located(3, "integrator", "dt"), "rounds to 0"});
+  for (const char* zero : {"0", "0.000e-400", "-0"}) {
+    SCOPED_TRACE(zero);
+    const std::string message =
+        loadError(replaced(3, std::string("  <integrator type=\"explicit-euler\" dt=\"") + zero + "\"/>"));
+    EXPECT_NE(message.find(located(3, "integrator", "dt") + ": must be > 0"), std::string::npos) << message;
   }
 }
 

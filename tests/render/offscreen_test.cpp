@@ -7,6 +7,7 @@
 #include "fosssim/render/raster_frames.h"
 
 #include <cstdlib>
+#include <limits>
 
 namespace fosssim::render {
 namespace {
@@ -202,6 +203,13 @@ TEST(MovieTiming, DefaultsToRealTimeCappedNearSixtyFrames) {
     EXPECT_GT(t.fps, kMaxRealTimeFps / 2) << dt << ": no more frames left out than needed";
   }
   EXPECT_EQ(movieTiming(0, 1e-5, 1).every, 1667);  // 100,000 frames a second would be no movie
+  for (double dt : {1e-20, 1e-30, 1e-300, 5e-324}) {  // more steps a frame than any run takes: the first frame alone
+    const MovieTiming t = movieTiming(0, dt, 1);
+    EXPECT_EQ(t.every, std::numeric_limits<long>::max()) << dt;
+    EXPECT_DOUBLE_EQ(t.fps, kMaxRealTimeFps) << dt << ": not 1e+30 fps, which ffmpeg refuses";
+  }
+  // With --frame-every, the steps between movie frames (every x K) still fit a long.
+  EXPECT_EQ(movieTiming(0, 1e-30, 1000).every, std::numeric_limits<long>::max() / 1000);
   const MovieTiming slow = movieTiming(0, 10, 1);  // one frame per 10 s of the scene
   EXPECT_FALSE(slow.realTime);
   EXPECT_DOUBLE_EQ(slow.fps, kMinRealTimeFps);

@@ -2,7 +2,7 @@
 // photographed with xwd. Skipped (saying why) where Xvfb, xdotool or xwd are not installed.
 // Covered: stepping, zoom, pictures and -o/-g from the window; closing at the scene's end (and
 // --keep-open), a failed step shown and reported, the status line over a black floor, and the
-// keys i (SVG), p (PNG), h (help) and r (restart).
+// keys i (SVG), p (PNG), h (help) and r (restart); a <maxsimfreq> beyond any step count.
 #include "window_driver.h"
 
 namespace fosssim::testing {
@@ -118,6 +118,19 @@ TEST(Window, ClosesAtTheEndOfTheSceneAsTheCoursesDid) {
   ASSERT_GT(w.app.pid, 0);
   EXPECT_EQ(w.app.wait(20), 0) << w.output();
   EXPECT_TRUE(std::filesystem::exists(tmp / "pngs/frame00010.png"));
+}
+
+// A speed limit beyond any step count (the steps due overflowed a long, and the window never
+// stepped): the run goes as fast as it can and ends.
+TEST(Window, AHugeMaxSimFreqRunsAtFullSpeed) {
+  NEED_DISPLAY();
+  TempDir tmp;
+  std::string scene = kShortScene;
+  scene.insert(scene.find("</scene>"), "  <maxsimfreq max=\"1e30\"/>\n");
+  writeText(tmp / "fast.xml", scene);
+  WindowRun w(shared.name, tmp.path, {"-s", "fast.xml", "-d", "1", "-p", "0"});
+  ASSERT_GT(w.app.pid, 0);
+  EXPECT_EQ(w.app.wait(20), 0) << w.output();
 }
 
 TEST(Window, KeepOpenStaysAfterTheEndUntilQuit) {

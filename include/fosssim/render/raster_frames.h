@@ -36,7 +36,8 @@ struct MovieTiming {
 /// `requestedFps` > 0 (--fps): that rate with every frame, at whatever speed that gives. 0: real
 /// time, fps = 1 / (dt * frameEvery), except that above kMaxRealTimeFps only every k-th frame is
 /// kept (the smallest k that brings the rate down to it), which stays real time, and below
-/// kMinRealTimeFps the movie plays at that rate, faster than real time.
+/// kMinRealTimeFps the movie plays at that rate, faster than real time. Past 1e18 steps a frame
+/// (dt = 1e-30) the movie is the first frame alone at kMaxRealTimeFps.
 MovieTiming movieTiming(double requestedFps, double dt, int frameEvery);
 
 class RasterFrames final : public PictureSink {
