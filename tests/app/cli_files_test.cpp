@@ -4,7 +4,13 @@
 // path, never a crash or a hang.
 #include "run_fosssim.h"
 
+#include <chrono>
+#include <fcntl.h>
+#include <fstream>
+#include <iterator>
 #include <sys/stat.h>
+#include <thread>
+#include <unistd.h>
 
 namespace fosssim::testing {
 namespace {
@@ -76,7 +82,7 @@ TEST_F(CliFiles, NamedPipesAreRefusedAsOutputs) {
     return args;
   };
   expectFailure(runFosssim(with({"-o", fifo}), options),
-                {"-o \"" + fifo + "\": cannot write", "named pipe, not a file"});
+                {"-o \"" + fifo + "\": cannot write", "named pipe that nothing reads, not a file"});
   expectFailure(runFosssim(with({"--stats", fifo}), options), {"--stats \"" + fifo + "\": cannot write", "named pipe"});
   expectFailure(runFosssim(with({"-m", path("svg")}), options),
                 {"-m \"" + path("svg/frame00001.svg") + "\": cannot write the frame file", "named pipe"});
@@ -86,6 +92,42 @@ TEST_F(CliFiles, NamedPipesAreRefusedAsOutputs) {
   // Nothing was written next to them, and a character device is still an output.
   EXPECT_FALSE(fs::exists(path("out.partial.fifo")));
   EXPECT_TRUE(exitedWith(runFosssim(with({"-o", "/dev/null", "--stats", "/dev/null"}), options), 0));
+}
+
+// A pipe that a process reads is an output as a character device is: -o /dev/stdout piped into
+// gzip, or -o >(gzip > t.gz). The probe that tells it from a pipe nobody reads must stay open
+// (closed, it was the pipe's last writer and the reader saw the end of its input).
+TEST_F(CliFiles, APipeThatIsReadIsAnOutput) {
+  const std::string s = scene("s.xml", 2), fifo = path("read.fifo");
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  const int reader = open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
+  ASSERT_GE(reader, 0);
+  ASSERT_EQ(fcntl(reader, F_SETFL, 0), 0);  // blocking reads from here on
+  std::string received;
+  std::thread drain([&] {
+    // A pipe without a writer reads as ended: until FOSSSim has written, that is not the end.
+    char buffer[4096];
+    for (int idle = 0; idle < 2000;) {
+      const ssize_t n = read(reader, buffer, sizeof buffer);
+      if (n > 0) received.append(buffer, static_cast<size_t>(n));
+      else if (n == 0 && !received.empty()) break;
+      else if (n == 0 || errno == EINTR || errno == EAGAIN) ++idle, std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      else break;
+    }
+  });
+  RunOptions options;
+  options.timeoutSeconds = 20;
+  const Outcome o = runFosssim({"-s", s, "-d", "0", "-q", "-o", fifo}, options);
+  drain.join();
+  close(reader);
+  EXPECT_TRUE(exitedWith(o, 0)) << o.err;
+  // The same records as a file gets.
+  const std::string file = path("t.bin");
+  ASSERT_TRUE(exitedWith(runFosssim({"-s", s, "-d", "0", "-q", "-o", file}, options), 0));
+  std::ifstream in(file, std::ios::binary);
+  const std::string written((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_FALSE(written.empty());
+  EXPECT_EQ(received, written);
 }
 
 TEST_F(CliFiles, SceneWithoutReadPermission) {
