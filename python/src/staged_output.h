@@ -1,5 +1,5 @@
 // The module's output files, written as the command line writes -o and --movie
-// (src/app/output_files.h): under a partial name next to the final one ("out.bin" as
+// (io::StagedFile, include/fosssim/io/staged_file.h): under a partial name next to the final one ("out.bin" as
 // "out.partial.bin", "run.mp4" as "run.partial.mp4": ffmpeg picks the format by the ending) and
 // renamed over the final name only when complete. A write that fails leaves the final name as it
 // was (an older file of that name is not cut or removed) and the exception says where the data so
@@ -9,6 +9,8 @@
 
 #include "errors.h"
 
+#include "fosssim/io/staged_file.h"
+
 #include <string>
 
 namespace fosssim::py {
@@ -16,9 +18,6 @@ namespace fosssim::py {
 /// Raises ValueError("<what>: embedded null byte", as Python's open()) when `path` holds a NUL: the C
 /// library would stop at it and read or write a file of another name.
 void checkPath(const std::string& path, const char* what);
-
-/// "dir/out.bin" -> "dir/out.partial.bin"; "traj" -> "traj.partial" (the command line's names).
-std::string partialName(const std::string& path);
 
 class StagedOutput {
  public:
@@ -28,18 +27,18 @@ class StagedOutput {
   StagedOutput(const std::string& finalPath, const char* what, const std::string& input = "");
 
   /// Where to write now: the partial name, or the final one for a device or a named pipe.
-  const std::string& writePath() const { return writePath_; }
-  const std::string& finalPath() const { return finalPath_; }
-  bool staged() const { return writePath_ != renameTo_; }
+  const std::string& writePath() const { return file_.writePath(); }
+  const std::string& finalPath() const { return file_.finalPath(); }
+  bool staged() const { return file_.staged(); }
 
   /// The output is complete: the partial file takes the final name (and the old file's
   /// permissions). Throws FileError naming both when the rename fails.
   void commit();
   /// For the message of a write that did not complete: where its data is, and that the final name
   /// was left as it was.
-  std::string whereIncomplete() const;
+  std::string whereIncomplete() const { return file_.whereIncomplete(); }
   /// Removes the partial file (for outputs whose partial file holds nothing useful, a PNG).
-  void discard();
+  void discard() { file_.discard(); }
 
   /// Runs `body` (the writing); a FileError or SimulationError it throws is raised again, same
   /// type, saying where `data` ("the trajectory so far") is: the partial file, kept.
@@ -55,9 +54,7 @@ class StagedOutput {
   }
 
  private:
-  std::string finalPath_;  ///< as the caller gave it
-  std::string renameTo_;   ///< the final path, a symbolic link resolved (the link keeps pointing at it)
-  std::string writePath_;
+  io::StagedFile file_;
 };
 
 }  // namespace fosssim::py

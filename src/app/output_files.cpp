@@ -95,23 +95,6 @@ Status checkFrames(const std::string& option, const std::string& dir, const std:
   return result;
 }
 
-/// Where a staged output goes: `renameTo` the final name, a symbolic link resolved (the link
-/// keeps pointing at it), and the returned name to write while the run lasts, the partial name
-/// next to it, or the final name itself for a device or a named pipe (nothing to rename).
-std::string stagedPaths(const std::string& finalPath, std::string& renameTo) {
-  renameTo = finalPath;
-  struct stat st {};
-  // A folder is refused by whoever opens it.
-  if (stat(finalPath.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) return finalPath;
-  struct stat link {};
-  if (lstat(finalPath.c_str(), &link) == 0 && S_ISLNK(link.st_mode)) {
-    std::error_code ec;
-    const fs::path target = fs::canonical(finalPath, ec);  // fails for a dangling link: then the link is replaced
-    if (!ec) renameTo = target.string();
-  }
-  return partialName(renameTo);
-}
-
 /// A file the run writes: -o and --movie under their final and partial names, --stats.
 struct Written {
   std::string option, path;
@@ -124,7 +107,7 @@ std::vector<Written> writtenFiles(const Options& options) {
     if (path.empty()) continue;
     files.push_back({option, path, false});
     std::string renameTo;
-    if (const std::string writePath = stagedPaths(path, renameTo); writePath != renameTo)
+    if (const std::string writePath = io::stagedPaths(path, renameTo); writePath != renameTo)
       files.push_back({option, writePath, true});
   }
   if (!options.stats.empty()) files.push_back({"--stats", options.stats, false});
@@ -198,19 +181,13 @@ Status checkOutputsAgainstEachOther(const Options& options) {
 
 }  // namespace
 
-std::string partialName(const std::string& path) {
-  const fs::path p(path);
-  const std::string stem = p.stem().string(), ending = p.extension().string();
-  return fs::path(p).replace_filename(stem + ".partial" + ending).string();
-}
-
 Status checkOutputsAgainstInputs(const Options& options) {
   const std::vector<Input> inputs = inputsOf(options);
   for (const auto& [option, path] : {std::pair<std::string, std::string>{"-o", options.output}, {"--movie", options.movie}}) {
     if (path.empty()) continue;
     if (Status s = checkOne(option, path, "", inputs); !s) return s;
     std::string renameTo;
-    const std::string writePath = stagedPaths(path, renameTo);
+    const std::string writePath = io::stagedPaths(path, renameTo);
     if (writePath != renameTo)
       if (Status s = checkOne(option, writePath, "its partial file \"" + writePath + "\" ", inputs); !s) return s;
   }
@@ -280,42 +257,6 @@ Status checkGradedFile(const Options& options) {
     return Status::error("-i \"" + options.input + "\" is the scene file given to -s (\"" + options.scene +
                          "\"): -i grades a trajectory file written with -o, not the scene");
   return Status::ok();
-}
-
-Status StagedFile::prepare(const std::string& finalPath, const std::string& what, StagedFile& out) {
-  out.finalPath_ = finalPath;
-  out.writePath_ = stagedPaths(finalPath, out.renameTo_);
-  if (!out.staged()) return Status::ok();
-  struct stat link {};
-  // The partial name is ours: an old partial file (or a link there) goes, so that nothing is
-  // written through it. checkOutputsAgainstInputs made sure it is no input.
-  if (lstat(out.writePath_.c_str(), &link) == 0 && !S_ISDIR(link.st_mode) && std::remove(out.writePath_.c_str()) != 0)
-    return Status::error(what + " \"" + finalPath + "\": cannot remove the old partial file \"" + out.writePath_ +
-                         "\" (" + std::strerror(errno) + ")");
-  return Status::ok();
-}
-
-Status StagedFile::commit() {
-  if (!staged()) return Status::ok();
-  struct stat old {};
-  if (stat(renameTo_.c_str(), &old) == 0 && S_ISREG(old.st_mode)) (void)chmod(writePath_.c_str(), old.st_mode & 07777);
-  if (std::rename(writePath_.c_str(), renameTo_.c_str()) != 0)
-    return Status::error("\"" + finalPath_ + "\": cannot rename \"" + writePath_ + "\" to it (" + std::strerror(errno) +
-                         "); the complete data is in \"" + writePath_ + "\"");
-  return Status::ok();
-}
-
-bool StagedFile::made() const {
-  struct stat st {};
-  return stat(writePath_.c_str(), &st) == 0;
-}
-
-std::string StagedFile::whereIncomplete() const {
-  if (!staged()) return "\"" + finalPath_ + "\"";
-  struct stat st {};
-  const bool older = stat(renameTo_.c_str(), &st) == 0;
-  return "\"" + writePath_ + "\" (\"" + finalPath_ + "\" was not written" +
-         (older ? "; the older file of that name is as it was)" : ")");
 }
 
 }  // namespace fosssim::app

@@ -10,7 +10,8 @@
 //   and renamed to the final name when the run completes (all steps, or the window closed by the
 //   user). After an error or a signal the partial file stays, holding whole records (a movie
 //   closed properly), and the final name is untouched: an older file of that name is left as it
-//   was. A process killed outright (SIGKILL, power loss) leaves only the partial file.
+//   was. A process killed outright (SIGKILL, power loss) leaves only the partial file
+//   (io::StagedFile, which the Python module's writers share).
 // - Character devices (-o /dev/null) are written directly: there is nothing to rename. Named pipes,
 //   sockets and block devices are refused (a pipe without a reader would block the open forever).
 #pragma once
@@ -18,14 +19,12 @@
 #include "options.h"
 
 #include "fosssim/core/status.h"
+#include "fosssim/io/staged_file.h"
 
 #include <string>
 #include <vector>
 
 namespace fosssim::app {
-
-/// "dir/out.bin" -> "dir/out.partial.bin"; "traj" -> "traj.partial".
-std::string partialName(const std::string& path);
 
 /// Fails (naming both) when an output of `options` is the same file as one of its inputs, or two
 /// outputs would write one file (a final or partial name of -o or --movie, --stats, a frame).
@@ -42,30 +41,5 @@ Status checkFrameEvery(const Options& options, long steps);
 /// Fails when -i names the scene file itself (under any name or link): its XML was read as
 /// records and graded, a "Failed" full of numbers made of text.
 Status checkGradedFile(const Options& options);
-
-/// One output written under its partial name and renamed at the end.
-class StagedFile {
- public:
-  /// Chooses where the data goes while the run lasts and removes a stale partial file (the
-  /// partial name is FOSSSim's own). `what` names the option in messages ("-o", "--movie").
-  static Status prepare(const std::string& finalPath, const std::string& what, StagedFile& out);
-
-  /// Where to write now: the partial name, or the final one for devices and pipes.
-  const std::string& writePath() const { return writePath_; }
-  const std::string& finalPath() const { return finalPath_; }
-  bool staged() const { return writePath_ != renameTo_; }
-
-  /// The run completed: the partial file takes the final name (and the old file's permissions).
-  Status commit();
-  /// For the summary of a run that did not complete: where its data is.
-  std::string whereIncomplete() const;
-  /// Whether the file written to exists (a writer that could not create it made none).
-  bool made() const;
-
- private:
-  std::string finalPath_;  ///< as the user gave it
-  std::string renameTo_;   ///< the final path, a symbolic link resolved (the link keeps pointing at it)
-  std::string writePath_;
-};
 
 }  // namespace fosssim::app

@@ -7,7 +7,7 @@ namespace fosssim::app {
 Status TrajectoryOutput::start(const SceneFile& file, const State& initial, const RecordLayout& sceneLayout) {
   RecordLayout layout = sceneLayout;
   if (compact_) layout.polynomials = false;
-  if (Status s = StagedFile::prepare(path_, "-o", file_); !s) return s;
+  if (Status s = io::StagedFile::prepare(path_, "-o", file_); !s) return s;
   if (Status s = TrajectoryWriter::open(file_.writePath(), layout, writer_, path_); !s) return s;
   if (file_.staged()) {
     const std::string hint = layout.polynomials ? "--compact leaves out the polynomial log (positions, velocities "

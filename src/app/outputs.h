@@ -37,7 +37,7 @@ class TrajectoryOutput final : public RunObserver {
   std::string path_;
   bool compact_;
   FreeSpaceQuery freeSpace_;
-  StagedFile file_;
+  io::StagedFile file_;
   std::unique_ptr<TrajectoryWriter> writer_;
   std::optional<DiskBudget> budget_;  ///< regular files only
   std::string pending_;               ///< the step's records, written when it has succeeded

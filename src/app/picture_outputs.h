@@ -18,7 +18,7 @@ class PictureOutputs final : public RunObserver {
   /// `places`: where each kind of frame goes, for the summary ("SVG frames in \"dir\"");
   /// `movie`: the --movie file, when there is one.
   explicit PictureOutputs(render::FrameOutputs outputs, std::vector<std::string> places = {},
-                          std::optional<StagedFile> movie = std::nullopt)
+                          std::optional<io::StagedFile> movie = std::nullopt)
       : outputs_(std::move(outputs)), places_(std::move(places)), movie_(std::move(movie)) {}
   Status start(const SceneFile& file, const State& initial, const RecordLayout&) override {
     return outputs_.start(file, initial);
@@ -55,7 +55,7 @@ class PictureOutputs final : public RunObserver {
  private:
   render::FrameOutputs outputs_;
   std::vector<std::string> places_;
-  std::optional<StagedFile> movie_;
+  std::optional<io::StagedFile> movie_;
   RunEnd end_ = RunEnd::Failed;
 };
 

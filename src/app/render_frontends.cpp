@@ -70,7 +70,7 @@ Status openMovie(const Options& options, const std::string& writePath, const ren
 Status addPictureOutputs(const Options& options, const SceneFile& file, ObserverList& observers) {
   render::FrameOutputs outputs(options.frameWidth, options.frameHeight, options.frameEvery);
   std::vector<std::string> places;
-  std::optional<StagedFile> movie;
+  std::optional<io::StagedFile> movie;
   if (!options.svgDir.empty()) {
     std::unique_ptr<render::SvgFrames> svg;
     if (Status s = render::SvgFrames::open(options.svgDir, svg); !s) return flagged("-m", s);
@@ -85,7 +85,7 @@ Status addPictureOutputs(const Options& options, const SceneFile& file, Observer
     if (options.pngs) places.push_back("PNG in \"" + raster.pngDir + "\"");
     if (!options.movie.empty()) {
       movie.emplace();
-      if (Status s = StagedFile::prepare(options.movie, "--movie", *movie); !s) return s;
+      if (Status s = io::StagedFile::prepare(options.movie, "--movie", *movie); !s) return s;
       // --fps 0 (the default) is real time; say what the movie will be.
       const render::MovieTiming timing = render::movieTiming(options.fps, file.scene.dt, options.frameEvery);
       raster.fps = timing.fps;

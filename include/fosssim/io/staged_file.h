@@ -1,0 +1,54 @@
+#pragma once
+// An output file that never leaves a half-written file under its name: written under a partial
+// name next to the final one ("out.bin" as "out.partial.bin", "run.mp4" as "run.partial.mp4":
+// ffmpeg picks the format by the ending) and renamed to the final name when complete. A write
+// that does not complete leaves the partial file, and the final name as it was (an older file of
+// that name is not cut or removed). A symbolic link keeps pointing at the new file. Devices and
+// named pipes are written directly: there is nothing to rename. The command line's -o and
+// --movie and the Python module's writers use it.
+
+#include "fosssim/core/status.h"
+
+#include <string>
+
+namespace fosssim::io {
+
+/// "dir/out.bin" -> "dir/out.partial.bin"; "traj" -> "traj.partial".
+std::string partialName(const std::string& path);
+
+/// Where a staged output goes: `renameTo` the final name, a symbolic link resolved, and the
+/// returned name to write while the output lasts, the partial name next to it, or the final name
+/// itself for a device or a named pipe (nothing to rename).
+std::string stagedPaths(const std::string& finalPath, std::string& renameTo);
+
+/// One output written under its partial name and renamed at the end.
+class StagedFile {
+ public:
+  /// Chooses where the data goes while the output lasts and removes a stale partial file (the
+  /// partial name is FOSSSim's own). `what` names the option or function in messages ("-o",
+  /// "--movie", "write_trajectory").
+  static Status prepare(const std::string& finalPath, const std::string& what, StagedFile& out);
+
+  /// Where to write now: the partial name, or the final one for devices and pipes.
+  const std::string& writePath() const { return writePath_; }
+  const std::string& finalPath() const { return finalPath_; }
+  bool staged() const { return writePath_ != renameTo_; }
+
+  /// The output is complete: the partial file takes the final name (and the old file's
+  /// permissions).
+  Status commit();
+  /// For the message of an output that did not complete: where its data is, and that the final
+  /// name was left as it was.
+  std::string whereIncomplete() const;
+  /// Whether the file written to exists (a writer that could not create it made none).
+  bool made() const;
+  /// Removes the partial file (for an output whose partial file holds nothing of use).
+  void discard();
+
+ private:
+  std::string finalPath_;  ///< as given
+  std::string renameTo_;   ///< the final path, a symbolic link resolved (the link keeps pointing at it)
+  std::string writePath_;
+};
+
+}  // namespace fosssim::io

@@ -1,0 +1,74 @@
+// StagedFile: an output under a partial name, renamed when complete (include/fosssim/io/staged_file.h).
+#include "fosssim/io/staged_file.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <sys/stat.h>
+
+namespace fosssim::io {
+
+namespace fs = std::filesystem;
+
+std::string partialName(const std::string& path) {
+  const fs::path p(path);
+  const std::string stem = p.stem().string(), ending = p.extension().string();
+  return fs::path(p).replace_filename(stem + ".partial" + ending).string();
+}
+
+std::string stagedPaths(const std::string& finalPath, std::string& renameTo) {
+  renameTo = finalPath;
+  struct stat st {};
+  // A folder is refused by whoever opens it.
+  if (stat(finalPath.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) return finalPath;
+  struct stat link {};
+  if (lstat(finalPath.c_str(), &link) == 0 && S_ISLNK(link.st_mode)) {
+    std::error_code ec;
+    const fs::path target = fs::canonical(finalPath, ec);  // fails for a dangling link: then the link is replaced
+    if (!ec) renameTo = target.string();
+  }
+  return partialName(renameTo);
+}
+
+Status StagedFile::prepare(const std::string& finalPath, const std::string& what, StagedFile& out) {
+  out.finalPath_ = finalPath;
+  out.writePath_ = stagedPaths(finalPath, out.renameTo_);
+  if (!out.staged()) return Status::ok();
+  struct stat link {};
+  // The partial name is ours: an old partial file (or a link there) goes, so that nothing is
+  // written through it. checkOutputsAgainstInputs made sure it is no input.
+  if (lstat(out.writePath_.c_str(), &link) == 0 && !S_ISDIR(link.st_mode) && std::remove(out.writePath_.c_str()) != 0)
+    return Status::error(what + " \"" + finalPath + "\": cannot remove the old partial file \"" + out.writePath_ +
+                         "\" (" + std::strerror(errno) + ")");
+  return Status::ok();
+}
+
+Status StagedFile::commit() {
+  if (!staged()) return Status::ok();
+  struct stat old {};
+  if (stat(renameTo_.c_str(), &old) == 0 && S_ISREG(old.st_mode)) (void)chmod(writePath_.c_str(), old.st_mode & 07777);
+  if (std::rename(writePath_.c_str(), renameTo_.c_str()) != 0)
+    return Status::error("\"" + finalPath_ + "\": cannot rename \"" + writePath_ + "\" to it (" + std::strerror(errno) +
+                         "); the complete data is in \"" + writePath_ + "\"");
+  return Status::ok();
+}
+
+bool StagedFile::made() const {
+  struct stat st {};
+  return stat(writePath_.c_str(), &st) == 0;
+}
+
+std::string StagedFile::whereIncomplete() const {
+  if (!staged()) return "\"" + finalPath_ + "\"";
+  struct stat st {};
+  const bool older = stat(renameTo_.c_str(), &st) == 0;
+  return "\"" + writePath_ + "\" (\"" + finalPath_ + "\" was not written" +
+         (older ? "; the older file of that name is as it was)" : ")");
+}
+
+void StagedFile::discard() {
+  if (staged()) (void)std::remove(writePath_.c_str());
+}
+
+}  // namespace fosssim::io
