@@ -1,4 +1,5 @@
 #include "xml_reader.h"
+#include "xml_syntax.h"
 
 #include "fosssim/io/spelling.h"
 
@@ -14,7 +15,6 @@
 namespace fosssim::io {
 namespace {
 
-bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
 
 /// Characters that look like a space or like nothing in a terminal, named: "1" followed by a
 /// no-break space was shown as "1 ", which reads as a number with a space the reader allows.
@@ -118,12 +118,12 @@ bool ElementReader::parseNumber(const tinyxml2::XMLAttribute& attribute, double&
   // scenes have px=" 1.0"), trailing junk is not ("1.5abc" would silently read 1.5 there).
   const char* text = attribute.Value();
   const char* p = text;
-  while (isSpace(*p)) ++p;
+  while (isXmlSpace(*p)) ++p;
   char* end = nullptr;
   errno = 0;
   value = std::strtod(p, &end);
   const char* rest = end;
-  while (rest && isSpace(*rest)) ++rest;
+  while (rest && isXmlSpace(*rest)) ++rest;
   if (end == p || *rest != '\0') {
     fail(attribute.Name(), "expected a number, got " + quoted(text));
     return false;

@@ -11,12 +11,6 @@
 namespace fosssim::io {
 namespace {
 
-bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
-bool nameStart(char c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' || c == ':' || static_cast<unsigned char>(c) >= 0x80;
-}
-bool nameChar(char c) { return nameStart(c) || (c >= '0' && c <= '9') || c == '-' || c == '.'; }
-
 std::string excerpt(const std::string& text, size_t from) {
   std::string s;
   for (size_t k = from; k < text.size() && text[k] != '\n' && s.size() < 30; ++k) s += text[k];
@@ -99,14 +93,14 @@ class Scanner {
 
   std::string name(size_t& q) const {
     const size_t from = q;
-    while (q < t_.size() && nameChar(t_[q])) ++q;
+    while (q < t_.size() && isXmlNameChar(t_[q])) ++q;
     return t_.substr(from, q - from);
   }
 
   bool closingTag() {
     size_t q = p_ + 2;
     const std::string n = name(q);
-    while (q < t_.size() && isSpace(t_[q])) ++q;
+    while (q < t_.size() && isXmlSpace(t_[q])) ++q;
     if (n.empty() || q >= t_.size() || t_[q] != '>') return fail("a closing tag </" + clip(n) + " must be a name followed by '>'");
     if (stack_.empty()) return fail("</" + clip(n) + "> closes no open element");
     const Open& top = stack_.back();
@@ -128,13 +122,13 @@ class Scanner {
 
   bool openingTag() {
     size_t q = p_ + 1;
-    if (q >= t_.size() || !nameStart(t_[q]))
+    if (q >= t_.size() || !isXmlNameStart(t_[q]))
       return fail("'<' does not begin an element (a name must follow it; write &lt; for a '<' in text)");
     const int tagLine = line_;
     const std::string element = name(q);
     std::vector<std::string> attributes;
     for (;;) {
-      while (q < t_.size() && isSpace(t_[q])) ++q;
+      while (q < t_.size() && isXmlSpace(t_[q])) ++q;
       advanceTo(q);
       if (q >= t_.size()) return fail("the file ends inside the tag <" + clip(element) + "> (line " + std::to_string(tagLine) + ")");
       if (t_[q] == '/') {
@@ -147,14 +141,14 @@ class Scanner {
         advanceTo(q + 1);
         return true;
       }
-      if (!nameStart(t_[q]))
+      if (!isXmlNameStart(t_[q]))
         return fail("unexpected character '" + std::string(1, t_[q]) + "' in the tag <" + clip(element) + ">");
       const std::string attribute = name(q);
       const std::string who = "<" + clip(element) + "> attribute '" + clip(attribute) + "'";
-      while (q < t_.size() && isSpace(t_[q])) ++q;
+      while (q < t_.size() && isXmlSpace(t_[q])) ++q;
       if (q >= t_.size() || t_[q] != '=') return fail(who + " has no value (write " + clip(attribute) + "=\"...\")");
       ++q;
-      while (q < t_.size() && isSpace(t_[q])) ++q;
+      while (q < t_.size() && isXmlSpace(t_[q])) ++q;
       if (q >= t_.size() || (t_[q] != '"' && t_[q] != '\''))
         return fail(who + ": the value must be in quotes (" + clip(attribute) + "=\"...\")");
       const size_t close = t_.find(t_[q], q + 1);
@@ -215,7 +209,7 @@ int lineOf(const std::string& text, size_t offset) {
 bool findCrowdedElement(const std::string& text, CrowdedElement& found) {
   const size_t size = text.size();
   auto skipSpace = [&](size_t q) {
-    while (q < size && isSpace(text[q])) ++q;
+    while (q < size && isXmlSpace(text[q])) ++q;
     return q;
   };
   auto skipPast = [&](size_t from, const char* end) {  // npos when `end` never comes
@@ -228,15 +222,15 @@ bool findCrowdedElement(const std::string& text, CrowdedElement& found) {
     if (text.compare(p, 4, "<!--") == 0) p = skipPast(p + 4, "-->");
     else if (text.compare(p, 9, "<![CDATA[") == 0) p = skipPast(p + 9, "]]>");
     else if (text.compare(p, 2, "<?") == 0) p = skipPast(p + 2, "?>");
-    else if (p + 1 < size && nameStart(text[p + 1])) {
+    else if (p + 1 < size && isXmlNameStart(text[p + 1])) {
       size_t q = p + 1;
-      while (q < size && nameChar(text[q])) ++q;
+      while (q < size && isXmlNameChar(text[q])) ++q;
       long count = 0;
       // name = "value" pairs up to the tag's end; anything else ends the count (the parser reports it).
       for (;;) {
         q = skipSpace(q);
-        if (q >= size || !nameStart(text[q])) break;
-        while (q < size && nameChar(text[q])) ++q;
+        if (q >= size || !isXmlNameStart(text[q])) break;
+        while (q < size && isXmlNameChar(text[q])) ++q;
         q = skipSpace(q);
         if (q >= size || text[q] != '=') break;
         q = skipSpace(q + 1);
@@ -248,7 +242,7 @@ bool findCrowdedElement(const std::string& text, CrowdedElement& found) {
       }
       if (count > kMaxAttributes) {
         size_t n = tag + 1;
-        while (n < size && nameChar(text[n])) ++n;
+        while (n < size && isXmlNameChar(text[n])) ++n;
         found = {lineOf(text, tag), text.substr(tag + 1, n - tag - 1), count};
         return true;
       }

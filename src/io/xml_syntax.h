@@ -20,6 +20,15 @@ int lineOf(const std::string& text, size_t offset);
 
 /// XML's white space: space, tab and the line ends.
 inline constexpr const char* kXmlSpace = " \t\n\r";
+/// Whether c is one of kXmlSpace's characters.
+inline bool isXmlSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+/// Whether c may start an XML name (ASCII letters, '_', ':', and every byte of a multi-byte
+/// UTF-8 character, which the scans take as name characters without decoding them) ...
+inline bool isXmlNameStart(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' || c == ':' || static_cast<unsigned char>(c) >= 0x80;
+}
+/// ... or continue one (digits, '-' and '.' too).
+inline bool isXmlNameChar(char c) { return isXmlNameStart(c) || (c >= '0' && c <= '9') || c == '-' || c == '.'; }
 
 /// `text` without the XML white space around it.
 inline std::string trimXmlSpace(const std::string& text) {
