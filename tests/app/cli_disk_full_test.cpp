@@ -3,6 +3,7 @@
 // disk fails with ENOSPC, through the same code. Each output must end the run with exit 1 and
 // leave only whole data: --stats whole rows, -m no frame cut short, --movie no broken movie under
 // its final name (ffmpeg exited 0 after "Error writing trailer").
+#include "support/temp_dir_test.h"
 #include "run_fosssim.h"
 
 #include <algorithm>
@@ -13,14 +14,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class CliDiskFull : public ::testing::Test {
+class CliDiskFull : public TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("fosssim-cli-disk-full-" + std::to_string(getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
   /// `particles` particles falling for `steps` steps of 0.01 s.
   std::string scene(int particles, int steps) const {
     std::string text = "<scene><duration time=\"" + std::to_string(steps / 100.0) +
@@ -31,7 +26,6 @@ class CliDiskFull : public ::testing::Test {
     std::ofstream(path("scene.xml")) << text << "</scene>\n";
     return path("scene.xml");
   }
-  fs::path dir_;
 };
 
 RunOptions capped(rlim_t bytes) {

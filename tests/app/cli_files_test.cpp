@@ -2,6 +2,7 @@
 // no read permission, an endless device), outputs that are named pipes, -o where nothing can be
 // written, -i with a file that does not fit the scene. Each gives exit 1 and a message naming the
 // path, never a crash or a hang.
+#include "support/temp_dir_test.h"
 #include "run_fosssim.h"
 
 #include <chrono>
@@ -17,15 +18,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class CliFiles : public ::testing::Test {
+class CliFiles : public TempDirTest {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("fosssim-cli-files-" + std::to_string(getpid()));
-    fs::create_directories(dir_);
+    TempDirTest::SetUp();
     fs::permissions(dir_, fs::perms::all);  // other users (nobody) may enter
   }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
   std::string write(const std::string& name, const std::string& text) const {
     std::ofstream(path(name), std::ios::binary) << text;
     return path(name);
@@ -38,7 +36,6 @@ class CliFiles : public ::testing::Test {
     if (!collision.empty()) text += "<collision type=\"" + collision + "\"/>";
     return write(name, text + "</scene>\n");
   }
-  fs::path dir_;
 };
 
 void expectFailure(const Outcome& o, const std::vector<std::string>& fragments) {

@@ -3,6 +3,7 @@
 // never pass a file that does not start from the scene, never call a category "passed" when nothing
 // was graded, and a failed grade leads with where the run first diverged (or why the file does not
 // fit), then the mode hint, then the details.
+#include "support/temp_dir_test.h"
 #include "run_fosssim.h"
 
 #include <cmath>
@@ -37,14 +38,8 @@ double getDouble(const std::string& bytes, size_t at) {
 }
 void setDouble(std::string& bytes, size_t at, double v) { std::memcpy(&bytes[at], &v, 8); }
 
-class CliGrade : public ::testing::Test {
+class CliGrade : public TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("fosssim-cli-grade-" + std::to_string(getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
   std::string write(const std::string& name, const std::string& bytes) const {
     std::ofstream(path(name), std::ios::binary) << bytes;
     return path(name);
@@ -84,7 +79,6 @@ class CliGrade : public ::testing::Test {
     if (compat) args.insert(args.begin(), "--compat");
     return runFosssim(args);
   }
-  fs::path dir_;
 };
 
 /// A failed grade: exit 1, the summary first, the reference's verdict last.

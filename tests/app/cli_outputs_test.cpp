@@ -4,6 +4,7 @@
 // blows up leaves no non-finite number in -o (continuous-time and hybrid, whose mid-step record
 // comes before the step's finite check); --compact; the size warning of a huge -o; --movie
 // names that ffmpeg would read as options or protocols.
+#include "support/temp_dir_test.h"
 #include "background_run.h"
 
 #include <sys/statvfs.h>
@@ -15,14 +16,8 @@ namespace fs = std::filesystem;
 
 constexpr RecordLayout kContinuousTime{true, true, true};
 
-class CliOutputs : public ::testing::Test {
+class CliOutputs : public TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("fosssim-cli-outputs-" + std::to_string(getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
   std::string write(const std::string& name, const std::string& text) const {
     std::ofstream(path(name), std::ios::binary) << text;
     return path(name);
@@ -34,7 +29,6 @@ class CliOutputs : public ::testing::Test {
                            "\"/><particle m=\"1\" px=\"0\" py=\"0\" vx=\"1\" vy=\"0\" fixed=\"0\" radius=\"0.1\"/>"
                            "<particle m=\"1\" px=\"3\" py=\"0\" vx=\"-1\" vy=\"0\" fixed=\"0\" radius=\"0.1\"/></scene>\n");
   }
-  fs::path dir_;
 };
 
 /// Runs FOSSSim with `args` and expects the refusal naming `output` and the scene, with the scene

@@ -2,6 +2,7 @@
 // nesting, huge attribute values and counts. They must load (or fail with a message) in
 // reasonable time and memory, never crash or hang.
 #include "scene_text.h"
+#include "support/temp_dir_test.h"
 
 #include <chrono>
 #include <filesystem>
@@ -16,17 +17,7 @@ using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-/// A temporary folder for one test, removed afterwards.
-class LargeInput : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("fosssim-large-" + std::to_string(getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const char* name) const { return (dir_ / name).string(); }
-  fs::path dir_;
-};
+class LargeInput : public TempDirTest {};
 
 std::string header() {
   return "<scene>\n  <duration time=\"1\"/>\n  <integrator type=\"explicit-euler\" dt=\"0.01\"/>\n"
