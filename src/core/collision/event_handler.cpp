@@ -107,10 +107,11 @@ bool EventHandler::sleepingPair(const Scene& scene, uint64_t key) const {
   return asleep;
 }
 
-void EventHandler::wakeIfHit(const Scene& scene, uint64_t key, double closing, double kicksAlong,
-                             StepStats& stats) {
-  const PairParticles pair = pairParticles(scene, key);
-  if (closing <= sleepers_.wakeSpeed(scene, pair.p, pair.count, kicksAlong)) return;  // infinite without a sleeper
+void EventHandler::wakeIfHit(const Scene& scene, const Event& e, double closing, StepStats& stats) {
+  const PairParticles pair = pairParticles(scene, e.key);
+  if (!sleepers_.anyAsleep(pair.p, pair.count)) return;
+  const double kicksAlong = zones_.kicksAlong(scene, e.key, e.normal, e.alpha);
+  if (closing <= sleepers_.wakeSpeed(scene, pair.p, pair.count, kicksAlong)) return;
   for (int k = 0; k < pair.count; ++k)
     stats.woken += sleepers_.wake(pair.p[k]);  // 0 when awake
 }
@@ -198,8 +199,7 @@ void EventHandler::respond(const Scene& scene, const Event& e, State& state, Ste
   if (closing <= kRestingClosingFraction * scale && (deepest = deepestTime()) < 0.0) return;
   const bool curving = deepest >= 0.0;
   // closing is a rate (displacement per step); the wake rule compares speeds.
-  if (sleepers_.any())
-    wakeIfHit(scene, e.key, curving ? 0.0 : closing / h, zones_.kicksAlong(scene, e.key, e.normal, e.alpha), *ctx.stats);
+  if (sleepers_.any()) wakeIfHit(scene, e, curving ? 0.0 : closing / h, *ctx.stats);
 
   // A contact is inside one rigid zone (exempt) only if every particle of it moves with that zone:
   // a half-plane or a fixed particle met by a rigid zone is an obstacle, which joins the zone. A

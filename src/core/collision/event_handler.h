@@ -100,9 +100,9 @@ class EventHandler final : public CollisionHandler {
   bool sleepingPair(const Scene& scene, uint64_t key) const;
   /// Wakes the sleepers of the event's pair if it closes harder than resting contact (sleepers.h);
   /// closing: its closing speed (m/s, as the kicks and the sleep speed it is compared with).
-  /// Wakes the sleepers of pair `key` if its contact closes faster than Sleepers::wakeSpeed with
-  /// the pair's kicks along its normal (`kicksAlong`).
-  void wakeIfHit(const Scene& scene, uint64_t key, double closing, double kicksAlong, StepStats& stats);
+  /// Wakes the sleepers of event e's pair if its contact closes faster than Sleepers::wakeSpeed
+  /// with the pair's kicks along its normal.
+  void wakeIfHit(const Scene& scene, const Event& e, double closing, StepStats& stats);
   /// Whether the pair's boxes over the step (motion_'s start to end, grown by the radii and
   /// kTouchingSlack of them) meet: a test the broad phase's candidates always pass.
   bool stepBoxesMeet(const Scene& scene, uint64_t key) const;

@@ -119,6 +119,12 @@ class Sleepers {
   /// kg at 0.15 m/s into 1 kg asleep, COR 0.5, dt 0.01: it bounced back at -0.075 m/s and the
   /// sleeper stayed, where both move on, at 0.150 and 0.225).
   double wakeSpeed(const Scene& scene, const int* particles, int count, double kicksAlong) const;
+  /// Whether one of particles[0..count) sleeps (before the kicks along a contact are worked out).
+  bool anyAsleep(const int* particles, int count) const {
+    for (int k = 0; k < count; ++k)
+      if (asleep(particles[k])) return true;
+    return false;
+  }
   /// Whether p did not stay still in the last step (a neighbour that moves wakes sleepers).
   bool movedLastStep(int p) const { return moved_.empty() || moved_[p] != 0; }
   /// The velocity change this step's forces gave particle p (|predicted v - start v|); known

@@ -45,24 +45,28 @@ void append(int& head, int& tail, int p, std::vector<int>& next) {
 bool ContactZones::wakeHitSleepers(const Scene& scene, int zone, StepStats& stats) {
   hitSleepers_.clear();
   if (!sleepers_ || !sleepers_->any()) return false;
+  // The awake movable side's kicks along a row (its coefficients: the normal, weighted at an
+  // edge's ends), each body once (a weld's coefficient is its particles' together). A held or
+  // stopped member counts: what the row stopped was its motion.
+  const auto moves = [&](int q) { return !scene.isFixed(q) && !sleepers_->asleep(q) && projector_.hasBody(q); };
+  const auto kicksAlong = [&](int row, const PairParticles& pair) {
+    double kicks = 0;
+    for (int k = 0; k < pair.count; ++k) {
+      const int p = pair.p[k];
+      bool counted = !moves(p);
+      for (int j = 0; j < k && !counted; ++j) counted = moves(pair.p[j]) && projector_.sameBody(p, pair.p[j]);
+      if (!counted) kicks += std::fabs(sleepers_->kickVector(p).dot(projector_.coefficientOn(row, p)));
+    }
+    return kicks;
+  };
   projector_.forEachTouchedRow([&](int row) {
     const uint64_t key = rowKey_[row];
     const PairParticles pair = pairParticles(scene, key);
-    // The awake movable side's kicks along the row (its coefficients: the normal, weighted at an
-    // edge's ends), each body once (a weld's coefficient is its particles' together).
-    double kicksAlong = 0;
-    for (int k = 0; k < pair.count; ++k) {
-      const int p = pair.p[k];
-      const auto moves = [&](int q) { return !scene.isFixed(q) && !sleepers_->asleep(q) && projector_.hasBody(q); };
-      bool counted = !moves(p);  // a held or stopped member counts: what the row stopped was its motion
-      for (int j = 0; j < k && !counted; ++j) counted = moves(pair.p[j]) && projector_.sameBody(p, pair.p[j]);
-      if (!counted) kicksAlong += std::fabs(sleepers_->kickVector(p).dot(projector_.coefficientOn(row, p)));
-    }
-    const double wakeSpeed = sleepers_->wakeSpeed(scene, pair.p, pair.count, kicksAlong);
-    if (!std::isfinite(wakeSpeed)) return;  // no sleeper
+    if (!sleepers_->anyAsleep(pair.p, pair.count)) return;
     bool ours = false;
     for (int k = 0; k < pair.count; ++k) ours = ours || zoneOf(pair.p[k]) == zone;
     if (!ours) return;
+    const double wakeSpeed = sleepers_->wakeSpeed(scene, pair.p, pair.count, kicksAlong(row, pair));
     const double* last = lastImpulse_.find(key);
     // A_kk with the particles' own masses: a member the solve has since held or stopped is
     // immovable in the projector, yet what the row stopped was its motion.
