@@ -88,5 +88,46 @@ TEST(RestingContact, AKickAcrossTheNormalDoesNotStopASlowBounce) {
   }
 }
 
+// Two disks falling together under gravity, the upper gaining on the lower at u, far below the
+// two kicks (4 g h summed over both, 0.39 m/s): equal kicks do not close their contact, so it is a
+// hit at the speed they had before the step, not a rest (ContactZones::resting). Equal masses,
+// 1D: the closing speed comes back times e, and the centre of mass keeps falling freely.
+TEST(RestingContact, TwoDisksFallingIntoEachOtherBounceAtAnySpeed) {
+  for (const char* type : kEventTypes) {
+    for (double u : {0.01, 0.1, 0.3}) {
+      SCOPED_TRACE(std::string(type) + " u " + std::to_string(u));
+      const double cor = 0.5;
+      TestScene s = contactScene(type, cor, kH);
+      s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, -kG)));
+      addBody(s, 1.0, Vec2(0.0, 0.0), Vec2::Zero(), kR);
+      addBody(s, 1.0, Vec2(0.0, 2 * kR + 0.3 * u), Vec2(0.0, -u), kR);  // meets within 30 steps
+      auto sim = defaultModeSimulator(s);
+      for (int k = 0; k < 40; ++k) ASSERT_TRUE(stepClean(*sim, s));
+      const double fall = -kG * kH * 40;  // symplectic Euler's free fall of the centre of mass
+      EXPECT_NEAR(at(s.state.v, 1).y() - at(s.state.v, 0).y(), cor * u, 1e-12);
+      EXPECT_NEAR(at(s.state.v, 1).y() + at(s.state.v, 0).y(), 2 * fall - u, 1e-12);
+    }
+  }
+}
+
+// What the start speeds must not undo: a column of three disks on the floor, the lower ones
+// stopped by the floor's impulse in each step before the upper one's contact closes at its own
+// kick. Each contact gained its closing in the step (none had any at its start): the column
+// rests, exactly, and sleeps.
+TEST(RestingContact, AColumnOnTheFloorRestsAndSleeps) {
+  for (const char* type : kEventTypes) {
+    SCOPED_TRACE(type);
+    TestScene s = floorScene(type, 0.5);
+    for (int k = 0; k < 3; ++k) addBody(s, 1.0, Vec2(0.0, kR + 2 * kR * k + 0.01 * k), Vec2::Zero(), kR);
+    auto sim = defaultModeSimulator(s);
+    for (int k = 0; k < 300; ++k) ASSERT_TRUE(stepClean(*sim, s));
+    EXPECT_EQ(sim->stats().asleep, 3);
+    for (int p = 0; p < 3; ++p) {
+      EXPECT_EQ(at(s.state.v, p), Vec2::Zero()) << p;
+      EXPECT_NEAR(at(s.state.x, p).y(), kR + 2 * kR * p, 1e-9) << p;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace fosssim::testing

@@ -161,9 +161,18 @@ constexpr double kTouchingSlack = 1e-6;
 
 /// Resting contact does not bounce: an impulse takes COR 0 (for a scene COR below 1) when its
 /// contact closes no faster than this many times the step's kicks along its normal
-/// (ContactZones::kicksAlong), and so does a zone's row (its restitution target). Resting
-/// contact closes at about one kick: a disk on the floor, or on a disk of a pile, in every step.
+/// (ContactZones::kicksAlong) and gained at least kRestingGainedShare of that closing in this
+/// step (ContactZones::resting); so does a zone's row (its restitution target). Resting contact
+/// closes at about one kick: a disk on the floor, or on a disk of a pile, in every step.
 constexpr double kRestingBounceKicks = 2.0;
+/// The share of a resting contact's closing speed that this step gave it (its kicks, and the
+/// impulses before it that stopped what it rests on). Two disks in free fall close at the speed
+/// they had before the step, whatever their kicks (which are equal): that is a hit, not a rest.
+constexpr double kRestingGainedShare = 0.5;
+/// A contact that closed at the step's start no faster than this many of its kicks along the
+/// normal rests whatever it gained: what a resolved contact keeps of an approach (rounding, a
+/// plank's rotation turning its normal under a ball at rest on it) is not a hit.
+constexpr double kRestingStartKicks = 0.01;
 
 class ContactZones {
  public:
@@ -219,6 +228,9 @@ class ContactZones {
   /// differenced, since a disk resting on another closes at its own kick once the floor has
   /// stopped the lower.
   double kicksAlong(const Scene& scene, uint64_t key, const Vec2& n, double alpha) const;
+  /// Whether pair `key`, closing along n at `closing` (a speed), is resting contact, which does
+  /// not bounce (kRestingBounceKicks, kRestingGainedShare).
+  bool resting(const Scene& scene, uint64_t key, const Vec2& n, double alpha, double closing) const;
 
   /// Gives back to each rattle's particle (see rattlerOf) what its jams took from its velocity,
   /// reversed and times the share the rest of the step's bounces leave of it (keepRattle), in v

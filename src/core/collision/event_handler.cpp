@@ -247,9 +247,10 @@ void EventHandler::respond(const Scene& scene, const Event& e, State& state, Ste
   // Resting contact does not bounce (COR < 1): a contact closing no faster than this step's
   // forces close it is one whose closing speed the step's kick made, and a bounce off it would
   // be undone by the next kick, step after step (a ball on the floor at COR 0.5 bounced h g / 2
-  // in every step, forever, and never slept). A contact that hits harder keeps its COR, and COR 1
+  // in every step, forever, and never slept). A contact that hits harder, or that was closing
+  // before the step (two disks falling into each other: ContactZones::resting), keeps its COR, and COR 1
   // stays elastic: no energy is lost that the scene asked to keep.
-  const double cor = cor_ < 1.0 && closing / h <= kRestingBounceKicks * zones_.kicksAlong(scene, e.key, e.normal, e.alpha) ? 0.0 : cor_;
+  const double cor = cor_ < 1.0 && zones_.resting(scene, e.key, e.normal, e.alpha, closing / h) ? 0.0 : cor_;
   VelocityChange change;
   switch (keyKind(e.key)) {
     case PairKind::ParticleParticle:

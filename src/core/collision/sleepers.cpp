@@ -12,7 +12,7 @@ void Sleepers::begin(const Scene& scene, const State& start, State& state, doubl
   const int n = scene.numParticles();
   // The kicks, whether sleeping is on or not: the zones' held particles need them too, and end()
   // sums them over still runs.
-  if (static_cast<int>(startSpeed_.size()) != n) startSpeed_.assign(n, 0.0), kickVector_.setZero(2 * n);
+  if (startVelocity_.size() != 2 * n) startVelocity_.setZero(2 * n), kickVector_.setZero(2 * n);
   // A sleeper's prediction is thrown away below, and its forces may have been left incomplete
   // (restingAtStart): it keeps the kick it had when it fell asleep (read if a hit wakes it).
   const bool sleepers = enabled_ && sleeping_ > 0 && static_cast<int>(asleep_.size()) == n;
@@ -20,7 +20,7 @@ void Sleepers::begin(const Scene& scene, const State& start, State& state, doubl
     for (int p = first; p < end; ++p) {
       const bool rests = sleepers && restsAtStart(start, p);
       at(kickVector_, p) = rests ? Vec2(at(restKickVector_, p)) : Vec2(at(state.v, p) - at(start.v, p));
-      startSpeed_[p] = at(start.v, p).norm();
+      at(startVelocity_, p) = at(start.v, p);
     }
   });
   if (!enabled_) {

@@ -133,8 +133,10 @@ class Sleepers {
   double kick(int p) const { return kickVector(p).norm(); }
   /// The same velocity change as a vector (its direction: gravity's, in a pile under gravity).
   Vec2 kickVector(int p) const { return kickVector_.segment<2>(2 * p); }
-  /// Particle p's speed at the step's start (known from begin() on).
-  double startSpeed(int p) const { return startSpeed_[p]; }
+  /// Particle p's velocity at the step's start, before this step's kick (known from begin() on).
+  Vec2 startVelocity(int p) const { return startVelocity_.segment<2>(2 * p); }
+  /// Particle p's speed at the step's start.
+  double startSpeed(int p) const { return startVelocity(p).norm(); }
   /// The sleep speed of particle p: the speed at which it could stay within the sleep distance
   /// over a whole still run (kSleepFraction of its radius in kStepsToSleep steps). Not the
   /// distance per step over h: at a small step that is fast (3 10^-3 r / h: 1.5 m/s for r = 0.1
@@ -166,7 +168,7 @@ class Sleepers {
   VecX restKickVector_;          ///< 2N: a sleeper's kick vector in the step it fell asleep
   std::vector<char> resting_;    ///< N: restingAtStart's answer
   int mayRestCount_ = 0;         ///< particles that may sleep (movable, when the forces list their ties)
-  std::vector<double> startSpeed_;  ///< N: |start v|
+  VecX startVelocity_;           ///< 2N: start v (the step's velocities before its kicks)
   std::vector<std::pair<int, int>> coupled_;  ///< pairs the forces and edges tie (see Force::couples)
   std::vector<int> islandOf_;    ///< N: island of two or more particles, or -1 (empty: none)
   std::vector<int> islandStart_; ///< islands + 1: each island's first index into islandMembers_

@@ -100,7 +100,7 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
   double restitution = 0.0, loaded = 0.0;
   if (cor_ > 0.0 && !curving) {
     if (closing <= 0.0) loaded = cor_;
-    else if (cor_ >= 1.0 || closing > kRestingBounceKicks * h_ * kicksAlong(scene, key, n, alpha)) restitution = cor_;
+    else if (cor_ >= 1.0 || !resting(scene, key, n, alpha, closing / h_)) restitution = cor_;
   }
   if (const int* known = rowOf_.find(key)) {
     // A row no solve has seen yet was set at this instant (contacts of one instant wait for one
@@ -183,6 +183,21 @@ double ContactZones::kicksAlong(const Scene& scene, uint64_t key, const Vec2& n,
     case PairKind::ParticleHalfPlane: return along(i);
   }
   return 0.0;
+}
+
+// The closing speed the step gave the contact is its closing now less the one its particles had
+// at the step's start (before their kicks). A disk resting on the floor or on a pile had none and
+// gained all of it; a disk landing slowly (start closing u below one kick g h, closing now u + g h)
+// gained at least half, as the closing bound alone already asks of it (u + g h <= 2 g h); two disks
+// falling together into each other close at their start speed u and gained nothing, whatever
+// their kicks, so they bounce at any u above a hundredth of a kick (kRestingStartKicks).
+bool ContactZones::resting(const Scene& scene, uint64_t key, const Vec2& n, double alpha, double closing) const {
+  if (sleepers_ == nullptr) return false;
+  const double kicks = kicksAlong(scene, key, n, alpha);
+  if (closing > kRestingBounceKicks * kicks) return false;
+  double scale = 0.0;
+  const double atStart = closingSpeed(scene, key, n, alpha, [&](int p) { return sleepers_->startVelocity(p); }, scale);
+  return atStart <= (1.0 - kRestingGainedShare) * closing || atStart <= kRestingStartKicks * kicks;
 }
 
 bool ContactZones::RowsAt::rowNow(int index, math::ConstraintRow& out) {
