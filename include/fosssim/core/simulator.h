@@ -49,7 +49,7 @@ class Simulator {
   /// The rigid impact zone that moved `particle` in the last step, or -1.
   int zoneOf(int particle) const { return handler_ ? handler_->zoneOf(particle) : -1; }
   /// Pairs of the last step that still collide somewhere along its motion (--verify): `state`
-  /// is the state the last step produced. At most `limit` (0 = all).
+  /// is the state the last step produced. At most `limit` (0 = all). None before the first step.
   std::vector<Violation> unresolved(const Scene& scene, const State& state, size_t limit = 0) const;
   /// The state at the beginning of the last step.
   const State& lastStart() const { return start_; }
@@ -85,9 +85,6 @@ class Simulator {
   bool timing_ = false;
   ForceContext forces_;  ///< the forces' pair search (allPairs, threads) and storage
   State start_;  ///< the state at the beginning of the current step (scratch)
-  /// The scene's particles, edges and forces when step last checked its shape (checkSceneShape):
-  /// checked again, in full, only when one of these counts changes.
-  size_t checkedParticles_ = ~size_t{0}, checkedEdges_ = 0, checkedForces_ = 0;
   std::unique_ptr<EnergyWatch> energyWatch_;  ///< part of the verify phase
 };
 
