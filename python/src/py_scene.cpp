@@ -5,6 +5,7 @@
 #include "fosssim/core/collision_handler.h"
 #include "fosssim/core/forces.h"
 #include "fosssim/core/integrator.h"
+#include "fosssim/core/scene_values.h"
 #include "fosssim/io/scene_writer.h"
 
 #include <cmath>
@@ -34,19 +35,14 @@ void requireNonNegative(const char* what, double v) {
   if (v < 0) throw SceneError(std::string(what) + " must be >= 0, got " + text(v));
 }
 
-/// The format's summation order of force kinds (see scene.h).
-/// The loader's limits (src/io/scene_elements.cpp/.h): <collision maxiters> and duration / dt.
-constexpr int kMaxIterations = 10000;
-constexpr double kMaxSteps = 1e12;
-
-/// duration / dt at most kMaxSteps, as the loader (more would overflow the step counters).
+/// duration / dt at most kMaxSteps, the loader's limit (fosssim/core/scene_values.h).
 void requireSteps(const char* what, double duration, double dt) {
-  if (dt > 0 && !(duration / dt <= kMaxSteps))
-    throw SceneError(std::string(what) + ": duration / dt = " + text(duration) + " / " + text(dt) + " asks for " +
-                     text(duration / dt) + " steps; at most 1e12 (more would overflow the step counters and run "
-                     "for years)");
+  if (dt <= 0) return;
+  if (const std::string why = stepCountProblem(duration, dt); !why.empty())
+    throw SceneError(std::string(what) + ": " + why);
 }
 
+/// The format's summation order of force kinds (see scene.h).
 int rank(const Force& f) {
   const std::string k = f.keyword();
   const char* order[] = {"springforce", "simplegravity", "gravitationalforce", "constantforce",
@@ -181,11 +177,10 @@ void PyScene::setCollision(const std::string& type, double cor, int maxIteration
   }
   requireFinite("set_collision: cor", cor);
   if (cor < 0 || cor > 1) throw SceneError("set_collision: cor must lie in [0, 1], got " + text(cor));
-  // The loader's limit (<collision maxiters>, src/io/scene_elements.cpp): more passes per step only
-  // make a jammed pile slower (a step of 400 overlapping disks took 2 minutes at 10000, 12 at 100000).
-  if (maxIterations > kMaxIterations)
-    throw SceneError("set_collision: maxiters must be at most 10000, got " + std::to_string(maxIterations) +
-                     ": each pass detects the step's contacts again, and a jammed pile makes every pass");
+  // The loader's limit (fosssim/core/scene_values.h): more passes per step only make a jammed pile slower.
+  if (maxIterations > kMaxCollisionIterations)
+    throw SceneError("set_collision: maxiters must be at most " + std::to_string(kMaxCollisionIterations) + ", got " +
+                     std::to_string(maxIterations) + ": " + kMaxCollisionIterationsReason);
   // Given, as the loader's k="-1": refused, not taken for "the default" (None is the default).
   if (k) requireNonNegative("set_collision: k", *k);
   if (thickness) requireNonNegative("set_collision: thickness", *thickness);

@@ -4,6 +4,7 @@
 
 #include "core/collision/parallel_rows.h"
 #include "core/short_number.h"
+#include "fosssim/core/scene_values.h"
 
 #include <algorithm>
 #include <cmath>
@@ -23,6 +24,7 @@ Status Simulator::create(const Scene& scene, const SimulatorOptions& options,
   if (options.handler.threads < 1)
     return Status::error("threads must be at least 1, got " + std::to_string(options.handler.threads));
   if (Status s = checkSceneShape(scene); !s) return s;
+  if (Status s = checkSceneValues(scene); !s) return s;
   const CollisionEntry* collision = &collisionEntry(scene.collision.type);
   std::unique_ptr<Simulator> sim(new Simulator());
   sim->collision_ = collision;
@@ -153,10 +155,12 @@ Status Simulator::step(const Scene& scene, State& state, StepObserver* observer)
   if (!same(scene.dt, dt_) || scene.integrator != integratorKeyword_ || !sameSettings(scene.collision, settings_))
     return failure("the scene's settings (integrator, dt or collision) changed since the simulator was created; "
                    "create a new simulator for the new settings");
-  // A scene built in code can change between steps, in place too (an edge's index): its shape is
-  // checked at every step. That is O(E + forces), less than the step itself reads; a check only
-  // when a count changed let an index changed in place through, and the step read out of bounds.
+  // A scene built in code can change between steps, in place too (an edge's index, a mass): its
+  // shape and values are checked at every step. That is O(N + E + forces), a pass over arrays the
+  // step itself reads several times over; a check only when a count changed let an index changed
+  // in place through, and the step read out of bounds.
   if (Status s = checkSceneShape(scene, &state); !s) return failure(s.message());
+  if (Status s = checkSceneValues(scene); !s) return failure(s.message());
 
   stats_.clear();
   const StepTimer stepTimer(timing_, stats_.total);

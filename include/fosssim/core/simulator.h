@@ -36,12 +36,15 @@ class EnergyWatch;
 
 class Simulator {
  public:
-  /// Builds the integrator and collision handler that `scene` names. Fails on unknown keywords.
+  /// Builds the integrator and collision handler that `scene` names. Fails on unknown keywords, on
+  /// a scene that does not hold together (checkSceneShape) and on values its scene file could not
+  /// hold (checkSceneValues: a mass of -1, a COR of 5), naming the element and value.
   static Status create(const Scene& scene, const SimulatorOptions& options, std::unique_ptr<Simulator>& out);
 
   /// Advances `state` by one step of `scene` (the scene this simulator was created for; an error
   /// if its settings changed since). On failure (non-finite state, solver failure, energy
-  /// blow-up) the message names the step and particle.
+  /// blow-up) the message names the step and particle. The scene's shape and values are checked
+  /// again at every step, as a scene built in code may have changed since (an edge's index).
   Status step(const Scene& scene, State& state, StepObserver* observer = nullptr);
 
   /// What the last step's collision handling did.
