@@ -98,6 +98,7 @@ void writePngDirectly(const std::string& path, const render::Image& image) {
 void bindPictures(nb::module_& m) {
   nb::class_<PySimulator> cls = nb::borrow<nb::class_<PySimulator>>(m.attr("Simulator"));
   cls.def("render", [](const PySimulator& s, int width, int height) {
+        checkSize(width, height);  // a ValueError, as svg()'s, not the renderer's own failure
 #ifdef FOSSSIM_HAVE_RENDER
         const render::Image image = frame(s, width, height);
         const size_t shape[3] = {static_cast<size_t>(image.height), static_cast<size_t>(image.width), 3};
@@ -112,6 +113,7 @@ void bindPictures(nb::module_& m) {
       }, nb::arg("width") = 512, nb::arg("height") = 512,
       "The current state drawn as an (height, width, 3) uint8 RGB array, top row first.");
   cls.def("save_png", [](const PySimulator& s, const std::string& path, int width, int height) {
+        checkSize(width, height);
 #ifdef FOSSSIM_HAVE_RENDER
         StagedOutput out(path, "save_png", s.scene().file.path);
         const render::Image image = frame(s, width, height);
