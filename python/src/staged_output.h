@@ -37,19 +37,23 @@ class StagedOutput {
   /// For the message of a write that did not complete: where its data is, and that the final name
   /// was left as it was.
   std::string whereIncomplete() const { return file_.whereIncomplete(); }
+  /// "; <data> is in <the partial file> (...)", or, when that file does not exist, that nothing
+  /// was written and the final name was left as it was.
+  std::string whereData(const char* data) const;
   /// Removes the partial file (for outputs whose partial file holds nothing useful, a PNG).
   void discard() { file_.discard(); }
 
   /// Runs `body` (the writing); a FileError or SimulationError it throws is raised again, same
-  /// type, saying where `data` ("the trajectory so far") is: the partial file, kept.
+  /// type, saying where `data` ("the trajectory so far") is: the partial file, kept. When no
+  /// partial file was made (ffmpeg failed before writing one), says so instead of naming it.
   template <class F>
   auto keepingPartial(const char* data, F&& body) {
     try {
       return body();
     } catch (const FileError& e) {
-      throw FileError(std::string(e.what()) + "; " + data + " is in " + whereIncomplete());
+      throw FileError(std::string(e.what()) + whereData(data));
     } catch (const SimulationError& e) {
-      throw SimulationError(std::string(e.what()) + "; " + data + " is in " + whereIncomplete());
+      throw SimulationError(std::string(e.what()) + whereData(data));
     }
   }
 

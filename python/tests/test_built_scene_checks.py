@@ -2,7 +2,12 @@
 cannot hold is refused by the setter that took it (not later by Simulator() or copy(), citing the
 writer); a scene built without particles is named so (not "<particle> elements" of a file); a
 value out of range is a ValueError whatever the call (set_collision with a huge maxiters was a
-TypeError, render(0, 10) a SimulationError)."""
+TypeError, render(0, 10) a SimulationError); and a movie's frame rate has the command line's
+limits, checked before a step is taken."""
+import math
+import subprocess
+import sys
+
 import pytest
 
 import fosssim
@@ -47,3 +52,44 @@ def test_render_sizes_out_of_range_are_value_errors_as_svg(one_disk_scene):
     for call in (sim.svg, sim.render):
         with pytest.raises(fosssim.SceneError, match="picture size must be 1 .. 16384 pixels each way, got 0 x 10"):
             call(0, 10)
+
+
+@pytest.mark.skipif(not fosssim.has_renderer, reason="built without the renderer")
+def test_a_frame_too_large_for_the_memory_names_the_calls_arguments(assets):
+    # The advice was the command line's "try a smaller --frame-size", an option Python has not.
+    scene = str(assets / "t2m2" / "ContinuousTimeTests" / "head_on_swap.xml")
+    code = ("import resource, fosssim\n"
+            f"sim = fosssim.Simulator(fosssim.Scene.load({scene!r}))\n"
+            "resource.setrlimit(resource.RLIMIT_AS, (1 << 30, 1 << 30))\n"
+            "try:\n    sim.render(16000, 16000)\nexcept fosssim.SimulationError as e:\n    print(e)\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300).stdout
+    assert "out of memory for 16000x16000 frames" in out
+    assert "try a smaller width and height" in out and "--frame-size" not in out
+
+
+@pytest.mark.parametrize("fps", [math.inf, math.nan, 1e-300, 0.0, -5.0, 1000.5])
+def test_record_movie_takes_the_command_lines_frame_rates(fps, one_disk_scene, tmp_path):
+    sim = fosssim.Simulator(one_disk_scene())
+    with pytest.raises(ValueError, match=r"fps must be from 0.01 to 1000 \(frames a second, as --fps\), got "):
+        sim.record_movie(str(tmp_path / "m.mp4"), steps=5, fps=fps, width=32, height=32)
+    assert sim.steps_taken == 0
+    assert list(tmp_path.iterdir()) == []  # no movie, no partial file
+
+
+@pytest.mark.skipif(not fosssim.has_renderer, reason="built without the renderer")
+def test_a_movie_that_made_no_file_names_no_partial_file(one_disk_scene, tmp_path, monkeypatch):
+    # An ffmpeg that fails before writing anything: the message named "m.partial.mp4" as holding
+    # the movie so far, a file that was never made.
+    bin_dir = tmp_path / "bin"
+    bin_dir.mkdir()
+    fake = bin_dir / "ffmpeg"
+    fake.write_text("#!/bin/sh\nexit 1\n")
+    fake.chmod(0o755)
+    monkeypatch.setenv("PATH", f"{bin_dir}:/usr/bin:/bin")
+    out = tmp_path / "m.mp4"
+    sim = fosssim.Simulator(one_disk_scene())
+    with pytest.raises(fosssim.FileError) as info:
+        sim.record_movie(str(out), steps=3, width=32, height=32)
+    assert not (tmp_path / "m.partial.mp4").exists()
+    assert "nothing was written (no partial file was made" in str(info.value)
+    assert "is in" not in str(info.value)
