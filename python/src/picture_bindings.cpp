@@ -170,7 +170,7 @@ void bindPictures(nb::module_& m) {
             if (k % every == 0) check<FileError>(movie->write(frame(s, width, height)));
           }
           check<FileError>(movie->close());
-        });
+        }, [&] { movie.reset(); });  // waits for ffmpeg, which may make its file only as it ends
         out.commit();
         return movie->frames();
 #else

@@ -12,6 +12,7 @@
 #include "fosssim/io/staged_file.h"
 
 #include <string>
+#include <utility>
 
 namespace fosssim::py {
 
@@ -46,15 +47,23 @@ class StagedOutput {
   /// Runs `body` (the writing); a FileError or SimulationError it throws is raised again, same
   /// type, saying where `data` ("the trajectory so far") is: the partial file, kept. When no
   /// partial file was made (ffmpeg failed before writing one), says so instead of naming it.
-  template <class F>
-  auto keepingPartial(const char* data, F&& body) {
+  /// `finish` runs first on failure: it ends a writer that makes its file late (the movie's
+  /// ffmpeg, which may not have created it yet), so that whether the file exists is known.
+  template <class F, class Finish>
+  auto keepingPartial(const char* data, F&& body, Finish&& finish) {
     try {
       return body();
     } catch (const FileError& e) {
+      finish();
       throw FileError(std::string(e.what()) + whereData(data));
     } catch (const SimulationError& e) {
+      finish();
       throw SimulationError(std::string(e.what()) + whereData(data));
     }
+  }
+  template <class F>
+  auto keepingPartial(const char* data, F&& body) {
+    return keepingPartial(data, std::forward<F>(body), [] {});
   }
 
  private:

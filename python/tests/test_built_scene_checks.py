@@ -58,12 +58,15 @@ def test_render_sizes_out_of_range_are_value_errors_as_svg(one_disk_scene):
 def test_a_frame_too_large_for_the_memory_names_the_calls_arguments(assets):
     # The advice was the command line's "try a smaller --frame-size", an option Python has not.
     scene = str(assets / "t2m2" / "ContinuousTimeTests" / "head_on_swap.xml")
-    code = ("import resource, fosssim\n"
+    # An address-space limit 300 MiB above what the process maps: room for the 6000x6000 frame's
+    # own buffer (144 MB), not for what OSMesa needs besides (over 500 MB).
+    code = ("import os, resource, fosssim\n"
             f"sim = fosssim.Simulator(fosssim.Scene.load({scene!r}))\n"
-            "resource.setrlimit(resource.RLIMIT_AS, (1 << 30, 1 << 30))\n"
-            "try:\n    sim.render(16000, 16000)\nexcept fosssim.SimulationError as e:\n    print(e)\n")
+            "mapped = int(open('/proc/self/statm').read().split()[0]) * os.sysconf('SC_PAGESIZE')\n"
+            "resource.setrlimit(resource.RLIMIT_AS, (mapped + (300 << 20),) * 2)\n"
+            "try:\n    sim.render(6000, 6000)\nexcept fosssim.SimulationError as e:\n    print(e)\n")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300).stdout
-    assert "out of memory for 16000x16000 frames" in out
+    assert "out of memory for 6000x6000 frames" in out
     assert "try a smaller width and height" in out and "--frame-size" not in out
 
 
