@@ -101,6 +101,9 @@ void bindScene(nb::module_& m) {
              if (overflow != 0) iterations = overflow > 0 ? LLONG_MAX : LLONG_MIN;
              s.setCollision(type, cor, iterations, failsafe, k, thickness);
            },
+           // The stub's signature: maxiters is an int to the caller (an object here only to see its full value).
+           nb::sig("def set_collision(self, type: str, cor: float = 1.0, maxiters: int = 10, "
+                   "failsafe: str = 'projection', k: float | None = None, thickness: float | None = None) -> None"),
            nb::arg("type"), nb::arg("cor") = 1.0, nb::arg("maxiters") = 10, nb::arg("failsafe") = "projection",
            nb::arg("k") = nb::none(), nb::arg("thickness") = nb::none(),
            "Collision handling: none, simple, continuous-time, penalty or hybrid (k and thickness: the "
