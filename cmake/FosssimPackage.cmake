@@ -13,7 +13,7 @@ include(CMakePackageConfigHelpers)
 # includes a private one fails there). Everything else under include/ is the project's own.
 set(FOSSSIM_PUBLIC_HEADERS
   core/collision_handler.h core/collision_log.h core/force.h core/forces.h core/integrator.h
-  core/scene.h core/simulator.h core/state.h core/status.h core/step_stats.h core/types.h
+  core/scene.h core/scene_values.h core/simulator.h core/state.h core/status.h core/step_stats.h core/types.h
   core/verify.h
   io/grader.h io/scene_file.h io/trajectory.h
   # The leaf library (fosssim::math): polynomials, the interval solver ("the first t in [0, 1]

@@ -54,7 +54,11 @@ def _value(name, value):
     elif isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_)):
         if name != "maxiters":
             return float(value)
-        if float(value).is_integer():  # 20.0 is 20 (a CSV's integers may come back as floats)
+        # Any integer, 2**31 too, is the setter's to judge (its range error is the row's); float()
+        # of a huge one would raise OverflowError here.
+        if isinstance(value, numbers.Integral):
+            return int(value)
+        if math.isfinite(value) and float(value).is_integer():  # 20.0 is 20 (a CSV's integers may come back as floats)
             return int(value)
         kind = "an integer"
     else:
@@ -65,6 +69,11 @@ def _value(name, value):
 def _apply(scene, method, dt, params):
     import fosssim
 
+    # A method or dt of the wrong type fails its runs, as a parameter's does, not the setter's TypeError.
+    if not isinstance(method, str):
+        raise fosssim.SceneError(f"sweep: method: expected a name, got {method!r}")
+    if not isinstance(dt, numbers.Real) or isinstance(dt, (bool, np.bool_)):
+        raise fosssim.SceneError(f"sweep: dt: expected a number, got {dt!r}")
     unknown = set(params) - set(PARAMETERS)
     if unknown:
         raise fosssim.SceneError(f"sweep: unknown parameter(s) {sorted(unknown)} (valid: {', '.join(PARAMETERS)})")
@@ -156,7 +165,9 @@ def run_case(case):
             wall_per_sim_second=wall / max(sim.time, 1e-300),
             error="",
         )
-    except (fosssim.SceneError, fosssim.SimulationError) as e:
+    except (ValueError, TypeError, OverflowError, fosssim.SimulationError) as e:
+        # Bad values of every kind (SceneError is a ValueError; a setter's TypeError or OverflowError
+        # for a value that slipped past _value) fail this run only: the other rows stand.
         row.update(steps=0, error=str(e))
     return row
 
@@ -174,11 +185,13 @@ def _cases(scenes, methods, dts, params, compat):
             names.append(os.path.basename(str(s)))
             texts.append(fosssim.Scene.load(str(s)).to_xml())
     keys = list(params)
-    grid = list(itertools.product(*(params[k] for k in keys))) or [()]
+    grid = list(itertools.product(*(params[k] for k in keys)))  # one empty tuple when there are no parameters
     cases = []
     for (name, xml), method, dt, values in itertools.product(zip(names, texts), methods, dts, grid):
-        cases.append(dict(name=name, xml=xml, method=method, dt=float(dt), params=dict(zip(keys, values)),
-                          compat=compat))
+        # A dt that is no number stays as given: _apply makes it the run's error.
+        number = isinstance(dt, numbers.Real) and not isinstance(dt, (bool, np.bool_))
+        cases.append(dict(name=name, xml=xml, method=method, dt=float(dt) if number else dt,
+                          params=dict(zip(keys, values)), compat=compat))
     return cases
 
 
@@ -211,6 +224,12 @@ def sweep(scenes, methods=METHODS, dts=None, params=None, compat=False, schedule
     if dts is not None:
         dts = _listed(dts)
     params = {name: _listed(values) for name, values in (params or {}).items()}
+    # An empty list makes the grid empty: no run at all, or (as it once did) silently none of the
+    # parameters. Named here, before any run.
+    lists = [("scenes", scenes), ("methods", methods)] + ([("dts", dts)] if dts is not None else [])
+    for what, values in lists + [(f"parameter {name}", values) for name, values in params.items()]:
+        if not values:
+            raise ValueError(f"sweep: {what}: no values given (an empty list would make no runs)")
     if dts is None:
         import fosssim
 
@@ -336,7 +355,8 @@ def _parse_params(items):
             try:
                 parsed.append(int(v) if name == "maxiters" else float(v) if name not in ("integrator", "failsafe") else v)
             except ValueError:
-                raise SystemExit(f"fosssim-sweep: --param {name}: {v!r} is not a number")
+                kind = "an integer" if name == "maxiters" else "a number"
+                raise SystemExit(f"fosssim-sweep: --param {name}: expected {kind}, got {v!r}")
         params[name] = parsed
     return params
 
@@ -367,6 +387,8 @@ def main(argv=None):
     except ValueError:
         parser.error(f"--dt: expected numbers, got {args.dt!r}")
     methods = [m for m in args.methods.split(",") if m]
+    if not methods:
+        parser.error(f"--methods: no method given in {args.methods!r} (valid: {', '.join(fosssim.collision_types())})")
     bad = [m for m in methods if m not in fosssim.collision_types()]
     if bad:
         parser.error(f"--methods: unknown {bad} (valid: {', '.join(fosssim.collision_types())})")
@@ -377,7 +399,7 @@ def main(argv=None):
     try:
         table = sweep(args.scenes, methods=methods, dts=dts, params=_parse_params(args.param), compat=args.compat,
                       scheduler=args.scheduler, workers=args.workers, serial=args.serial)
-    except fosssim.SceneError as e:
+    except ValueError as e:  # SceneError, or a list of no values
         print(f"fosssim-sweep: error: {e}", file=sys.stderr)
         return 1
     written = True

@@ -9,9 +9,9 @@
 
 #include "fosssim/io/scene_writer.h"
 #include "fosssim/render/picture.h"
+#include "fosssim/render/movie_writer.h"  // its limits and name checks work without the renderer
 #include "fosssim/render/svg_writer.h"
 #ifdef FOSSSIM_HAVE_RENDER
-#include "fosssim/render/movie_writer.h"
 #include "fosssim/render/offscreen_renderer.h"
 #include "fosssim/render/png_writer.h"
 #endif
@@ -54,7 +54,8 @@ render::Picture picture(const PySimulator& s, int width, int height) {
 render::OffscreenRenderer& renderer(int width, int height) {
   static std::map<std::pair<int, int>, std::unique_ptr<render::OffscreenRenderer>> renderers;
   auto& r = renderers[{width, height}];
-  if (!r) check<SimulationError>(render::OffscreenRenderer::create(width, height, r));
+  // Out of memory, the advice names this call's arguments, not the command line's --frame-size.
+  if (!r) check<SimulationError>(render::OffscreenRenderer::create(width, height, r, "width and height"));
   return *r;
 }
 
@@ -98,6 +99,7 @@ void writePngDirectly(const std::string& path, const render::Image& image) {
 void bindPictures(nb::module_& m) {
   nb::class_<PySimulator> cls = nb::borrow<nb::class_<PySimulator>>(m.attr("Simulator"));
   cls.def("render", [](const PySimulator& s, int width, int height) {
+        checkSize(width, height);  // a ValueError, as svg()'s, not the renderer's own failure
 #ifdef FOSSSIM_HAVE_RENDER
         const render::Image image = frame(s, width, height);
         const size_t shape[3] = {static_cast<size_t>(image.height), static_cast<size_t>(image.width), 3};
@@ -112,6 +114,7 @@ void bindPictures(nb::module_& m) {
       }, nb::arg("width") = 512, nb::arg("height") = 512,
       "The current state drawn as an (height, width, 3) uint8 RGB array, top row first.");
   cls.def("save_png", [](const PySimulator& s, const std::string& path, int width, int height) {
+        checkSize(width, height);
 #ifdef FOSSSIM_HAVE_RENDER
         StagedOutput out(path, "save_png", s.scene().file.path);
         const render::Image image = frame(s, width, height);
@@ -140,11 +143,14 @@ void bindPictures(nb::module_& m) {
       }, nb::arg("path"), nb::arg("width") = 512, nb::arg("height") = 512);
   cls.def("record_movie", [](PySimulator& s, const std::string& path, std::optional<long> steps, long every, double fps,
                              int width, int height) {
-#ifdef FOSSSIM_HAVE_RENDER
+        // The arguments first, in every build: before the movie's file is made or a step taken.
         checkArgument(every >= 1, "every must be >= 1, got " + std::to_string(every));
-        checkArgument(fps > 0, "fps must be > 0, got " + formatNumber(fps));
-        if (steps) checkSteps(*steps);  // before the movie's file is made
+        checkArgument(fps >= render::kMinMovieFps && fps <= render::kMaxMovieFps,
+                      "fps must be from " + formatNumber(render::kMinMovieFps) + " to " +
+                          formatNumber(render::kMaxMovieFps) + " (frames a second, as --fps), got " + formatNumber(fps));
+        if (steps) checkSteps(*steps);
         checkSize(width, height);
+#ifdef FOSSSIM_HAVE_RENDER
         // As --movie: "run.partial.mp4" (ffmpeg picks the format by the ending), renamed when complete.
         StagedOutput out(path, "record_movie", s.scene().file.path);
         SimulatorLock lock(s);  // the movie's steps and frames follow one another, no other thread's between
@@ -164,7 +170,7 @@ void bindPictures(nb::module_& m) {
             if (k % every == 0) check<FileError>(movie->write(frame(s, width, height)));
           }
           check<FileError>(movie->close());
-        });
+        }, [&] { movie.reset(); });  // waits for ffmpeg, which may make its file only as it ends
         out.commit();
         return movie->frames();
 #else

@@ -5,8 +5,11 @@
 #include "fosssim/core/collision_handler.h"
 #include "fosssim/core/forces.h"
 #include "fosssim/core/integrator.h"
+#include "fosssim/core/scene_values.h"
 #include "fosssim/io/scene_writer.h"
 
+#include <algorithm>
+#include <climits>
 #include <cmath>
 
 namespace fosssim::py {
@@ -34,19 +37,14 @@ void requireNonNegative(const char* what, double v) {
   if (v < 0) throw SceneError(std::string(what) + " must be >= 0, got " + text(v));
 }
 
-/// The format's summation order of force kinds (see scene.h).
-/// The loader's limits (src/io/scene_elements.cpp/.h): <collision maxiters> and duration / dt.
-constexpr int kMaxIterations = 10000;
-constexpr double kMaxSteps = 1e12;
-
-/// duration / dt at most kMaxSteps, as the loader (more would overflow the step counters).
+/// duration / dt at most kMaxSteps, the loader's limit (fosssim/core/scene_values.h).
 void requireSteps(const char* what, double duration, double dt) {
-  if (dt > 0 && !(duration / dt <= kMaxSteps))
-    throw SceneError(std::string(what) + ": duration / dt = " + text(duration) + " / " + text(dt) + " asks for " +
-                     text(duration / dt) + " steps; at most 1e12 (more would overflow the step counters and run "
-                     "for years)");
+  if (dt <= 0) return;
+  if (const std::string why = stepCountProblem(duration, dt); !why.empty())
+    throw SceneError(std::string(what) + ": " + why);
 }
 
+/// The format's summation order of force kinds (see scene.h).
 int rank(const Force& f) {
   const std::string k = f.keyword();
   const char* order[] = {"springforce", "simplegravity", "gravitationalforce", "constantforce",
@@ -77,7 +75,11 @@ std::string PyScene::toXml() const {
   return xml;
 }
 
-std::shared_ptr<PyScene> PyScene::copy() const {
+std::shared_ptr<PyScene> PyScene::copy(const char* what) const {
+  // The copy goes through the loader, whose message for this would name a <particle> element of
+  // a file that was never there.
+  if (file.scene.numParticles() == 0)
+    throw SceneError(std::string(what) + ": the scene has no particles; add at least one with add_particle");
   auto s = fromXml(toXml(), file.path.empty() ? "<scene>" : file.path);
   s->file.path = file.path;
   s->file.warnings = file.warnings;
@@ -171,7 +173,7 @@ void PyScene::addVortex(int i, int j, double kbs, double kvc) {
   addForce(std::make_unique<VortexForce>(i, j, kbs, kvc));
 }
 
-void PyScene::setCollision(const std::string& type, double cor, int maxIterations, const std::string& failsafe,
+void PyScene::setCollision(const std::string& type, double cor, long long maxIterations, const std::string& failsafe,
                            std::optional<double> k, std::optional<double> thickness) {
   const CollisionEntry* entry = findCollisionType(type);
   if (!entry) {
@@ -181,11 +183,13 @@ void PyScene::setCollision(const std::string& type, double cor, int maxIteration
   }
   requireFinite("set_collision: cor", cor);
   if (cor < 0 || cor > 1) throw SceneError("set_collision: cor must lie in [0, 1], got " + text(cor));
-  // The loader's limit (<collision maxiters>, src/io/scene_elements.cpp): more passes per step only
-  // make a jammed pile slower (a step of 400 overlapping disks took 2 minutes at 10000, 12 at 100000).
-  if (maxIterations > kMaxIterations)
-    throw SceneError("set_collision: maxiters must be at most 10000, got " + std::to_string(maxIterations) +
-                     ": each pass detects the step's contacts again, and a jammed pile makes every pass");
+  // The loader's limit (fosssim/core/scene_values.h): more passes per step only make a jammed pile slower.
+  if (maxIterations > kMaxCollisionIterations) {
+    // LLONG_MAX: the binding's stand-in for a Python int beyond long long.
+    const std::string got = maxIterations == LLONG_MAX ? "an integer beyond 2**63" : std::to_string(maxIterations);
+    throw SceneError("set_collision: maxiters must be at most " + std::to_string(kMaxCollisionIterations) + ", got " +
+                     got + ": " + kMaxCollisionIterationsReason);
+  }
   // Given, as the loader's k="-1": refused, not taken for "the default" (None is the default).
   if (k) requireNonNegative("set_collision: k", *k);
   if (thickness) requireNonNegative("set_collision: thickness", *thickness);
@@ -194,7 +198,7 @@ void PyScene::setCollision(const std::string& type, double cor, int maxIteration
   CollisionSettings& c = file.scene.collision;
   c.type = entry->type;
   c.cor = cor;
-  c.maxIterations = maxIterations;
+  c.maxIterations = static_cast<int>(std::max<long long>(maxIterations, -1));  // <= 0: none, as the loader's
   c.failsafe = failsafe == "rigid" ? Failsafe::Rigid : Failsafe::Projection;
   c.penaltyK = k.value_or(entry->defaultK);
   c.penaltyThickness = thickness.value_or(entry->defaultThickness);
@@ -214,6 +218,12 @@ void PyScene::setIntegrator(const std::string& type, double dt) {
   requireSteps("set_integrator", file.scene.duration, dt);
   file.scene.integrator = type;
   file.scene.dt = dt;
+}
+
+void PyScene::setText(std::string& into, const std::string& text, const char* what) {
+  // The writer's rule, checked here rather than when the scene is next written (copy(), Simulator).
+  if (const std::string why = xmlTextProblem(text); !why.empty()) throw SceneError(std::string(what) + ": " + why);
+  into = text;
 }
 
 void PyScene::setDuration(double duration) {

@@ -17,8 +17,9 @@ struct PyScene {
 
   static std::shared_ptr<PyScene> load(const std::string& path);
   static std::shared_ptr<PyScene> fromXml(const std::string& text, const std::string& name);
-  /// A deep copy (through the writer and the loader, which round-trip exactly).
-  std::shared_ptr<PyScene> copy() const;
+  /// A deep copy (through the writer and the loader, which round-trip exactly). A scene without
+  /// particles has none: SceneError, `what` naming the caller.
+  std::shared_ptr<PyScene> copy(const char* what = "Scene.copy") const;
   std::string toXml() const;
 
   int addParticle(const Vec2& x, const Vec2& v, double mass, double radius, bool fixed);
@@ -33,10 +34,14 @@ struct PyScene {
   void addVortex(int i, int j, double kbs, double kvc);
   /// The collision settings and, for penalty and hybrid, its penalty force (k and thickness
   /// not given: the type's defaults; given, >= 0 as the loader's).
-  void setCollision(const std::string& type, double cor, int maxIterations, const std::string& failsafe,
+  /// maxIterations: any integer Python gives (2**31 is "at most 10000", not a TypeError); below
+  /// -1 it is -1, as the loader's.
+  void setCollision(const std::string& type, double cor, long long maxIterations, const std::string& failsafe,
                     std::optional<double> k, std::optional<double> thickness);
   void setIntegrator(const std::string& type, double dt);
   void setDuration(double duration);
+  /// The description or tag: text a scene file can hold (no control characters, UTF-8).
+  static void setText(std::string& into, const std::string& text, const char* what);
 
   void checkParticle(int i, const char* what) const;
 };

@@ -8,7 +8,7 @@
 namespace fosssim::py {
 
 PySimulator::PySimulator(const PyScene& scene, bool compat, int threads, bool diagnostics, bool sleep)
-    : scene_(scene.copy()), compat_(compat), diagnostics_(diagnostics) {
+    : scene_(scene.copy("Simulator")), compat_(compat), diagnostics_(diagnostics) {
   checkArgument(threads >= 1, "threads must be >= 1, got " + std::to_string(threads));
   // The command line's --threads limit: far beyond any machine's cores, more would only exhaust the process.
   checkArgument(threads <= 1024, "threads must be an integer from 1 to 1024, got " + std::to_string(threads));
@@ -61,13 +61,15 @@ void PySimulator::record() {
   table_.insert(table_.end(), row_.begin(), row_.end());
 }
 
+// A bad value is a ValueError (SceneError), as the same assignment to a Scene and a wrong shape
+// here: nothing was simulated.
 void PySimulator::setVector(VecX& into, const double* data, long count, const char* what) {
   if (count != into.size())
-    throw SimulationError(std::string(what) + ": expected " + std::to_string(into.size() / 2) + " x 2 values, got " +
+    throw SceneError(std::string(what) + ": expected " + std::to_string(into.size() / 2) + " x 2 values, got " +
                           std::to_string(count) + " values");
   for (long k = 0; k < count; ++k)
     if (!std::isfinite(data[k]))
-      throw SimulationError(std::string(what) + ": particle " + std::to_string(k / 2) + " has a non-finite value (" +
+      throw SceneError(std::string(what) + ": particle " + std::to_string(k / 2) + " has a non-finite value (" +
                             formatNumber(data[k]) + ")");
   for (long k = 0; k < count; ++k) into[k] = data[k];
 }

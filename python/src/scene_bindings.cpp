@@ -16,6 +16,7 @@
 #include <nanobind/stl/string.h>
 #include <nanobind/stl/vector.h>
 
+#include <climits>
 #include <cmath>
 #include <fstream>
 
@@ -65,14 +66,14 @@ void bindScene(nb::module_& m) {
              out.commit();
            },
            nb::arg("path"), "Writes the scene as an XML scene file (under NAME.partial.EXT, renamed when complete).")
-      .def("copy", &PyScene::copy)
+      .def("copy", [](const PyScene& s) { return s.copy(); })
       .def_prop_ro("path", [](const PyScene& s) { return s.file.path; })
       .def_prop_ro("warnings", [](const PyScene& s) { return s.file.warnings; },
                    "Located messages about input the loader ignored.")
       .def_prop_rw("description", [](const PyScene& s) { return s.file.description; },
-                   [](PyScene& s, const std::string& t) { s.file.description = t; })
+                   [](PyScene& s, const std::string& t) { PyScene::setText(s.file.description, t, "description"); })
       .def_prop_rw("tag", [](const PyScene& s) { return s.file.tag; },
-                   [](PyScene& s, const std::string& t) { s.file.tag = t; })
+                   [](PyScene& s, const std::string& t) { PyScene::setText(s.file.tag, t, "tag"); })
       .def_prop_ro("integrator", [](const PyScene& s) { return s.file.scene.integrator; })
       .def_prop_ro("dt", [](const PyScene& s) { return s.file.scene.dt; })
       .def("set_integrator", &PyScene::setIntegrator, nb::arg("type"), nb::arg("dt"))
@@ -88,10 +89,21 @@ void bindScene(nb::module_& m) {
         return d;
       })
       .def("set_collision",
-           [](PyScene& s, const std::string& type, double cor, int maxiters, const std::string& failsafe,
+           [](PyScene& s, const std::string& type, double cor, nb::object maxiters, const std::string& failsafe,
               std::optional<double> k, std::optional<double> thickness) {
-             s.setCollision(type, cor, maxiters, failsafe, k, thickness);
+             // Any integer (NumPy's too, through __index__; a float is a TypeError): one beyond C's int
+             // (2**31) is out of range ("at most 10000"), not of the wrong type, as an int argument made it.
+             nb::object index = nb::steal(PyNumber_Index(maxiters.ptr()));
+             if (!index.is_valid()) throw nb::python_error();
+             int overflow = 0;
+             long long iterations = PyLong_AsLongLongAndOverflow(index.ptr(), &overflow);
+             if (iterations == -1 && PyErr_Occurred()) throw nb::python_error();
+             if (overflow != 0) iterations = overflow > 0 ? LLONG_MAX : LLONG_MIN;
+             s.setCollision(type, cor, iterations, failsafe, k, thickness);
            },
+           // The stub's signature: maxiters is an int to the caller (an object here only to see its full value).
+           nb::sig("def set_collision(self, type: str, cor: float = 1.0, maxiters: int = 10, "
+                   "failsafe: str = 'projection', k: float | None = None, thickness: float | None = None) -> None"),
            nb::arg("type"), nb::arg("cor") = 1.0, nb::arg("maxiters") = 10, nb::arg("failsafe") = "projection",
            nb::arg("k") = nb::none(), nb::arg("thickness") = nb::none(),
            "Collision handling: none, simple, continuous-time, penalty or hybrid (k and thickness: the "

@@ -42,6 +42,13 @@ StagedOutput::StagedOutput(const std::string& finalPath, const char* what, const
   if (const Status s = io::StagedFile::prepare(finalPath, what, file_); !s) throw FileError(s.message());
 }
 
+std::string StagedOutput::whereData(const char* data) const {
+  struct stat st {};
+  if (!staged() || stat(writePath().c_str(), &st) == 0) return std::string("; ") + data + " is in " + whereIncomplete();
+  // ffmpeg that fails at once (fps=inf) makes no file: naming one would send the reader looking.
+  return "; nothing was written (no partial file was made; " + quote(finalPath()) + " was left as it was)";
+}
+
 void StagedOutput::commit() {
   if (const Status s = file_.commit(); !s) throw FileError(s.message());
 }

@@ -12,6 +12,7 @@
 #include "fosssim/io/staged_file.h"
 
 #include <string>
+#include <utility>
 
 namespace fosssim::py {
 
@@ -37,20 +38,32 @@ class StagedOutput {
   /// For the message of a write that did not complete: where its data is, and that the final name
   /// was left as it was.
   std::string whereIncomplete() const { return file_.whereIncomplete(); }
+  /// "; <data> is in <the partial file> (...)", or, when that file does not exist, that nothing
+  /// was written and the final name was left as it was.
+  std::string whereData(const char* data) const;
   /// Removes the partial file (for outputs whose partial file holds nothing useful, a PNG).
   void discard() { file_.discard(); }
 
   /// Runs `body` (the writing); a FileError or SimulationError it throws is raised again, same
-  /// type, saying where `data` ("the trajectory so far") is: the partial file, kept.
-  template <class F>
-  auto keepingPartial(const char* data, F&& body) {
+  /// type, saying where `data` ("the trajectory so far") is: the partial file, kept. When no
+  /// partial file was made (ffmpeg failed before writing one), says so instead of naming it.
+  /// `finish` runs first on failure: it ends a writer that makes its file late (the movie's
+  /// ffmpeg, which may not have created it yet), so that whether the file exists is known.
+  template <class F, class Finish>
+  auto keepingPartial(const char* data, F&& body, Finish&& finish) {
     try {
       return body();
     } catch (const FileError& e) {
-      throw FileError(std::string(e.what()) + "; " + data + " is in " + whereIncomplete());
+      finish();
+      throw FileError(std::string(e.what()) + whereData(data));
     } catch (const SimulationError& e) {
-      throw SimulationError(std::string(e.what()) + "; " + data + " is in " + whereIncomplete());
+      finish();
+      throw SimulationError(std::string(e.what()) + whereData(data));
     }
+  }
+  template <class F>
+  auto keepingPartial(const char* data, F&& body) {
+    return keepingPartial(data, std::forward<F>(body), [] {});
   }
 
  private:

@@ -37,8 +37,12 @@ def test_views_are_read_only_and_setters_validate():
     np.testing.assert_array_equal(sim.positions, [[1.0, 2.0]])
     with pytest.raises(fosssim.SceneError, match=r"expected an array of shape \(1, 2\)"):
         sim.velocities = np.zeros((2, 2))
-    with pytest.raises(fosssim.SimulationError, match="non-finite"):
+    # A bad value is a ValueError (SceneError), as a wrong shape here and a NaN assigned to a Scene:
+    # it was a SimulationError, though nothing was simulated.
+    with pytest.raises(fosssim.SceneError, match="velocities: particle 0 has a non-finite value"):
         sim.velocities = np.array([[np.nan, 0.0]])
+    with pytest.raises(ValueError, match="positions: particle 0 has a non-finite value"):
+        sim.positions = np.array([[0.0, np.inf]])
     assert sim.masses.tolist() == [2.0]
     assert not sim.masses.flags.writeable
 

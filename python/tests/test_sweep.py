@@ -112,3 +112,54 @@ def test_command_line_fails_when_no_run_was_measured(assets, tmp_path, capsys):
     with pytest.raises(SystemExit) as info:
         sweeps.main([str(assets / SCENE), "--workers", "0", "--csv", str(csv)])
     assert info.value.code == 2
+
+
+def test_values_out_of_range_or_of_the_wrong_type_fail_their_runs_only(assets):
+    # maxiters beyond C's int (2**31) and a method that is no name raised the setters' TypeError,
+    # which ended the whole sweep and lost every good row.
+    table = fosssim.sweep([str(assets / SCENE)], methods=["hybrid", 1], dts=[0.01],
+                          params={"maxiters": [20, 50000, 2**31, 10**400]}, serial=True)
+    assert len(table) == 2 * 4
+    errors = {(row.method, row.maxiters): row.error for row in table.itertuples()}
+    assert errors[("hybrid", 20)] == ""
+    for big in (50000, 2**31):
+        assert f"set_collision: maxiters must be at most 10000, got {big}" in errors[("hybrid", big)]
+    assert "maxiters must be at most 10000, got an integer beyond 2**63" in errors[("hybrid", 10**400)]
+    for maxiters in (20, 50000, 2**31, 10**400):
+        assert errors[(1, maxiters)] == "sweep: method: expected a name, got 1"
+    assert (table.loc[table["error"] != "", "steps"] == 0).all()
+
+
+@pytest.mark.parametrize("kwargs, named", [
+    (dict(params={"k": [1.0, 1000.0], "cor": []}), "parameter cor"),
+    (dict(methods=[]), "methods"),
+    (dict(dts=[]), "dts"),
+])
+def test_an_empty_value_list_is_refused_naming_it(assets, kwargs, named):
+    # An empty list made the grid empty, which was replaced by one case without any parameter:
+    # every other parameter's values were silently dropped.
+    args = dict(methods="hybrid", dts=0.01, serial=True)
+    args.update(kwargs)
+    with pytest.raises(ValueError, match=rf"^sweep: {named}: no values given"):
+        fosssim.sweep(str(assets / SCENE), **args)
+
+
+def test_command_line_refuses_no_methods_and_non_integers_without_a_traceback(assets, tmp_path, capsys):
+    csv = tmp_path / "s.csv"
+    # "--methods ," ended in a KeyError traceback (dropping 'error' of an empty table).
+    with pytest.raises(SystemExit) as info:
+        sweeps.main([str(assets / SCENE), "--methods", ",", "--dt", "0.01", "--serial", "--csv", str(csv)])
+    assert info.value.code == 2
+    assert "--methods: no method given in ','" in capsys.readouterr().err
+    # "1e3" was "not a number".
+    with pytest.raises(SystemExit, match=r"--param maxiters: expected an integer, got '1e3'"):
+        sweeps.main([str(assets / SCENE), "--param", "maxiters=1e3", "--serial", "--csv", str(csv)])
+    assert not csv.exists()
+    # Beyond C's int: each run's error (it was a TypeError traceback), and no run measured.
+    code = sweeps.main([str(assets / SCENE), "--methods", "hybrid", "--dt", "0.01", "--param", "maxiters=99999999999",
+                        "--serial", "--csv", str(csv)])
+    assert code == 1
+    err = capsys.readouterr().err
+    assert "maxiters must be at most 10000, got 99999999999" in err
+    assert "no run was measured (1 failed)" in err
+    assert "Traceback" not in err

@@ -17,7 +17,7 @@
 namespace fosssim::app {
 
 constexpr int kMaxFrameSide = 16384;  // OSMesa's and most encoders' limit
-constexpr double kMinFps = 0.01, kMaxFps = 1000;
+constexpr double kMinFps = render::kMinMovieFps, kMaxFps = render::kMaxMovieFps;  // as record_movie's
 
 inline bool parseInt(const std::string& text, long lo, long hi, int& out) {
   long v = 0;

@@ -4,6 +4,7 @@
 
 #include "core/collision/parallel_rows.h"
 #include "core/short_number.h"
+#include "fosssim/core/scene_values.h"
 
 #include <algorithm>
 #include <cmath>
@@ -23,6 +24,7 @@ Status Simulator::create(const Scene& scene, const SimulatorOptions& options,
   if (options.handler.threads < 1)
     return Status::error("threads must be at least 1, got " + std::to_string(options.handler.threads));
   if (Status s = checkSceneShape(scene); !s) return s;
+  if (Status s = checkSceneValues(scene); !s) return s;
   const CollisionEntry* collision = &collisionEntry(scene.collision.type);
   std::unique_ptr<Simulator> sim(new Simulator());
   sim->collision_ = collision;
@@ -153,14 +155,12 @@ Status Simulator::step(const Scene& scene, State& state, StepObserver* observer)
   if (!same(scene.dt, dt_) || scene.integrator != integratorKeyword_ || !sameSettings(scene.collision, settings_))
     return failure("the scene's settings (integrator, dt or collision) changed since the simulator was created; "
                    "create a new simulator for the new settings");
-  // A scene built in code can change between steps: its shape is checked again when it grew.
-  const size_t n = scene.fixed.size();
-  if (static_cast<size_t>(scene.mass.size()) != 2 * n || scene.radius.size() != n ||
-      static_cast<size_t>(state.x.size()) != 2 * n || static_cast<size_t>(state.v.size()) != 2 * n ||
-      n != checkedParticles_ || scene.edges.size() != checkedEdges_ || scene.forces.size() != checkedForces_) {
-    if (Status s = checkSceneShape(scene, &state); !s) return failure(s.message());
-    checkedParticles_ = n, checkedEdges_ = scene.edges.size(), checkedForces_ = scene.forces.size();
-  }
+  // A scene built in code can change between steps, in place too (an edge's index, a mass): its
+  // shape and values are checked at every step. That is O(N + E + forces), a pass over arrays the
+  // step itself reads several times over; a check only when a count changed let an index changed
+  // in place through, and the step read out of bounds.
+  if (Status s = checkSceneShape(scene, &state); !s) return failure(s.message());
+  if (Status s = checkSceneValues(scene); !s) return failure(s.message());
 
   stats_.clear();
   const StepTimer stepTimer(timing_, stats_.total);
@@ -205,6 +205,9 @@ Status Simulator::step(const Scene& scene, State& state, StepObserver* observer)
 }
 
 std::vector<Violation> Simulator::unresolved(const Scene& scene, const State& state, size_t limit) const {
+  // Before the first step there is no step's motion to check (start_ is empty); a state of
+  // another size than the last step's is not that step's end.
+  if (start_.x.size() == 0 || start_.x.size() != state.x.size()) return {};
   if (handler_) return handler_->unresolved(scene, start_.x, state.x, limit);
   return unresolvedCollisions(scene, start_.x, state.x, nullptr, limit);
 }

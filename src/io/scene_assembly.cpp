@@ -91,13 +91,9 @@ void assemble(Builder& b, const std::string& file) {
   SceneMessages& messages = b.messages;
   checkRequired(b, file);
   const bool timed = b.integratorOk && b.durationOk;
-  if (timed && !(scene.duration / scene.dt <= kMaxSteps)) {
-    messages.error(b.integratorLine, b.integratorWhere + ": duration / dt = " + shortNumber(scene.duration) + " / " +
-                                         shortNumber(scene.dt) + " asks for " + shortNumber(scene.duration / scene.dt) +
-                                         " steps; at most " + shortNumber(kMaxSteps) + " (more would overflow the step counters and run for "
-                                         "years)");
-  }
-  if (timed && scene.duration / scene.dt <= kMaxSteps) checkPaths(b);
+  const std::string tooLong = timed ? stepCountProblem(scene.duration, scene.dt) : "";
+  if (!tooLong.empty()) messages.error(b.integratorLine, b.integratorWhere + ": " + tooLong);
+  if (timed && tooLong.empty()) checkPaths(b);
 
   const size_t n = b.particles.size(), edges = scene.edges.size(), planes = scene.halfplanes.size();
   for (const auto& [i, j] : b.edgeEnds) checkIndex(messages, i, n, "particle"), checkIndex(messages, j, n, "particle");

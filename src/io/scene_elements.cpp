@@ -237,10 +237,7 @@ const std::vector<ElementSpec>& elementTable() {
         {"maxiters", Kind::Number, "", "10",
          "hybrid: impulse passes per step (with --compat) or impulses per particle per step (default mode) "
          "before the failsafe takes over; read as a number and truncated; 0 or less: the failsafe at once",
-         "10", 1e4,
-         "each pass detects the step's contacts again, and a jammed pile makes every pass: one step of 400 "
-         "overlapping disks took 2 minutes at 10000 and 12 minutes per step at 100000 (--compat, 2 shared cores); "
-         "the course's scenes use at most 10000"},
+         "10", kMaxCollisionIterations, kMaxCollisionIterationsReason},
         {"failsafe", Kind::Text, "", "projection",
          "hybrid and continuous-time, default mode: projection (projection of impact zones, with the COR's restitution for hits) or "
          "rigid (the course's rigid zones); --compat always uses rigid zones",

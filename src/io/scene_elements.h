@@ -7,6 +7,7 @@
 #include "fosssim/io/scene_file.h"
 
 #include "fosssim/core/force.h"
+#include "fosssim/core/scene_values.h"
 #include "scene_messages.h"
 
 #include <map>
@@ -122,7 +123,7 @@ void assemble(Builder& b, const std::string& file);
 
 /// The trail positions all <particlepath> elements may keep together (memory: 16 bytes each).
 inline constexpr double kMaxTrailPoints = 1e7;
-/// The most steps a run may take: more is certainly a typo (and would overflow step counters).
-inline constexpr double kMaxSteps = 1e12;
+/// The most steps a run may take: the core's limit (scene_values.h), which a scene built in code keeps too.
+using fosssim::kMaxSteps;
 
 }  // namespace fosssim::io

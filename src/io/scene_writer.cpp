@@ -16,6 +16,19 @@
 #include <sstream>
 
 namespace fosssim {
+
+std::string xmlTextProblem(const std::string& text) {
+  // XML carries no control character but tab and line ends, not even as a reference: the loader
+  // refuses the file, so the text would not load back.
+  for (const char c : text)
+    if (const auto code = static_cast<unsigned char>(c); io::isForbiddenControl(code))
+      return "holds the control character " + io::codePointName(code) +
+             " (a scene file is XML text, which has none but tab and line ends)";
+  // Nor bytes that are not UTF-8 (Latin-1 text): the loader refuses those too.
+  if (io::InvalidUtf8 bad; io::findInvalidUtf8(text, bad)) return "holds " + bad.why + " (a scene file is UTF-8 text)";
+  return "";
+}
+
 namespace {
 
 /// Thrown inside the writer only; sceneToXml turns it into a Status.
@@ -59,16 +72,8 @@ class Element {
   }
   Element& integer(const char* attribute, long value) { return text(attribute, std::to_string(value)); }
   Element& text(const char* attribute, const std::string& value) {
-    // XML carries no control character but tab and line ends, not even as a reference: the loader
-    // refuses the file, so the text would not load back.
-    for (const char c : value)
-      if (const auto code = static_cast<unsigned char>(c); io::isForbiddenControl(code))
-        throw WriteError{std::string("<") + name_ + "> attribute '" + attribute + "' holds the control character " +
-                         io::codePointName(code) + " (a scene file is XML text, which has none but tab and line ends)"};
-    // Nor bytes that are not UTF-8 (Latin-1 text): the loader refuses those too.
-    if (io::InvalidUtf8 bad; io::findInvalidUtf8(value, bad))
-      throw WriteError{std::string("<") + name_ + "> attribute '" + attribute + "' holds " + bad.why +
-                       " (a scene file is UTF-8 text)"};
+    if (const std::string why = xmlTextProblem(value); !why.empty())
+      throw WriteError{std::string("<") + name_ + "> attribute '" + attribute + "' " + why};
     out_ += std::string(" ") + attribute + "=\"" + escaped(value) + "\"";
     return *this;
   }

@@ -1,6 +1,7 @@
 #include "xml_reader.h"
 #include "xml_syntax.h"
 
+#include "fosssim/core/scene_values.h"
 #include "fosssim/io/spelling.h"
 
 #include <algorithm>
@@ -152,18 +153,17 @@ double ElementReader::checked(const AttributeSpec& spec, const tinyxml2::XMLAttr
       // "1e-400" is positive as written but reads as 0: "must be > 0" would contradict the file.
       if (value == 0 && underflowed(attribute.Value()))
         return fail(spec.name, "too small: it rounds to 0 (underflows; at least about 5.6e-309)" + got), 1.0;
-      if (!(value > 0)) return fail(spec.name, "must be > 0" + got), 1.0;
-      // Masses, time steps, radii and sizes are divided by: a subnormal such as 1e-320 is > 0,
-      // yet its reciprocal is infinite.
-      if (!std::isfinite(1 / value))
-        return fail(spec.name, "too small: 1/" + std::string(spec.name) + " is not finite (at least about 5.6e-309)" + got),
-               1.0;
+      // The core's rules (scene_values.h), which a scene built in code is held to as well.
+      if (const std::string why = valueProblem(ValueRule::Positive, value, spec.name); !why.empty())
+        return fail(spec.name, why + got), 1.0;
       break;
     case Kind::NonNegative:
-      if (value < 0) return fail(spec.name, "must be >= 0" + got), 1.0;
+      if (const std::string why = valueProblem(ValueRule::NonNegative, value, spec.name); !why.empty())
+        return fail(spec.name, why + got), 1.0;
       break;
     case Kind::Fraction:
-      if (value < 0 || value > 1) return fail(spec.name, std::string("must lie in [0, 1]") + got), 1.0;
+      if (const std::string why = valueProblem(ValueRule::Fraction, value, spec.name); !why.empty())
+        return fail(spec.name, why + got), 1.0;
       break;
     case Kind::Index:
       if (value != std::floor(value)) return fail(spec.name, "expected an integer" + got), -1.0;

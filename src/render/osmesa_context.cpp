@@ -49,16 +49,16 @@ std::size_t bytesMesaNeeds(int width, int height) {
   return 128 * kMiB + rasterizerThreads() * 160 * kMiB + pixels * (3 + 4);
 }
 
-Status outOfMemory(int width, int height, std::size_t needed, const std::string& detail) {
+Status outOfMemory(int width, int height, std::size_t needed, const std::string& detail, const char* smaller) {
   return Status::error("out of memory for " + std::to_string(width) + "x" + std::to_string(height) +
                        " frames: OSMesa and the frames need about " + std::to_string(needed / kMiB) + " MiB more, " +
-                       detail + "; try a smaller --frame-size");
+                       detail + "; try a smaller " + smaller);
 }
 
 /// Under an address-space limit (ulimit -v) the room left is known: the limit less what the
 /// process maps now (/proc/self/statm). Without one, the frame's share is allocated and given
 /// back (malloc fails at once where memory is not overcommitted).
-Status checkMemory(int width, int height) {
+Status checkMemory(int width, int height, const char* smaller) {
   const std::size_t needed = bytesMesaNeeds(width, height);
   rlimit limit{};
   if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
@@ -71,13 +71,15 @@ Status checkMemory(int width, int height) {
     const std::size_t room = limit.rlim_cur > mapped ? limit.rlim_cur - mapped : 0;
     if (pages > 0 && room < needed)
       return outOfMemory(width, height, needed, "and the address-space limit (ulimit -v) leaves " +
-                                                    std::to_string(room / kMiB) + " MiB");
+                                                    std::to_string(room / kMiB) + " MiB",
+                         smaller);
   }
   const std::size_t frameBytes =
       static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * (3 + 4) + 64 * kMiB;
   void* volatile probe = std::malloc(frameBytes);  // volatile: the compiler may not drop an unused malloc
   if (!probe)
-    return outOfMemory(width, height, needed, "and " + std::to_string(frameBytes / kMiB) + " MiB cannot be had");
+    return outOfMemory(width, height, needed, "and " + std::to_string(frameBytes / kMiB) + " MiB cannot be had",
+                       smaller);
   std::free(probe);
   return Status::ok();
 }
@@ -110,13 +112,13 @@ OffscreenRenderer::~OffscreenRenderer() = default;
 int OffscreenRenderer::width() const { return impl_->width; }
 int OffscreenRenderer::height() const { return impl_->height; }
 
-Status OffscreenRenderer::create(int width, int height, std::unique_ptr<OffscreenRenderer>& out) {
+Status OffscreenRenderer::create(int width, int height, std::unique_ptr<OffscreenRenderer>& out, const char* smaller) {
   if (width <= 0 || height <= 0) return Status::error("OSMesa: frame size must be positive");
   auto impl = std::make_unique<Impl>();
   impl->width = width;
   impl->height = height;
   impl->rgba.assign(static_cast<std::size_t>(width) * height * 4, 0);
-  if (Status s = checkMemory(width, height); !s) return s;
+  if (Status s = checkMemory(width, height, smaller); !s) return s;
   impl->context = OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, nullptr);
   if (!impl->context) return Status::error("OSMesa: cannot create an off-screen OpenGL context");
   if (Status s = impl->makeCurrent(); !s) return s;

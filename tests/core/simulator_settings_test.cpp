@@ -177,5 +177,52 @@ TEST(SimulatorSettings, AMisshapenSceneOrStateIsAnErrorNotACrash) {
   EXPECT_TRUE(sim->step(s.scene, s.state).isOk()) << "a mended scene steps on";
 }
 
+// An index changed in place between steps (no count changes) is found at the next step, as one
+// added: a step once checked the shape only when a count changed, and read out of bounds here.
+TEST(SimulatorSettings, AnIndexChangedInPlaceBetweenStepsIsAnError) {
+  TestScene s = testing::spring("symplectic-euler", 0.01, 1.0);  // edge 0 and its spring, force 0
+  s.scene.collision.type = CollisionType::ContinuousTime;
+  std::unique_ptr<Simulator> sim;
+  ASSERT_TRUE(Simulator::create(s.scene, {}, sim).isOk());
+  ASSERT_TRUE(sim->step(s.scene, s.state).isOk());
+  s.scene.edges[0].j = 100000000;
+  const State before = s.state;
+  const Status badEdge = sim->step(s.scene, s.state);
+  EXPECT_FALSE(badEdge.isOk());
+  EXPECT_NE(badEdge.message().find("step 2"), std::string::npos) << badEdge.message();
+  EXPECT_NE(badEdge.message().find("edge 0 joins particles 0 and 100000000"), std::string::npos) << badEdge.message();
+  EXPECT_EQ(s.state.x, before.x) << "nothing moves on a refused step";
+  s.scene.edges[0].j = 1;
+  ASSERT_TRUE(sim->step(s.scene, s.state).isOk()) << "a mended scene steps on";
+
+  // The spring's particles, changed in place: a force of the same count.
+  s.scene.forces[0] = std::make_unique<SpringForce>(0, 9, 1.0, 1.0, 0.0);
+  const Status badForce = sim->step(s.scene, s.state);
+  EXPECT_FALSE(badForce.isOk());
+  EXPECT_NE(badForce.message().find("force 0 ('springforce') acts on particles 0 and 9"), std::string::npos)
+      << badForce.message();
+}
+
+// Before its first step a simulator has no step's motion to check: no pairs (it read an empty
+// start state, out of bounds, before).
+TEST(SimulatorSettings, UnresolvedBeforeTheFirstStepIsEmpty) {
+  TestScene s;
+  s.scene.integrator = "symplectic-euler";
+  s.scene.collision.type = CollisionType::ContinuousTime;
+  addBody(s, 1.0, Vec2(0, 0), Vec2(10, 0));  // closing at 20 m/s: they meet within the first step
+  addBody(s, 1.0, Vec2(0.25, 0), Vec2(-10, 0));
+  for (const CollisionType type : {CollisionType::ContinuousTime, CollisionType::None}) {
+    s.scene.collision.type = type;
+    std::unique_ptr<Simulator> sim;
+    ASSERT_TRUE(Simulator::create(s.scene, {}, sim).isOk());
+    EXPECT_TRUE(sim->unresolved(s.scene, s.state).empty());
+    State state = s.state;
+    ASSERT_TRUE(sim->step(s.scene, state).isOk());
+    if (type == CollisionType::None) {  // after a step without collision handling they are found
+      EXPECT_FALSE(sim->unresolved(s.scene, state).empty());
+    }
+  }
+}
+
 }  // namespace
 }  // namespace fosssim

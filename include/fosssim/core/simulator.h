@@ -36,12 +36,15 @@ class EnergyWatch;
 
 class Simulator {
  public:
-  /// Builds the integrator and collision handler that `scene` names. Fails on unknown keywords.
+  /// Builds the integrator and collision handler that `scene` names. Fails on unknown keywords, on
+  /// a scene that does not hold together (checkSceneShape) and on values its scene file could not
+  /// hold (checkSceneValues: a mass of -1, a COR of 5), naming the element and value.
   static Status create(const Scene& scene, const SimulatorOptions& options, std::unique_ptr<Simulator>& out);
 
   /// Advances `state` by one step of `scene` (the scene this simulator was created for; an error
   /// if its settings changed since). On failure (non-finite state, solver failure, energy
-  /// blow-up) the message names the step and particle.
+  /// blow-up) the message names the step and particle. The scene's shape and values are checked
+  /// again at every step, as a scene built in code may have changed since (an edge's index).
   Status step(const Scene& scene, State& state, StepObserver* observer = nullptr);
 
   /// What the last step's collision handling did.
@@ -49,7 +52,7 @@ class Simulator {
   /// The rigid impact zone that moved `particle` in the last step, or -1.
   int zoneOf(int particle) const { return handler_ ? handler_->zoneOf(particle) : -1; }
   /// Pairs of the last step that still collide somewhere along its motion (--verify): `state`
-  /// is the state the last step produced. At most `limit` (0 = all).
+  /// is the state the last step produced. At most `limit` (0 = all). None before the first step.
   std::vector<Violation> unresolved(const Scene& scene, const State& state, size_t limit = 0) const;
   /// The state at the beginning of the last step.
   const State& lastStart() const { return start_; }
@@ -85,9 +88,6 @@ class Simulator {
   bool timing_ = false;
   ForceContext forces_;  ///< the forces' pair search (allPairs, threads) and storage
   State start_;  ///< the state at the beginning of the current step (scratch)
-  /// The scene's particles, edges and forces when step last checked its shape (checkSceneShape):
-  /// checked again, in full, only when one of these counts changes.
-  size_t checkedParticles_ = ~size_t{0}, checkedEdges_ = 0, checkedForces_ = 0;
   std::unique_ptr<EnergyWatch> energyWatch_;  ///< part of the verify phase
 };
 

@@ -15,6 +15,11 @@ namespace fosssim {
 /// loader rejects: the writer refuses them first).
 std::string formatNumber(double value);
 
+/// Why `text` cannot be an attribute's text in a scene file ("holds the control character U+0001
+/// (a scene file is XML text, which has none but tab and line ends)", or invalid UTF-8), or "":
+/// the writer's rule for every text it writes, for setters that take text to check at once.
+std::string xmlTextProblem(const std::string& text);
+
 /// The scene file's XML text. Loading it gives back `file` field for field: the scene (forces
 /// in the same order, collision settings, integrator, dt, duration), the initial state and the
 /// appearance. Fails, naming the element, when the scene cannot be expressed in the format:

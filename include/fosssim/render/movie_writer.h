@@ -16,6 +16,10 @@ namespace fosssim::render {
 /// The endings of the movies MovieWriter writes (lower case).
 inline constexpr const char* kMovieEndingList[] = {".mp4", ".mov", ".mkv", ".webm", ".avi", ".gif"};
 
+/// The frame rates a movie may have (--fps, record_movie's fps): slower than one frame in 100 s or
+/// faster than 1000 a second is a typo, not a movie.
+inline constexpr double kMinMovieFps = 0.01, kMaxMovieFps = 1000;
+
 /// kMovieEndingList for messages: ".mp4, .mov, ... or .gif".
 inline std::string movieEndings() {
   std::string text;

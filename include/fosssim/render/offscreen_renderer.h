@@ -12,8 +12,11 @@ namespace fosssim::render {
 
 class OffscreenRenderer {
  public:
-  /// Creates an OSMesa context with a width x height colour buffer.
-  static Status create(int width, int height, std::unique_ptr<OffscreenRenderer>& out);
+  /// Creates an OSMesa context with a width x height colour buffer. `smaller`: what the advice of
+  /// an out-of-memory message tells the caller to make smaller, in the caller's terms (the command
+  /// line's option; the Python module's arguments).
+  static Status create(int width, int height, std::unique_ptr<OffscreenRenderer>& out,
+                       const char* smaller = "--frame-size");
   ~OffscreenRenderer();
   OffscreenRenderer(const OffscreenRenderer&) = delete;
   OffscreenRenderer& operator=(const OffscreenRenderer&) = delete;
