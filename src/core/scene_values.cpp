@@ -3,6 +3,7 @@
 #include "core/short_number.h"
 
 #include <cmath>
+#include <limits>
 
 namespace fosssim {
 
@@ -52,6 +53,11 @@ std::string problem(const std::string& what, ValueRule rule, double value, const
   return what + ": " + valueProblem(rule, value, name) + ", got " + shortNumber(value);
 }
 
+/// keeps(Positive) without its division, for the values far from its edges (every particle's mass
+/// and radius, at every step): 1 / value is surely finite from 1e-300 up; from the smallest
+/// subnormal to there keeps() decides.
+bool surelyPositive(double value) { return value >= 1e-300 && value <= std::numeric_limits<double>::max(); }
+
 std::string particleProblem(const Scene& scene, int i) {
   const double m = scene.mass[2 * i];
   if (m == scene.mass[2 * i + 1] && keeps(ValueRule::Positive, m) && keeps(ValueRule::Positive, scene.radius[i]))
@@ -97,7 +103,12 @@ std::string settingsProblem(const Scene& scene) {
 
 Status checkSceneValues(const Scene& scene) {
   std::string why = settingsProblem(scene);
-  for (int i = 0; why.empty() && i < scene.numParticles(); ++i) why = particleProblem(scene, i);
+  const int n = scene.numParticles();
+  const double* mass = scene.mass.data();
+  const double* radius = scene.radius.data();
+  for (int i = 0; why.empty() && i < n; ++i)
+    if (!(surelyPositive(mass[2 * i]) && mass[2 * i] == mass[2 * i + 1] && surelyPositive(radius[i])))
+      why = particleProblem(scene, i);  // the words, or "" for a value near the rule's edge
   for (size_t e = 0; why.empty() && e < scene.edges.size(); ++e) {
     const Edge& edge = scene.edges[e];
     if (edge.i != edge.j && keeps(ValueRule::Positive, edge.radius)) continue;
