@@ -61,6 +61,19 @@ inline std::string located(int line, const std::string& element, const std::stri
   return kFile + ":" + std::to_string(line) + ": <" + element + "> attribute '" + attribute + "'";
 }
 
+/// `text` loaded (it must load: a failure is the test's).
+inline SceneFile loaded(const std::string& text) {
+  SceneFile file;
+  const Status s = parseScene(text, kFile, file);
+  EXPECT_TRUE(s.isOk()) << s.message();
+  return file;
+}
+
+/// Expects `text` (a message) to contain every fragment.
+inline void expectContains(const std::string& text, const std::vector<std::string>& fragments) {
+  for (const auto& f : fragments) EXPECT_NE(text.find(f), std::string::npos) << "missing \"" << f << "\" in: " << text;
+}
+
 /// Asserts that `text` fails to load with a message that contains every fragment.
 inline void expectError(const std::string& text, const std::vector<std::string>& fragments) {
   const std::string message = loadError(text);

@@ -13,13 +13,6 @@
 namespace fosssim::testing {
 namespace {
 
-SceneFile loaded(const std::string& text) {
-  SceneFile file;
-  const Status s = parseScene(text, kFile, file);
-  EXPECT_TRUE(s.isOk()) << s.message();
-  return file;
-}
-
 std::string scene(const std::string& integrator, double dt, const std::string& body) {
   return "<scene>\n  <duration time=\"1\"/>\n  <integrator type=\"" + integrator + "\" dt=\"" + std::to_string(dt) +
          "\"/>\n" + body + "</scene>\n";
@@ -35,10 +28,6 @@ const std::string kStiffSpring =  // two 1 kg particles: reduced mass 1/2
     "  <particle m=\"1\" px=\"2\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n"
     "  <edge i=\"0\" j=\"1\"/>\n"
     "  <springforce edge=\"0\" k=\"1e5\" l0=\"2\"/>\n";
-
-void expectContains(const std::string& text, const std::vector<std::string>& fragments) {
-  for (const auto& f : fragments) EXPECT_NE(text.find(f), std::string::npos) << "missing \"" << f << "\" in: " << text;
-}
 
 // omega = sqrt(10 / 1e-6) = 3162.28 rad/s; at dt = 0.01, omega dt = 31.6228, and the stable step
 // is 2 / omega = 6.32456e-4 s.

@@ -10,22 +10,11 @@
 namespace fosssim::testing {
 namespace {
 
-SceneFile loaded(const std::string& text) {
-  SceneFile file;
-  const Status s = parseScene(text, kFile, file);
-  EXPECT_TRUE(s.isOk()) << s.message();
-  return file;
-}
-
 /// The one warning of `text`, which must load.
 std::string onlyWarning(const std::string& text) {
   const SceneFile file = loaded(text);
   EXPECT_EQ(file.warningCount, 1) << text;
   return file.warnings.empty() ? "" : file.warnings.front();
-}
-
-void expectContains(const std::string& text, const std::vector<std::string>& fragments) {
-  for (const auto& f : fragments) EXPECT_NE(text.find(f), std::string::npos) << "missing \"" << f << "\" in: " << text;
 }
 
 TEST(UnusedInput, ElementsInsideElementsAreReported) {
