@@ -60,7 +60,8 @@ TEST(FastBox, RandomFastDisksInABoxKeepTheirEnergy) {
       const double r = uniform(rng, 0.05, 0.12);
       const Vec2 x(uniform(rng, -0.8, 0.8), uniform(rng, -0.8, 0.8));
       bool apart = true;
-      for (int q = 0; q < p; ++q) apart = apart && (at(s.state.x, q) - x).norm() > s.scene.radius[q] + r;
+      for (int q = 0; q < s.scene.numParticles(); ++q)  // the disks placed so far
+        apart = apart && (at(s.state.x, q) - x).norm() > s.scene.radius[q] + r;
       if (!apart) continue;  // the draw overlaps one placed already: one disk fewer
       addBody(s, std::pow(10.0, uniform(rng, -1.5, 1.5)), x, Vec2(uniform(rng, -100, 100), uniform(rng, -100, 100)), r);
     }
