@@ -19,7 +19,7 @@ set(FOSSSIM_PUBLIC_HEADERS
   # The leaf library (fosssim::math): polynomials, the interval solver ("the first t in [0, 1]
   # at which all these polynomials are positive"), continuous collision detection, geometry and
   # the failsafe's projections. It knows nothing of scenes and needs only Eigen.
-  math/ccd.h math/ccd_exact.h math/contact_projector.h math/contract.h math/geometry.h
+  math/ccd.h math/ccd_exact.h math/contact_projector.h math/contract.h math/exact_solve_limits.h math/geometry.h
   math/interval_solver.h math/polynomial.h math/real_roots.h math/zone_projection.h)
 if(EXISTS ${PROJECT_SOURCE_DIR}/include/fosssim/io/scene_writer.h)
   list(APPEND FOSSSIM_PUBLIC_HEADERS io/scene_writer.h)

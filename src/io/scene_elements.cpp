@@ -233,7 +233,7 @@ const std::vector<ElementSpec>& elementTable() {
       {"collision", "The run", false, Repeat::FirstCounts,
        "How collisions are detected and resolved (without it: none). The settings a type does not use are read and ignored.",
        {{"type", Kind::Text, "", nullptr, "one of the collision types listed below", "hybrid"},
-        {"COR", Kind::Fraction, "", "1", "coefficient of restitution: 1 elastic, 0 no bounce; in the default mode's continuous-time and hybrid impulses, below 1, resting contact (closing no faster than twice the step's kicks along its normal, at least half of that closing new in the step) does not bounce", "0.5"},
+        {"COR", Kind::Fraction, "", "1", "coefficient of restitution: 1 elastic, 0 no bounce; in the default mode's continuous-time and hybrid impulses, below 1, resting contact (closing no faster than twice the step's kicks along its normal, at least a quarter of that closing new in the step) does not bounce", "0.5"},
         {"maxiters", Kind::Number, "", "10",
          "hybrid: impulse passes per step (with --compat) or impulses per particle per step (default mode) "
          "before the failsafe takes over; read as a number and truncated; 0 or less: the failsafe at once",

@@ -155,11 +155,12 @@ bool ContactProjector::solve(const double* groupScale, double factor, double tol
       updates_ += maxUpdates;
       return false;
     }
-    // A row Gauss-Seidel keeps coming back to, of a body alone against obstacles, is solved
-    // exactly with the body's other rows (tried at its 32nd, 64th, 128th... update: a row that is
-    // not alone costs a look at its body's rows now and then, not at every update).
+    // A row Gauss-Seidel keeps coming back to, of a body alone against obstacles or of a small
+    // cluster of bodies, is solved exactly with the body's or cluster's other rows (tried at its
+    // 32nd, 64th, 128th... update: a row in neither costs a look at its bodies' rows now and
+    // then, not at every update).
     if (const int seen = ++revisits_[k]; seen >= kAloneAfterUpdates && (seen & (seen - 1)) == 0 &&
-                                         solveAlone(k, source != nullptr))
+                                         (solveAlone(k, source != nullptr) || solveCluster(k, source)))
       continue;
     const double lambda = row.lambda - w / row.diag;
     apply(k, 0.0 >= lambda || std::isnan(lambda) ? 0.0 : lambda);

@@ -165,9 +165,18 @@ ProjectionResult ZoneProjector::project(const std::vector<double>& inverseMass, 
 // A_SS is nonsingular (a vertex of the multiplier polyhedron), so singular A_SS are skipped.
 bool projectByEnumeration(const std::vector<double>& inverseMass, const std::vector<ConstraintRow>& rows,
                           std::vector<Vec2>& v) {
+  std::vector<double> impulses;
+  return projectByEnumeration(inverseMass, rows, v, 1e-9, impulses);
+}
+
+bool projectByEnumeration(const std::vector<double>& inverseMass, const std::vector<ConstraintRow>& rows,
+                          std::vector<Vec2>& v, double relTol, std::vector<double>& impulses) {
   const int m = static_cast<int>(rows.size());
   const int n = 2 * static_cast<int>(v.size());
   assert(m <= 20);
+  impulses.assign(m, 0.0);
+  // A_SS has rank at most the movable bodies' dimensions: larger active sets are singular.
+  const int dims = 2 * static_cast<int>(std::count_if(inverseMass.begin(), inverseMass.end(), [](double w) { return w != 0.0; }));
   Eigen::MatrixXd G = Eigen::MatrixXd::Zero(m, n);
   Eigen::VectorXd vt(n), minv(n);
   for (int b = 0; b < static_cast<int>(v.size()); ++b) {
@@ -181,15 +190,16 @@ bool projectByEnumeration(const std::vector<double>& inverseMass, const std::vec
 
   const double speed = zoneSpeed(rows, v);
   if (speed == 0.0) return true;
-  constexpr double kRelTol = 1e-9;
   Eigen::VectorXd scale(m);
-  for (int k = 0; k < m; ++k) scale(k) = kRelTol * rowNorm(rows[k]) * speed;
+  for (int k = 0; k < m; ++k) scale(k) = relTol * rowNorm(rows[k]) * speed;
 
+  std::vector<int> active;
   for (unsigned mask = 0; mask < (1u << m); ++mask) {
-    std::vector<int> active;
+    active.clear();
     for (int k = 0; k < m; ++k)
       if (mask & (1u << k)) active.push_back(k);
     const int s = static_cast<int>(active.size());
+    if (s > dims) continue;
     Eigen::VectorXd lambda = Eigen::VectorXd::Zero(m);
     if (s > 0) {
       Eigen::MatrixXd Ass(s, s);
@@ -207,12 +217,16 @@ bool projectByEnumeration(const std::vector<double>& inverseMass, const std::vec
       if (!ok) continue;
       for (int i = 0; i < s; ++i) lambda(active[i]) = std::max(0.0, ls(i));
     }
-    const Eigen::VectorXd w = A * lambda + b;
+    // The rows' velocities from the velocities, not as A lambda + b: with bodies of very
+    // different masses A's entries are huge and their products cancel to w, rounding to far more
+    // than the slack (a disk 10^6 times lighter than its neighbour: 1e-10 of the speeds).
+    const Eigen::VectorXd vs = vt + minv.asDiagonal() * (G.transpose() * lambda);
+    const Eigen::VectorXd w = G * vs;
     bool feasible = true;
     for (int k = 0; k < m && feasible; ++k) feasible = w(k) >= -scale(k);
     if (!feasible) continue;
-    const Eigen::VectorXd vs = vt + minv.asDiagonal() * (G.transpose() * lambda);
     for (int bIdx = 0; bIdx < static_cast<int>(v.size()); ++bIdx) v[bIdx] = vs.segment<2>(2 * bIdx);
+    for (int k = 0; k < m; ++k) impulses[k] = lambda(k);
     return true;
   }
   return false;

@@ -43,7 +43,7 @@ struct HandlerOptions {
   /// no particle sleeps is identical with it on or off. --compat never sleeps.
   bool sleep = true;
   /// Default mode: Gauss-Seidel updates a failsafe solve may spend per row it adds (0: the
-  /// tuned kZoneUpdatesPerRow of src/core/collision/contact_zones.h). For tests and measurements:
+  /// tuned kZoneUpdatesPerRow of src/core/collision/zone_tuning.h). For tests and measurements:
   /// a starved failsafe must still leave no contact closing unseen, only cost more events.
   long zoneUpdatesPerRow = 0;
   /// Default mode: a failsafe solve that ends on its budget holds the particles it has brought

@@ -19,11 +19,12 @@
 
 #include <vector>
 
+#include "fosssim/math/exact_solve_limits.h"
 #include "fosssim/math/zone_projection.h"
 
 namespace fosssim::math {
 
-class ContactProjector {
+class ContactProjector : public ExactSolveLimits {
  public:
   /// Makes a stale row again for the current instant. Why: an impulse conserves angular momentum
   /// only if it acts along the line through the contact at the instant it is applied. A row
@@ -68,26 +69,6 @@ class ContactProjector {
   /// Replaces row `index` (a contact's normal of a later time), its impulse so far kept applied
   /// to the velocities (and counted in totalImpulse) and its multiplier restarted at 0; queues it.
   void setRow(int index, const ConstraintRow& row, int group = 0);
-
-  /// A body whose rows move no other body (a disk against walls, fixed particles or sleepers)
-  /// has them solved at once, exactly, when it has at most this many: its velocity projected
-  /// onto the polygon they allow (solveAlone, in the .cpp). More rows: Gauss-Seidel, as any.
-  static constexpr int kAloneRows = 8;
-  /// That projection's feasibility slack: a row counts as satisfied at G_k v >= -this |G_k| V, V
-  /// the largest speed among the body's unconstrained velocity and its obstacles' (rounding of
-  /// the projection's own products is ~1e-16 relative).
-  static constexpr double kAloneSlack = 1e-12;
-  /// Two rows whose normals are closer to parallel than this (|sin| of their angle) make no
-  /// corner for solveAlone: where their lines meet is lost to rounding.
-  static constexpr double kAloneParallel = 1e-9;
-  /// solveAlone is tried for a row at this many Gauss-Seidel updates since the last takeChanged
-  /// (and at twice, four times... as many): rows that Gauss-Seidel settles leave it alone, those
-  /// it keeps coming back to (a disk in a narrow wedge: hundreds) meet it soon. Looking at a
-  /// body's rows at every update cost rain 1,000 a sixth more instructions (cachegrind); from the
-  /// 4th update, the exact solves changed how piles settle (pile-rest 1,000 +9% instructions);
-  /// from the 32nd, rain, chains, pile-rest and pile-high-cor0.5 at 1,000 changed by -1.5% to
-  /// +4.3%, as any change of their trajectories does.
-  static constexpr int kAloneAfterUpdates = 32;
 
   /// Gauss-Seidel updates from the queued rows until every row it reaches is within `tolerance`
   /// (ZoneProjector's residual, with V = speedScale), or `maxUpdates` updates: false then (the
@@ -312,6 +293,14 @@ class ContactProjector {
   /// not so (another body moves in one, the body is locked to an axis, a row waits to be made
   /// again for this instant) or when the projection is degenerate: Gauss-Seidel then goes on.
   bool solveAlone(int k, bool refreshing);
+  /// The same for row k's cluster: at most kClusterBodies movable bodies (none locked) whose at
+  /// most kClusterRows rows move no other body, projected exactly (see the .cpp); its rows set
+  /// at an earlier instant are made again first from `source` (if any).
+  bool solveCluster(int k, RowSource* source);
+  std::vector<int> clusterRows_, clusterStale_, clusterSlots_;  ///< solveCluster's scratch: its rows, those to make again, bodies then obstacles
+  std::vector<double> clusterMass_, clusterImpulses_;  ///< ... their inverse masses, the rows' multipliers
+  std::vector<Vec2> clusterVelocity_;                  ///< ... their velocities
+  std::vector<ConstraintRow> clusterLocal_;            ///< ... the rows on local indices
   /// Moves velocities and multipliers back to lambda0 + f (lambda - lambda0) (see capEnergy).
   void moveBack(double f);
   /// Row k's multiplier is about to change: remembers where it started (capEnergy).
@@ -365,9 +354,13 @@ class ContactProjector {
   /// What one try of restitute's did: no row had a coefficient and an impulse, the pushes were
   /// kept, or they were taken back (they would have added energy).
   enum class Push { Nothing, Kept, TakenBack };
+  /// One try of restitute's with coefficients e(k); `shorten`: pushes that would add energy are
+  /// scaled down to where they add none (shortenPushes) before they are taken back whole.
   template <class Coefficient>
-  Push pushAgain(const Coefficient& e);
+  Push pushAgain(const Coefficient& e, bool shorten);
+  bool shortenPushes();
   std::vector<std::pair<int, Vec2>> restituted_;  ///< restitute's scratch: slots and their velocities before it
+  std::vector<std::pair<int, Vec2>> pushedFrom_;  ///< shortenPushes' scratch: each pushed slot once, its velocity before
   std::vector<int> work_;     ///< FIFO of row indices: work_[head_, tail_) (the rest is room)
   size_t head_ = 0, tail_ = 0;
   std::vector<int> changed_;  ///< body slots changed since the last takeChanged

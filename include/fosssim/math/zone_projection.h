@@ -95,5 +95,10 @@ class ZoneProjector {  // owns scratch so repeated solves do not allocate
 /// Reference solver for tests: enumerates active sets (feasible for up to ~14 rows), exact KKT; returns false if none found.
 bool projectByEnumeration(const std::vector<double>& inverseMass, const std::vector<ConstraintRow>& rows,
                           std::vector<Vec2>& v);
+/// The same with a row counted as satisfied at w_k >= -relTol |G_k| V (V: the largest speed of
+/// the rows' bodies), writing each row's multiplier to `impulses`: ContactProjector's exact solve
+/// of a few bodies (solveCluster) is this enumeration.
+bool projectByEnumeration(const std::vector<double>& inverseMass, const std::vector<ConstraintRow>& rows,
+                          std::vector<Vec2>& v, double relTol, std::vector<double>& impulses);
 
 }  // namespace fosssim::math

@@ -269,10 +269,14 @@ void EventHandler::respond(const Scene& scene, const Event& e, State& state, Ste
   ctx.log->impulses.push_back(Impulse{keyKind(e.key), i, other, e.normal, e.t});
   for (int k = 0; k < change.count; ++k) {
     const int p = change.particle[k];
+    InstantEvents& now = atInstant_[p];
+    // Its quota counts its first event and those close on its last, in time or in the distance it
+    // travelled since (kContinuousEventsPerParticle, kQuotaFreeTravel).
+    const double since = now.t < 0.0 ? 0.0 : e.t - now.t;
+    if (now.t < 0.0 || since < 1.0 / eventsPerParticle_ || since * motion_.rate(p).norm() < kQuotaFreeTravel * scene.radius[p])
+      ++events_[p];
     at(state.v, p) += change.dv[k];
     motion_.setRate(p, e.t, motion_.rate(p) + h * change.dv[k]);
-    ++events_[p];
-    InstantEvents& now = atInstant_[p];
     now.count = now.t == e.t ? now.count + 1 : 1;
     now.t = e.t;
     changed_.push_back(p);

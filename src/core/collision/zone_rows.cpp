@@ -35,13 +35,14 @@ bool ContactZones::near(const Scene& scene, const StepMotion& motion, uint64_t k
   switch (keyKind(key)) {
     case PairKind::ParticleParticle: {
       const double rs = (scene.radius[i] + scene.radius[other]) * (1.0 + kTouchingSlack);
-      const double reach = rs + left * (motion.rate(other) - motion.rate(i)).norm();
+      const double reach = rs + std::min(left * (motion.rate(other) - motion.rate(i)).norm(), kZoneReach * rs);
       return overlap(box(i, rs), box(other, 0.0)) && (motion.at(other, T) - x).squaredNorm() <= reach * reach;
     }
     case PairKind::ParticleEdge: {
       const Edge& e = scene.edges[other];
       const double rs = (scene.radius[i] + e.radius) * (1.0 + kTouchingSlack);
-      const double reach = rs + left * (motion.rate(i).norm() + motion.rate(e.i).norm() + motion.rate(e.j).norm());
+      const double reach =
+          rs + std::min(left * (motion.rate(i).norm() + motion.rate(e.i).norm() + motion.rate(e.j).norm()), kZoneReach * rs);
       const Box a = box(e.i, 0.0), b = box(e.j, 0.0);
       const Box edge{std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
       return overlap(box(i, rs), edge) &&
@@ -52,7 +53,7 @@ bool ContactZones::near(const Scene& scene, const StepMotion& motion, uint64_t k
       const HalfPlane& h = scene.halfplanes[other];
       const Vec2 n = unit(h.normal);
       const double r = scene.radius[i] * (1.0 + kTouchingSlack);
-      const double s0 = (x - h.point).dot(n), s1 = s0 + left * motion.rate(i).dot(n);
+      const double s0 = (x - h.point).dot(n), s1 = s0 + std::clamp(left * motion.rate(i).dot(n), -kZoneReach * r, kZoneReach * r);
       return std::min(s0, s1) <= r && std::max(s0, s1) >= -r;
     }
   }
@@ -188,7 +189,7 @@ double ContactZones::kicksAlong(const Scene& scene, uint64_t key, const Vec2& n,
 // The closing speed the step gave the contact is its closing now less the one its particles had
 // at the step's start (before their kicks). A disk resting on the floor or on a pile had none and
 // gained all of it; a disk landing slowly (start closing u below one kick g h, closing now u + g h)
-// gained at least half, as the closing bound alone already asks of it (u + g h <= 2 g h); two disks
+// gained more than a quarter, as the closing bound alone already asks of it (u + g h <= 2 g h); two disks
 // falling together into each other close at their start speed u and gained nothing, whatever
 // their kicks, so they bounce at any u above a hundredth of a kick (kRestingStartKicks).
 bool ContactZones::resting(const Scene& scene, uint64_t key, const Vec2& n, double alpha, double closing) const {
