@@ -70,5 +70,31 @@ TEST(PairQuery, AParticleEdgePairIsNeverSettledByTheBound) {
   EXPECT_FALSE(cannotDeepen(PairKind::ParticleHalfPlane, 1.0, 0.5, 1.0, 1.0));
 }
 
+// A disk of radius 0.1 overlapping a still edge along the x axis (radius 0) 0.08 deep eases to
+// 0.01 deep at t = 0.5 and sinks back to 0.05 deep at t = 1, along straight pieces. Its overlap
+// at the end is shallower than at the start, yet it deepened by 0.04 after it eased: that is
+// the deepening (--verify reports such a second approach). Depth is 0.1 - y, so the least depth
+// before t = 1 is 0.01 (at the sample t = 0.5) and the rise is 0.05 - 0.01.
+TEST(PairQuery, AnOverlapThatEasesAndDeepensAgainDeepensFromWhereItEased) {
+  TestScene s;
+  addBody(s, 1.0, Vec2(0, 0.02), Vec2::Zero(), 0.1);
+  addBody(s, 1.0, Vec2(-1, 0), Vec2::Zero(), 0.0);
+  addBody(s, 1.0, Vec2(1, 0), Vec2::Zero(), 0.0);
+  s.scene.edges.push_back(Edge{1, 2, 0.0});
+  const auto position = [&](int p, double t) -> Vec2 {
+    if (p != 0) return at(s.state.x, p);
+    const double y = t <= 0.5 ? 0.02 + (t / 0.5) * 0.07 : 0.09 - ((t - 0.5) / 0.5) * 0.04;
+    return Vec2(0.0, y);
+  };
+  const uint64_t key = pairKey(0, PairKind::ParticleEdge, 0);
+  double length = 0, when = -1;
+  EXPECT_NEAR(pairDeepening(s.scene, key, position, 0.0, 1.0, length, &when), 0.04, 1e-15);
+  EXPECT_EQ(when, 1.0);
+  // From t = 0.5 on, it only sinks: 0.04 as well, from an overlap of 0.01 at t.
+  EXPECT_NEAR(pairDeepening(s.scene, key, position, 0.5, 1.0, length), 0.04, 1e-15);
+  // Easing all the way (t up to 0.5) is no deepening.
+  EXPECT_LT(pairDeepening(s.scene, key, position, 0.0, 0.5, length), 0.0);
+}
+
 }  // namespace
 }  // namespace fosssim::testing

@@ -10,6 +10,8 @@
 #include "fosssim/math/geometry.h"
 
 #include <algorithm>
+#include <limits>
+#include <vector>
 
 namespace fosssim {
 
@@ -93,22 +95,19 @@ double pairDepth(const Scene& scene, uint64_t key, Position&& position) {
   return 0;
 }
 
-/// The time in [t, tb] at which pair `key` overlaps deepest, with its particles at
-/// position(p, s) at time s; `deepest` receives that depth. Sampled: geometrically closer to t (a
-/// pair passing through penetrates soon after its contact) and evenly over [t, tb] (an edge's
-/// rotation deepens slowly).
-template <class Position>
-double deepestTime(const Scene& scene, uint64_t key, Position&& position, double t, double tb, double& deepest) {
-  auto depthAt = [&](double s) { return pairDepth(scene, key, [&](int p) { return position(p, s); }); };
-  double best = tb;
-  deepest = depthAt(tb);
-  auto sample = [&](double s) {
-    const double d = depthAt(s);
-    if (d > deepest) deepest = d, best = s;
-  };
-  for (double f = 0.5; f > 1e-12; f *= 0.5) sample(t + f * (tb - t));
-  for (int k = 1; k < 32; ++k) sample(t + k / 32.0 * (tb - t));
-  return best;
+/// The fractions of [t, tb] at which pairDeepening samples a pair, in increasing order:
+/// geometrically closer to t (a pair passing through penetrates soon after its contact: 2^-39 ..
+/// 2^-1) and evenly (an edge's rotation deepens slowly: k/32), then tb itself.
+inline const std::vector<double>& deepeningSamples() {
+  static const std::vector<double> fractions = [] {
+    std::vector<double> f;
+    for (double g = 0.5; g > 1e-12; g *= 0.5) f.push_back(g);
+    for (int k = 1; k <= 32; ++k) f.push_back(k / 32.0);
+    std::sort(f.begin(), f.end());
+    f.erase(std::unique(f.begin(), f.end()), f.end());
+    return f;
+  }();
+  return fractions;
 }
 
 /// Pair `key`'s length scale at time t (its particles' coordinates and radii), which
@@ -121,17 +120,27 @@ double pairLength(const Scene& scene, uint64_t key, Position&& position, double 
   return length;
 }
 
-/// How much pair `key` deepens its overlap between t and tb beyond the overlap at t (or beyond
-/// touching); `length` receives the pair's length scale (coordinates and radii) at t, and `when`
-/// (optional) the time of the deepest overlap.
+/// How much pair `key` deepens its overlap between t and tb, with its particles at position(p,
+/// s) at time s: the largest amount by which its depth at a sample s exceeds the least depth it
+/// had between t and s (or touching, if it was apart then). An overlap the pair already has does
+/// not count, but one that eases and then deepens again does, from where it eased to (an edge
+/// rotating back into a disk it overlaps: measured from t alone, the deeper overlap at t hid the
+/// second approach, which --verify then found). `length` receives the pair's length scale at t
+/// and `when` (optional) the time of the deepest point of the largest rise (tb if none).
 template <class Position>
 double pairDeepening(const Scene& scene, uint64_t key, Position&& position, double t, double tb, double& length,
                      double* when = nullptr) {
-  double deepest = 0;
-  const double td = deepestTime(scene, key, position, t, tb, deepest);
-  if (when) *when = td;
+  auto depthAt = [&](double s) { return pairDepth(scene, key, [&](int p) { return position(p, s); }); };
+  double least = std::max(depthAt(t), 0.0), rise = -std::numeric_limits<double>::infinity(), best = tb;
+  for (double f : deepeningSamples()) {
+    const double s = f < 1.0 ? t + f * (tb - t) : tb;
+    const double d = depthAt(s);
+    if (d - least > rise) rise = d - least, best = s;
+    least = std::min(least, std::max(d, 0.0));
+  }
+  if (when) *when = best;
   length = pairLength(scene, key, position, t);
-  return deepest - std::max(pairDepth(scene, key, [&](int p) { return position(p, t); }), 0.0);
+  return rise;
 }
 
 /// Whether a particle-particle or particle-half-plane pair whose particles move in straight lines
