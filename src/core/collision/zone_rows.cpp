@@ -95,12 +95,15 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
   // scene's COR, not only the projection's inelastic answer (a COR 1 ball wedged between two
   // walls stopped dead). Resting contact does not bounce (kRestingBounceKicks, as for events),
   // and a curving row's normal is not the one it closes along now.
-  // A row that is not closing at all (apart, or opening: the second wall of a wedge) takes the
-  // COR only if a hit loads it and the hit's restitution alone would add energy
-  // (ContactProjector::restitute).
+  // A row that is not closing at all (apart, or opening: the second wall of a wedge) takes a
+  // COR below 1 only if a hit loads it and the hit's restitution alone would add energy
+  // (ContactProjector::restitute). At COR 1 every row restitutes: Moreau's pushes with e = 1 on
+  // all of an exact projection's impulses keep the energy (KE(v + 2 dv) - KE(v) = 2 lambda.G(v +
+  // dv) = 0 by complementarity), while a loaded row left inelastic loses what it took (a light
+  // disk pushed by a hit into a wall it was not closing on: a tenth of a fast box's energy).
   double restitution = 0.0, loaded = 0.0;
   if (cor_ > 0.0 && !curving) {
-    if (closing <= 0.0) loaded = cor_;
+    if (closing <= 0.0 && cor_ < 1.0) loaded = cor_;
     else if (cor_ >= 1.0 || !resting(scene, key, n, alpha, closing / h_)) restitution = cor_;
   }
   if (const int* known = rowOf_.find(key)) {
