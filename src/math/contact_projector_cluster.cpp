@@ -20,7 +20,7 @@ namespace fosssim::math {
 // v0 the cluster's velocities without its rows' impulses. At most 2^kClusterRows systems of at
 // most 2 kClusterBodies unknowns: tried, like solveAlone, only for rows Gauss-Seidel keeps coming
 // back to.
-bool ContactProjector::solveCluster(int k, RowSource* source) {
+bool ContactProjector::solveCluster(int k, RowSource* source, bool anyMasses) {
   // The cluster: row k's movable bodies and, through their rows, every movable body they meet.
   // Rows set at an earlier instant are made again first, as Gauss-Seidel makes them when it
   // reaches them (RowSource), and the cluster is gathered again with their new normals.
@@ -64,7 +64,7 @@ bool ContactProjector::solveCluster(int k, RowSource* source) {
   double lightest = 0.0, heaviest = std::numeric_limits<double>::infinity();  // as inverse masses
   for (int i = 0; i < nb; ++i)
     lightest = std::max(lightest, inverseMass_[bodies[i]]), heaviest = std::min(heaviest, inverseMass_[bodies[i]]);
-  if (!(lightest >= kClusterMassRatio * heaviest)) return false;  // before anything changes
+  if (!anyMasses && !(lightest >= kClusterMassRatio * heaviest)) return false;  // before anything changes
   if (!stale.empty()) {
     ConstraintRow now;
     for (int q : stale) {

@@ -295,8 +295,9 @@ class ContactProjector : public ExactSolveLimits {
   bool solveAlone(int k, bool refreshing);
   /// The same for row k's cluster: at most kClusterBodies movable bodies (none locked) whose at
   /// most kClusterRows rows move no other body, projected exactly (see the .cpp); its rows set
-  /// at an earlier instant are made again first from `source` (if any).
-  bool solveCluster(int k, RowSource* source);
+  /// at an earlier instant are made again first from `source` (if any). Only for bodies of
+  /// masses kClusterMassRatio apart, unless `anyMasses` (a solve about to end on its budget).
+  bool solveCluster(int k, RowSource* source, bool anyMasses = false);
   std::vector<int> clusterRows_, clusterStale_, clusterSlots_;  ///< solveCluster's scratch: its rows, those to make again, bodies then obstacles
   std::vector<double> clusterMass_, clusterImpulses_;  ///< ... their inverse masses, the rows' multipliers
   std::vector<Vec2> clusterVelocity_;                  ///< ... their velocities

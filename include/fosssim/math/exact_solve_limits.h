@@ -30,8 +30,8 @@ struct ExactSolveLimits {
   /// move no other body are projected exactly together, as solveAlone does for one
   /// (solveCluster, contact_projector_cluster.cpp): bodies of very different masses squeezed
   /// together stall Gauss-Seidel. 2^kClusterRows small systems at most, tried as rarely.
-  static constexpr int kClusterBodies = 3;
-  static constexpr int kClusterRows = 10;
+  static constexpr int kClusterBodies = 4;
+  static constexpr int kClusterRows = 12;
   /// The enumeration's feasibility slack there, relative as kAloneSlack is: nearly parallel rows
   /// of several bodies left no active set feasible to 1e-12 after their systems' rounding (one
   /// random cluster in eight); Gauss-Seidel settles what is left to the solve's tolerance.
