@@ -28,6 +28,9 @@ struct Setup {
 class Builder {
  public:
   Builder(BenchScene& s, unsigned seed) : s_(s), rng_(seed) {}
+  /// Every scene calls this once a statement (x's jitter before y's): two calls in one expression,
+  /// as in Vec2(uniform(...), uniform(...)), come in an order the compiler picks (gcc right to left,
+  /// clang left to right), and a seed must give the same scene under both.
   double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng_); }
   int add(double m, Vec2 x, Vec2 v, double r, bool fixed = false) {
     addParticle(s_.scene, m, fixed, r);
@@ -77,11 +80,12 @@ void jitteredGridOverV(Builder& b, int n, double jitterShare, bool liftByHeight)
   const double width = (columns - 1) * spacing, height = (rows - 1) * spacing;
   const double bottom = 0.5 * width + 4 * r + (liftByHeight ? height : 0.0);
   const double jitter = jitterShare * (spacing - 2 * r);
-  for (int k = 0; k < n; ++k)
-    b.add(1.0,
-          Vec2(-0.5 * width + (k % columns) * spacing + b.uniform(-jitter, jitter),
-               bottom + (k / columns) * spacing + b.uniform(-jitter, jitter)),
-          Vec2::Zero(), r);
+  for (int k = 0; k < n; ++k) {
+    const double dx = b.uniform(-jitter, jitter);
+    const double dy = b.uniform(-jitter, jitter);
+    b.add(1.0, Vec2(-0.5 * width + (k % columns) * spacing + dx, bottom + (k / columns) * spacing + dy), Vec2::Zero(),
+          r);
+  }
   b.plane(Vec2(0, 0), Vec2(1, 1));
   b.plane(Vec2(0, 0), Vec2(-1, 1));
 }
@@ -100,8 +104,9 @@ void gas(Builder& b, int n, Setup& setup) {
   for (int k = 0; k < n; ++k) {
     const Vec2 cell(-0.5 * side + (k % columns + 0.5) * spacing, -0.5 * side + (k / columns + 0.5) * spacing);
     const double angle = b.uniform(0, 2 * kPi), speed = b.uniform(0.0, 1.0);
-    b.add(1.0, cell + Vec2(b.uniform(-jitter, jitter), b.uniform(-jitter, jitter)),
-          speed * Vec2(std::cos(angle), std::sin(angle)), r);
+    const double dx = b.uniform(-jitter, jitter);
+    const double dy = b.uniform(-jitter, jitter);
+    b.add(1.0, cell + Vec2(dx, dy), speed * Vec2(std::cos(angle), std::sin(angle)), r);
   }
   const double half = 0.5 * side;
   b.plane(Vec2(0, -half), Vec2(0, 1));
@@ -200,11 +205,12 @@ void pileRest(Builder& b, int n, Setup& setup) {
   const double width = m * pitchX;
   for (int k = 0, row = 0; k < n; ++row) {
     const bool full = row % 2 == 0;
-    for (int i = 0; i < (full ? m : m - 1) && k < n; ++i, ++k)
-      b.add(1.0,
-            Vec2(-0.5 * width + (i + (full ? 0.5 : 1.0)) * pitchX + b.uniform(-0.01 * r, 0.01 * r),
-                 1.03 * r + row * pitchY + b.uniform(-0.02 * r, 0.02 * r)),
+    for (int i = 0; i < (full ? m : m - 1) && k < n; ++i, ++k) {
+      const double dx = b.uniform(-0.01 * r, 0.01 * r);
+      const double dy = b.uniform(-0.02 * r, 0.02 * r);
+      b.add(1.0, Vec2(-0.5 * width + (i + (full ? 0.5 : 1.0)) * pitchX + dx, 1.03 * r + row * pitchY + dy),
             Vec2::Zero(), r);
+    }
   }
   b.plane(Vec2(0, 0), Vec2(0, 1));
   b.plane(Vec2(-0.5 * width, 0), Vec2(1, 0));  // the walls' points on the floor: see box2d_pile.cpp

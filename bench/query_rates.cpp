@@ -91,7 +91,13 @@ Workload fromScene(const std::string& scene, int n, long steps, PairKind kind) {
 Workload nearPairs(PairKind kind, int count) {
   std::mt19937 rng(2024);
   auto u = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
-  auto point = [&](double extent) { return Vec2(u(-extent, extent), u(-extent, extent)); };
+  // x drawn before y, and every draw in its own statement: a call's arguments and a sum's operands are
+  // evaluated in an order the compiler picks (gcc right to left, clang left to right).
+  auto point = [&](double extent) {
+    const double x = u(-extent, extent);
+    const double y = u(-extent, extent);
+    return Vec2(x, y);
+  };
   Workload w;
   const int per = kind == PairKind::ParticleParticle ? 2 : 3;
   w.qs.resize(2 * per * count);
@@ -109,7 +115,9 @@ Workload nearPairs(PairKind kind, int count) {
       const double angle = u(0, 6.283185307179586), re = u(0.015, 0.05);
       at(w.qs, p + 1) = point(1.0);
       at(w.qs, p + 2) = at(w.qs, p + 1) + u(0.2, 1.0) * Vec2(std::cos(angle), std::sin(angle));
-      at(w.qs, p) = at(w.qs, p + 1) + u(0, 1) * (at(w.qs, p + 2) - at(w.qs, p + 1)) + point(1.5 * (r1 + re));
+      const double along = u(0, 1);
+      const Vec2 off = point(1.5 * (r1 + re));
+      at(w.qs, p) = at(w.qs, p + 1) + along * (at(w.qs, p + 2) - at(w.qs, p + 1)) + off;
       w.scene.edges.push_back(Edge{p + 1, p + 2, re});
     }
     for (int m = 0; m < per; ++m) at(w.qe, p + m) = at(w.qs, p + m) + 0.01 * point(5.0);

@@ -26,7 +26,13 @@ constexpr int kInputs = 4096;  // distinct inputs, one pass over them per iterat
 
 std::mt19937 rng;
 double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
-Vec2 point(double extent) { return Vec2(uniform(-extent, extent), uniform(-extent, extent)); }
+/// x drawn before y, and every draw in its own statement: a call's arguments and a sum's operands
+/// are evaluated in an order the compiler picks (gcc right to left, clang left to right).
+Vec2 point(double extent) {
+  const double x = uniform(-extent, extent);
+  const double y = uniform(-extent, extent);
+  return Vec2(x, y);
+}
 Vec2 displacement() { return 0.01 * point(5.0); }
 Vec2 around(const Vec2& c, double reach) { return c + point(reach); }
 
@@ -61,8 +67,13 @@ PHInput makePH(bool near) {
   in.p = point(1.0);
   in.r = uniform(0.02, 0.1);
   const Vec2 unit = in.m.normalized();
-  in.x1 = near ? in.p + uniform(-1.5, 1.5) * in.r * unit + 0.5 * Vec2(-unit.y(), unit.x()) * uniform(-1, 1)
-               : point(1.0);
+  if (near) {
+    const double along = uniform(-1.5, 1.5);
+    const double across = uniform(-1, 1);
+    in.x1 = in.p + along * in.r * unit + 0.5 * Vec2(-unit.y(), unit.x()) * across;
+  } else {
+    in.x1 = point(1.0);
+  }
   in.d1 = displacement();
   return in;
 }

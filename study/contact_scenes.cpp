@@ -161,6 +161,9 @@ ContactProblem corridor(bool quick) {
 class Lcg {
  public:
   explicit Lcg(unsigned seed) : state_(seed) {}
+  /// Called once a statement by the scenes: two calls in one expression, as in
+  /// Vec2(uniform(...), uniform(...)), come in an order the compiler picks (gcc right to left, clang
+  /// left to right), and a scene must be the same under both.
   double uniform(double lo, double hi) {
     state_ = state_ * 1103515245u + 12345u;
     return lo + (hi - lo) * ((state_ >> 8) & 0xFFFFFF) / double(0xFFFFFF);
@@ -196,10 +199,13 @@ ContactProblem slot(bool quick) {
       x.edge(a, b, 0.005);
     }
     for (int k = 0; k < kSlotDisks; ++k) {
-      const double vy = rng.uniform(kSlotSlowest, kSlotFastest) * (rng.uniform(0, 1) < 0.5 ? -1 : 1);
+      const double speed = rng.uniform(kSlotSlowest, kSlotFastest);
+      const double vy = speed * (rng.uniform(0, 1) < 0.5 ? -1 : 1);
       const double mass = rng.uniform(0.5, 2);
-      const Vec2 pos(-0.5 + 0.5 * k + rng.uniform(-0.1, 0.1), rng.uniform(0.03, 0.07));
-      x.particle(pos, Vec2(rng.uniform(-2, 2), vy), mass, false, 0.02);
+      const double px = -0.5 + 0.5 * k + rng.uniform(-0.1, 0.1);
+      const double py = rng.uniform(0.03, 0.07);
+      const double vx = rng.uniform(-2, 2);
+      x.particle(Vec2(px, py), Vec2(vx, vy), mass, false, 0.02);
     }
     return x;
   };
@@ -333,7 +339,9 @@ ContactProblem clump(bool quick) {
     for (int i = 0; i < side; ++i)
       for (int j = 0; j < side; ++j) {
         const Vec2 site((2 * r + gap) * i + (j % 2) * (r + gap / 2), (2 * r + gap) * 0.87 * j);
-        const Vec2 v(rng.uniform(-1, 1), rng.uniform(-1, 1));
+        const double vx = rng.uniform(-1, 1);
+        const double vy = rng.uniform(-1, 1);
+        const Vec2 v(vx, vy);
         const double m = rng.uniform(0.5, 2.0), radius = r * rng.uniform(0.9, 1.0);
         x.particle(site - centre, v - 2.0 * (site - centre), m, false, radius);
       }

@@ -114,6 +114,9 @@ const char* shotOutcomeName(ShotOutcome outcome) {
 Shot randomShot(ShotTarget target, int i) {
   // One generator per target and shot: a shot does not depend on how many were drawn before it.
   std::mt19937_64 rng(0x5eed0000u + 1000u * static_cast<unsigned>(target) + static_cast<unsigned>(i));
+  // Called once a statement (or in a ?: branch): two calls in one expression, as in
+  // uniform(...) * uniform(...), come in an order the compiler picks (gcc right to left, clang left
+  // to right), and a shot must be the same under both.
   auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * static_cast<double>(rng() >> 11) * 0x1.0p-53; };
   for (;;) {
     Shot s;
@@ -137,7 +140,8 @@ Shot randomShot(ShotTarget target, int i) {
         break;
       case ShotTarget::Slot:
         s.offset = uniform(0.005, 0.05);
-        s.angle = uniform(10, 80) * kDeg * (uniform(0, 1) < 0.5 ? -1 : 1);
+        s.angle = uniform(10, 80) * kDeg;
+        s.angle *= uniform(0, 1) < 0.5 ? -1 : 1;
         break;
     }
     if (fair(s)) return s;

@@ -92,7 +92,13 @@ TEST(TouchingPairs, MatchesACountOverEveryPairOnRandomPiles) {
   std::uniform_real_distribution<double> coordinate(-6.0, 6.0);
   for (int trial = 0; trial < 20; ++trial) {
     Disks d;
-    for (int i = 0; i < 400; ++i) d.add(coordinate(rng), coordinate(rng), i % 3 == 0 ? 0.5 : 0.3);
+    for (int i = 0; i < 400; ++i) {
+      // x drawn before y, in separate statements: a call's arguments are evaluated in an order the
+      // compiler picks (gcc right to left, clang left to right), and both must build the same piles.
+      const double x = coordinate(rng);
+      const double y = coordinate(rng);
+      d.add(x, y, i % 3 == 0 ? 0.5 : 0.3);
+    }
     const long expected = everyPair(d);
     EXPECT_GT(expected, 100);
     EXPECT_EQ(bench::touchingPairs(d.scene, d.x), expected) << "trial " << trial;

@@ -22,6 +22,13 @@ TEST(BroadPhase, GrazingPairsNeedTheMargins) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   auto u = [&](double lo, double hi) { return lo + (hi - lo) * unit(rng); };
   auto logU = [&](double lo, double hi) { return std::pow(10.0, u(lo, hi)); };
+  // x drawn before y, and every draw below in its own statement: a call's arguments and a sum's
+  // operands are evaluated in an order the compiler picks (gcc right to left, clang left to right).
+  auto uv = [&](double lo, double hi) {
+    const double x = u(lo, hi);
+    const double y = u(lo, hi);
+    return Vec2(x, y);
+  };
   long hits = 0, missedWithoutMargins = 0;
   for (int sample = 0; sample < 60000; ++sample) {
     Motion m;
@@ -29,13 +36,15 @@ TEST(BroadPhase, GrazingPairsNeedTheMargins) {
     const int axis = static_cast<int>(u(0, 2)), other = 1 - axis;
     const double sign = u(0, 1) < 0.5 ? -1.0 : 1.0;
     const double offset = std::vector<double>{0.0, 1.0, 1e3}[static_cast<int>(u(0, 3))];
-    const double gap = (u(0, 1) < 0.2 ? -1.0 : 1.0) * logU(-16, -3);
+    const double gapSign = u(0, 1) < 0.2 ? -1.0 : 1.0;
+    const double gap = gapSign * logU(-16, -3);
     const double delta = logU(-9, -4);
     const double r1 = logU(-7, 0), r2 = logU(-7, 0);
     // Near the origin too: there the absolute part of the margin must do all the work.
     const double spread = offset == 0.0 && u(0, 1) < 0.5 ? 1e-5 : 1.0;
-    Vec2 x1 = Vec2::Constant(offset) + spread * Vec2(u(-1, 1), u(-1, 1));
-    Vec2 d1 = logU(-10, -3) * Vec2(u(-1, 1), u(-1, 1));
+    Vec2 x1 = Vec2::Constant(offset) + spread * uv(-1, 1);
+    const double d1Length = logU(-10, -3);
+    Vec2 d1 = d1Length * uv(-1, 1);
     Vec2 along = Vec2::Zero(), across = Vec2::Zero();
     along[axis] = sign;
     across[other] = 1.0;
@@ -47,7 +56,12 @@ TEST(BroadPhase, GrazingPairsNeedTheMargins) {
     const double crossing = worst ? u(7.1e-7, 1e-6) : delta;
     const double y0 = worst ? u(1e-12 / crossing, 2 * crossing) : u(0, 1) * crossing;
     const double gapUsed = worst && kind == 0 ? u(0, 1) * y0 * (2 * crossing - y0) / (2 * (r1 + r2)) : gap;
-    const Vec2 d21 = worst ? Vec2(crossing * across) : Vec2(delta * (u(-0.2, 0.2) * along + (u(0, 1) < 0.5 ? -1.0 : 1.0) * across));
+    Vec2 d21 = crossing * across;
+    if (!worst) {
+      const double slant = u(-0.2, 0.2);
+      const double side = u(0, 1) < 0.5 ? -1.0 : 1.0;
+      d21 = delta * (slant * along + side * across);
+    }
     const Vec2 x21 = (r1 + r2 + gapUsed) * along - y0 * across;
     m.qs.resize(kind == 2 ? 6 : (kind == 0 ? 4 : 2));
     m.qe.resize(m.qs.size());
@@ -67,7 +81,9 @@ TEST(BroadPhase, GrazingPairsNeedTheMargins) {
         at(m.qe, 0) = x1 - nu * along + u(-1, 1) * delta * across;
       } else {
         m.scene.halfplanes.push_back(HalfPlane{x1 - (r1 + gap) * along + u(-1, 1) * across, -scale * along});
-        at(m.qe, 0) = x1 + delta * (u(-0.2, 0.2) * along + u(-1, 1) * across);
+        const double slant = u(-0.2, 0.2);
+        const double aside = u(-1, 1);
+        at(m.qe, 0) = x1 + delta * (slant * along + aside * across);
       }
     } else {
       addParticle(m.scene, 1.0, false, r2);
@@ -76,7 +92,8 @@ TEST(BroadPhase, GrazingPairsNeedTheMargins) {
       at(m.qs, 1) = x1 + x21 - u(0, 1) * length * across;
       at(m.qs, 2) = at(m.qs, 1) + length * across;
       at(m.qe, 1) = at(m.qs, 1) + d1 + d21;
-      at(m.qe, 2) = at(m.qs, 2) + d1 + d21 + logU(-10, -5) * Vec2(u(-1, 1), u(-1, 1));
+      const double wobble = logU(-10, -5);
+      at(m.qe, 2) = at(m.qs, 2) + d1 + d21 + wobble * uv(-1, 1);
       m.scene.edges.push_back(Edge{1, 2, r2});
     }
     // Ground truth: every pair the narrow phase reports.

@@ -29,10 +29,15 @@ TestScene mixedScene(const std::string& type, int maxIterations, unsigned seed) 
   s.scene.collision.type = test::collisionType(type);
   s.scene.collision.cor = 0.5;
   s.scene.collision.maxIterations = maxIterations;
+  // One draw a statement, left to right: a call's arguments are evaluated in an order the compiler
+  // picks (gcc right to left, clang left to right), and both must build the same scenes.
   for (int row = 0; row < 8; ++row)
-    for (int col = 0; col < 10; ++col)
-      addBody(s, 0.5 + unit(rng), Vec2(-1.0 + 0.2 * col + 0.03 * unit(rng), 0.8 + 0.2 * row), Vec2(unit(rng) - 0.5, -1),
-              0.04 + 0.05 * unit(rng));
+    for (int col = 0; col < 10; ++col) {
+      const double m = 0.5 + unit(rng);
+      const double x = -1.0 + 0.2 * col + 0.03 * unit(rng);
+      const double vx = unit(rng) - 0.5;
+      addBody(s, m, Vec2(x, 0.8 + 0.2 * row), Vec2(vx, -1), 0.04 + 0.05 * unit(rng));
+    }
   const int chain = s.state.numParticles();
   for (int k = 0; k < 9; ++k) addBody(s, 1.0, Vec2(-0.8 + 0.2 * k, 0.45), Vec2::Zero(), 0.01, /*fixed=*/true);
   for (int k = 0; k + 1 < 9; ++k) s.scene.edges.push_back(Edge{chain + k, chain + k + 1, 0.01});
@@ -159,9 +164,12 @@ TestScene pile(const std::string& type) {
   s.scene.collision.cor = 0.3;
   s.scene.collision.maxIterations = 4;
   for (int row = 0; row < 60; ++row)
-    for (int col = 0; col < 100; ++col)
-      addBody(s, 0.5 + unit(rng), Vec2(-10.0 + 0.2 * col + 0.03 * unit(rng), 11.0 + 0.2 * row),
-              Vec2(2 * unit(rng) - 1, 2 * unit(rng) - 3), 0.04 + 0.05 * unit(rng));
+    for (int col = 0; col < 100; ++col) {  // one draw a statement, left to right (see mixedScene)
+      const double m = 0.5 + unit(rng);
+      const double x = -10.0 + 0.2 * col + 0.03 * unit(rng);
+      const Vec2 v{2 * unit(rng) - 1, 2 * unit(rng) - 3};
+      addBody(s, m, Vec2(x, 11.0 + 0.2 * row), v, 0.04 + 0.05 * unit(rng));
+    }
   const int chain = s.state.numParticles();
   for (int k = 0; k < 41; ++k) addBody(s, 1.0, Vec2(-10.0 + 0.5 * k, 10.5), Vec2::Zero(), 0.01, /*fixed=*/true);
   for (int k = 0; k + 1 < 41; ++k) s.scene.edges.push_back(Edge{chain + k, chain + k + 1, 0.02});

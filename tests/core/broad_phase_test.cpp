@@ -23,6 +23,13 @@ using testing::Motion;
 Motion randomMotion(std::mt19937& rng, int n, double offset) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   auto u = [&](double lo, double hi) { return lo + (hi - lo) * unit(rng); };
+  // x drawn before y, in separate statements: a call's arguments are evaluated in an order the
+  // compiler picks (gcc right to left, clang left to right), and both must build the same scenes.
+  auto uv = [&](double lo, double hi) {
+    const double x = u(lo, hi);
+    const double y = u(lo, hi);
+    return Vec2(x, y);
+  };
   Motion m;
   m.qs.resize(2 * n);
   m.qe.resize(2 * n);
@@ -31,7 +38,7 @@ Motion randomMotion(std::mt19937& rng, int n, double offset) {
     const int style = static_cast<int>(u(0, 6));
     double r = std::pow(10.0, u(-4, 0));
     if (style == 0) r = std::pow(10.0, u(0, 1.5));  // huge
-    Vec2 x(u(-size, size), u(-size, size));
+    Vec2 x = uv(-size, size);
     if (p > 0 && style <= 3) {  // near another particle: just inside or outside reach
       const int q = static_cast<int>(u(0, p));
       const double reach = r + m.scene.radius[q];
@@ -40,10 +47,12 @@ Motion randomMotion(std::mt19937& rng, int n, double offset) {
       x = at(m.qs, q) + gap * Vec2(std::cos(angle), std::sin(angle));
       if (style == 3) x = at(m.qs, q) + (reach + std::pow(10.0, u(-9, -3))) * Vec2(std::cos(angle), std::sin(angle));
     }
-    Vec2 d(u(-1, 1), u(-1, 1));
+    Vec2 d = uv(-1, 1);
     const int speed = static_cast<int>(u(0, 4));
     d *= speed == 0 ? 1e-8 : (speed == 1 ? 0.01 * size : (speed == 2 ? size : 0.0));  // static, slow, fast, still
-    addParticle(m.scene, std::pow(10.0, u(-2, 2)), u(0, 1) < 0.1, r);
+    const double mass = std::pow(10.0, u(-2, 2));
+    const bool fixed = u(0, 1) < 0.1;
+    addParticle(m.scene, mass, fixed, r);
     at(m.qs, p) = x + Vec2(offset, -offset);
     at(m.qe, p) = at(m.qs, p) + d;
   }
@@ -53,15 +62,18 @@ Motion randomMotion(std::mt19937& rng, int n, double offset) {
     int j = static_cast<int>(u(0, n));
     if (j == i) j = (i + 1) % n;
     if (u(0, 1) < 0.2) {  // a tiny or collapsing edge
-      at(m.qs, j) = at(m.qs, i) + Vec2(u(-1e-7, 1e-7), u(-1e-7, 1e-7));
-      at(m.qe, j) = at(m.qe, i) + (u(0, 1) < 0.5 ? Vec2(u(-1e-7, 1e-7), u(-1e-7, 1e-7)) : Vec2(u(-1, 1), u(-1, 1)));
+      at(m.qs, j) = at(m.qs, i) + uv(-1e-7, 1e-7);
+      at(m.qe, j) = at(m.qe, i) + (u(0, 1) < 0.5 ? uv(-1e-7, 1e-7) : uv(-1, 1));
     }
     m.scene.edges.push_back(Edge{i, j, std::pow(10.0, u(-4, -1))});
   }
   const int planes = static_cast<int>(u(0, 4));
   for (int k = 0; k < planes; ++k) {
-    const Vec2 normal = std::pow(10.0, u(-4, 3)) * Vec2(u(-1, 1), u(-1, 1)).normalized();
-    m.scene.halfplanes.push_back(HalfPlane{at(m.qs, static_cast<int>(u(0, n))) + Vec2(u(-0.1, 0.1), u(-0.1, 0.1)), normal});
+    const double length = std::pow(10.0, u(-4, 3));
+    const Vec2 normal = length * uv(-1, 1).normalized();
+    const int on = static_cast<int>(u(0, n));
+    const Vec2 shift = uv(-0.1, 0.1);
+    m.scene.halfplanes.push_back(HalfPlane{at(m.qs, on) + shift, normal});
   }
   return m;
 }
@@ -159,14 +171,15 @@ TEST(BroadPhase, IncrementalDetectionEqualsFullDetection) {
       const int moves = round % 2 ? 1 + round : 1 + (round + s) * n / 40;
       for (int k = 0; k < moves; ++k) {
         const int p = static_cast<int>(unit(rng) * n);
-        // back to the start (as an immovable zone), a small nudge, or a long throw
+        // back to the start (as an immovable zone), a small nudge, or a long throw (braced: the
+        // two draws come left to right under every compiler, unlike a call's arguments)
         const double pick = unit(rng);
         if (pick < 0.3) {
           at(m.qe, p) = at(m.qs, p);
         } else if (pick < 0.8) {
-          at(m.qe, p) += 1e-3 * Vec2(unit(rng) - 0.5, unit(rng) - 0.5);
+          at(m.qe, p) += 1e-3 * Vec2{unit(rng) - 0.5, unit(rng) - 0.5};
         } else {
-          at(m.qe, p) += 3.0 * Vec2(unit(rng) - 0.5, unit(rng) - 0.5);
+          at(m.qe, p) += 3.0 * Vec2{unit(rng) - 0.5, unit(rng) - 0.5};
         }
         changed.push_back(p);
       }
@@ -231,8 +244,8 @@ void checkKeptPairLists(bool withEdges, uint32_t seed, bool keepAll = false) {
         const int p = static_cast<int>(unit(rng) * n);
         const double pick = unit(rng);
         if (pick < 0.2) at(m.qe, p) = at(m.qs, p);
-        else if (pick < 0.5) at(m.qe, p) += 1e-9 * Vec2(unit(rng) - 0.5, unit(rng) - 0.5);
-        else at(m.qe, p) += 3.0 * Vec2(unit(rng) - 0.5, unit(rng) - 0.5);
+        else if (pick < 0.5) at(m.qe, p) += 1e-9 * Vec2{unit(rng) - 0.5, unit(rng) - 0.5};
+        else at(m.qe, p) += 3.0 * Vec2{unit(rng) - 0.5, unit(rng) - 0.5};
         c.update(p);
       }
       c.settle();

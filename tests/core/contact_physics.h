@@ -26,6 +26,14 @@ inline double uniform(Rng& rng, double lo, double hi) { return lo + (hi - lo) * 
 inline int uniformInt(Rng& rng, int lo, int hi) {
   return lo + static_cast<int>(rng() % static_cast<uint32_t>(hi - lo + 1));
 }
+/// A vector of two draws in [lo, hi), x drawn before y: two draws in one call's arguments, as in
+/// Vec2(uniform(...), uniform(...)), come in an order the compiler picks (gcc right to left, clang
+/// left to right), so every scene draws in separate statements to be the same under both.
+inline Vec2 uniformVec(Rng& rng, double lo, double hi) {
+  const double x = uniform(rng, lo, hi);
+  const double y = uniform(rng, lo, hi);
+  return Vec2(x, y);
+}
 
 /// The default mode's two time-ordered collision types.
 inline const char* const kEventTypes[] = {"continuous-time", "hybrid"};

@@ -44,7 +44,7 @@ TestScene randomScene(Rng& rng, const char* type, Failsafe failsafe) {
   std::vector<Vec2> x;
   std::vector<double> r;
   while (static_cast<int>(x.size()) < n) {
-    const Vec2 p(uniform(rng, -0.8, 0.8), uniform(rng, -0.8, 0.8));
+    const Vec2 p = uniformVec(rng, -0.8, 0.8);
     const double radius = uniform(rng, 0.04, 0.12);
     bool free = true;
     for (size_t k = 0; k < x.size(); ++k) free = free && (x[k] - p).norm() > r[k] + radius + 0.01;
@@ -52,7 +52,7 @@ TestScene randomScene(Rng& rng, const char* type, Failsafe failsafe) {
     x.push_back(p);
     r.push_back(radius);
     const bool fixed = uniform(rng, 0, 1) < 0.15;
-    const Vec2 v = fixed ? Vec2::Zero() : Vec2(uniform(rng, -3, 3), uniform(rng, -3, 3));
+    const Vec2 v = fixed ? Vec2::Zero() : uniformVec(rng, -3, 3);
     addBody(s, uniform(rng, 0.5, 2.0), p, v, radius, fixed);
   }
   const int edges = uniformInt(rng, 0, 3);
@@ -110,7 +110,7 @@ TEST(ContactPhysicsRandom, DensePacksNeverGainKineticEnergy) {
         const Vec2 p(-0.8 + (2 * r + gap) * i + (j % 2) * (r + gap / 2), -0.8 + (2 * r + gap) * 0.87 * j);
         if (p.x() > 0.85 || p.y() > 0.85) continue;
         const double radius = r * uniform(rng, 0.9, 1.0);
-        Vec2 v(uniform(rng, -1, 1), uniform(rng, -1, 1));
+        Vec2 v = uniformVec(rng, -1, 1);
         v *= uniform(rng, 0, 1) < 0.3 ? 20.0 : 2.0;
         const double m = uniform(rng, 0.5, 2.0);
         const bool fixed = uniform(rng, 0, 1) < 0.03;
@@ -140,7 +140,7 @@ TestScene packWithShortEdges(int pack, double scale = 1.0) {
     for (int j = 0; j < side; ++j) {
       const Vec2 p(-0.8 + (2 * r + gap) * i + (j % 2) * (r + gap / 2), -0.8 + (2 * r + gap) * 0.87 * j);
       const double radius = r * uniform(rng, 0.9, 1.0);
-      Vec2 v(uniform(rng, -1, 1), uniform(rng, -1, 1));
+      Vec2 v = uniformVec(rng, -1, 1);
       v *= uniform(rng, 0, 1) < 0.3 ? 20.0 : 2.0;
       const double m = uniform(rng, 0.5, 2.0);
       if (p.x() > 0.85 || p.y() > 0.85) continue;
@@ -206,14 +206,16 @@ TestScene pileUnderForces(int seed, const char* type, double cor, const char* in
   std::vector<double> r;
   for (int tries = 0; x.size() < 40 && tries < 5000; ++tries) {
     const double radius = std::exp(uniform(rng, std::log(0.02), std::log(0.15)));
-    const Vec2 p(uniform(rng, -1 + radius, 1 - radius), uniform(rng, radius, 2.0));
+    const double px = uniform(rng, -1 + radius, 1 - radius);
+    const double py = uniform(rng, radius, 2.0);
+    const Vec2 p(px, py);
     bool free = true;
     for (size_t k = 0; k < x.size(); ++k) free = free && (x[k] - p).norm() > r[k] + radius + 0.002;
     if (!free) continue;
     x.push_back(p);
     r.push_back(radius);
     const double m = std::exp(uniform(rng, -spread, spread));
-    addBody(s, m, scale * p, scale * Vec2(uniform(rng, -2, 2), uniform(rng, -2, 2)), scale * radius);
+    addBody(s, m, scale * p, scale * uniformVec(rng, -2, 2), scale * radius);
   }
   const int n = s.state.numParticles();
   for (int tries = 0; tries < 60 && s.scene.edges.size() < 8; ++tries) {
@@ -312,9 +314,13 @@ TEST(ContactPhysicsRandom, FastDisksStayInThinSlot) {
       s.scene.edges.push_back(Edge{s.state.numParticles() - 2, s.state.numParticles() - 1, 0.005});
     }
     for (int k = 0; k < 3; ++k) {
-      const double vy = uniform(rng, 20, 200) * (uniform(rng, 0, 1) < 0.5 ? -1 : 1);
-      addBody(s, uniform(rng, 0.5, 2), Vec2(-0.5 + 0.5 * k + uniform(rng, -0.1, 0.1), uniform(rng, 0.03, 0.07)),
-              Vec2(uniform(rng, -2, 2), vy), 0.02);
+      const double speed = uniform(rng, 20, 200);
+      const double vy = speed * (uniform(rng, 0, 1) < 0.5 ? -1 : 1);
+      const double m = uniform(rng, 0.5, 2);
+      const double px = -0.5 + 0.5 * k + uniform(rng, -0.1, 0.1);
+      const double py = uniform(rng, 0.03, 0.07);
+      const double vx = uniform(rng, -2, 2);
+      addBody(s, m, Vec2(px, py), Vec2(vx, vy), 0.02);
     }
     auto sim = defaultModeSimulator(s);
     for (int k = 0; k < 50; ++k) {
@@ -342,12 +348,13 @@ TEST(ContactPhysicsRandom, FreeGasKeepsMomentumAndAngularMomentum) {
     TestScene s = contactScene(type, 1.0);
     std::vector<Vec2> x;
     while (x.size() < 30) {
-      const Vec2 p(uniform(rng, -1, 1), uniform(rng, -1, 1));
+      const Vec2 p = uniformVec(rng, -1, 1);
       bool free = true;
       for (const Vec2& q : x) free = free && (q - p).norm() > 0.17;
       if (!free) continue;
       x.push_back(p);
-      addBody(s, uniform(rng, 0.5, 2), p, Vec2(uniform(rng, -2, 2), uniform(rng, -2, 2)), 0.08);
+      const double m = uniform(rng, 0.5, 2);
+      addBody(s, m, p, uniformVec(rng, -2, 2), 0.08);
     }
     auto sim = defaultModeSimulator(s);
     const Vec2 p0 = momentum(s);

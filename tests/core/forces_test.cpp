@@ -65,7 +65,14 @@ void expectClose(const Eigen::MatrixXd& analytic, const Eigen::MatrixXd& numeric
 TestScene randomSetup(std::mt19937& rng) {
   std::uniform_real_distribution<double> pos(-2, 2), vel(-1, 1), mass(0.5, 3);
   TestScene s;
-  for (int i = 0; i < 4; ++i) addBody(s, mass(rng), Vec2(pos(rng), pos(rng)), Vec2(vel(rng), vel(rng)), 0.3);
+  for (int i = 0; i < 4; ++i) {
+    // One draw a statement (or braces): a call's arguments are evaluated in an order the compiler
+    // picks (gcc right to left, clang left to right), and both must build the same setups.
+    const double m = mass(rng);
+    const Vec2 x{pos(rng), pos(rng)};
+    const Vec2 v{vel(rng), vel(rng)};
+    addBody(s, m, x, v, 0.3);
+  }
   s.scene.edges.push_back(Edge{1, 2, 0.2});
   s.scene.halfplanes.push_back(HalfPlane{Vec2(0, -1.5), Vec2(0.3, 2.0)});
   return s;

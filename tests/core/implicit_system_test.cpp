@@ -25,8 +25,12 @@ TestScene springsAndDisks(const std::string& integrator, int n, unsigned seed) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const double side = 0.3 * std::sqrt(static_cast<double>(n));
   for (int i = 0; i < n; ++i) {
-    const Vec2 v = i % 3 == 2 ? Vec2(u(rng) - 0.5, u(rng) - 0.5) : Vec2::Zero();
-    addBody(s, 0.5 + u(rng), Vec2(side * u(rng), side * u(rng)), v, 0.05);
+    // Draws in braces or separate statements, left to right: a call's arguments are evaluated in
+    // an order the compiler picks (gcc right to left, clang left to right).
+    const Vec2 v = i % 3 == 2 ? Vec2{u(rng) - 0.5, u(rng) - 0.5} : Vec2::Zero();
+    const double m = 0.5 + u(rng);
+    const Vec2 x{side * u(rng), side * u(rng)};
+    addBody(s, m, x, v, 0.05);
   }
   for (int i = 0; i + 1 < n; ++i)
     if (i % 3 != 2) s.scene.forces.push_back(std::make_unique<SpringForce>(i, i + 1, 200.0, 0.2, 0.5));

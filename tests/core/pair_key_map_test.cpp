@@ -17,7 +17,11 @@ namespace {
 uint64_t randomKey(std::mt19937& rng, int particles) {
   std::uniform_int_distribution<int> particle(0, particles - 1), kind(0, 2);
   const PairKind k = static_cast<PairKind>(kind(rng));
-  return pairKey(particle(rng), k, particle(rng));
+  // Drawn in separate statements: a call's arguments are evaluated in an order the compiler picks
+  // (gcc right to left, clang left to right), and both must see the same keys.
+  const int i = particle(rng);
+  const int j = particle(rng);
+  return pairKey(i, k, j);
 }
 
 void expectSame(const PairKeyMap<int>& map, const std::map<uint64_t, int>& expected) {

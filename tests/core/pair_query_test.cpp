@@ -25,19 +25,29 @@ TEST(PairQuery, AStraightDiskPairDeepensAtMostItsClosingRateTimesTheTimeLeft) {
   int shortcuts = 0;
   for (int trial = 0; trial < 4000; ++trial) {
     TestScene s;
-    addBody(s, 1.0, Vec2(u(rng), u(rng)), Vec2::Zero(), 0.4 + 0.2 * u(rng));
-    addBody(s, 1.0, Vec2(u(rng), u(rng)), Vec2::Zero(), 0.4 + 0.2 * u(rng));
-    s.scene.halfplanes.push_back(HalfPlane{Vec2(u(rng), u(rng)), Vec2(u(rng), 1.5 + u(rng))});  // not unit
+    // Draws in separate statements or braces, left to right: a call's arguments are evaluated in an
+    // order the compiler picks (gcc right to left, clang left to right).
+    const Vec2 start0{u(rng), u(rng)};
+    addBody(s, 1.0, start0, Vec2::Zero(), 0.4 + 0.2 * u(rng));
+    const Vec2 start1{u(rng), u(rng)};
+    addBody(s, 1.0, start1, Vec2::Zero(), 0.4 + 0.2 * u(rng));
+    s.scene.halfplanes.push_back(HalfPlane{Vec2{u(rng), u(rng)}, Vec2{u(rng), 1.5 + u(rng)}});  // not unit
     const double t = 0.5 * (1.0 + u(rng));  // [0, 1)
     // Rates (displacement per unit of t): particle 0 at random; particle 1 relative to it either
     // at random or sliding along the contact normal at t with a closing rate of rounding size.
     Vec2 rate[2];
-    rate[0] = Vec2(u(rng), u(rng));
+    rate[0] = Vec2{u(rng), u(rng)};
     const bool sliding = trial % 2 == 0;
     const Vec2 x0 = at(s.state.x, 0) + t * rate[0];
     const Vec2 xt1 = at(s.state.x, 1);  // particle 1's position at t, kept: its start is set below
     const Vec2 n = unit(xt1 - x0);
-    rate[1] = sliding ? rate[0] + u(rng) * perp(n) - 1e-10 * u(rng) * n : Vec2(u(rng), u(rng));
+    if (sliding) {
+      const double slide = u(rng);
+      const double approach = u(rng);
+      rate[1] = rate[0] + slide * perp(n) - 1e-10 * approach * n;
+    } else {
+      rate[1] = Vec2{u(rng), u(rng)};
+    }
     at(s.state.x, 1) = xt1 - t * rate[1];
     const auto position = [&](int p, double time) { return Vec2(at(s.state.x, p) + time * rate[p]); };
     const auto rateOf = [&](int p) { return rate[p]; };

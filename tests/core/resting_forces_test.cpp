@@ -19,7 +19,9 @@ TestScene scatteredDisks(int n, double side, unsigned seed) {
   TestScene s;
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(0.0, side);
-  for (int i = 0; i < n; ++i) addBody(s, 1.0, Vec2(u(rng), u(rng)), Vec2::Zero(), 0.05);
+  // Draws in braces or separate statements, left to right: a call's arguments are evaluated in an
+  // order the compiler picks (gcc right to left, clang left to right).
+  for (int i = 0; i < n; ++i) addBody(s, 1.0, Vec2{u(rng), u(rng)}, Vec2::Zero(), 0.05);
   for (int i = 0; i + 1 < std::min(n, 200); ++i) s.scene.edges.push_back(Edge{i, i + 1, 0.02});
   s.scene.halfplanes.push_back(HalfPlane{Vec2(0.1, 0.1), Vec2(0, 1)});
   s.scene.halfplanes.push_back(HalfPlane{Vec2(0.1, 0.1), Vec2(1, 0)});
@@ -132,10 +134,17 @@ TestScene randomHeap(const char* type, unsigned seed) {
   addFloorAndGravity(s);
   s.scene.halfplanes.push_back(HalfPlane{Vec2(-1, 0), Vec2(1, 0)});
   s.scene.halfplanes.push_back(HalfPlane{Vec2(1, 0), Vec2(-1, 0)});
-  s.scene.forces.push_back(std::make_unique<PenaltyForce>(5.0 + 20.0 * u(rng), 0.005 + 0.01 * u(rng)));
+  // Draws in separate statements or braces, left to right: a call's arguments are evaluated in an
+  // order the compiler picks (gcc right to left, clang left to right).
+  const double stiffness = 5.0 + 20.0 * u(rng);
+  const double thickness = 0.005 + 0.01 * u(rng);
+  s.scene.forces.push_back(std::make_unique<PenaltyForce>(stiffness, thickness));
   addBody(s, 1.0, Vec2(0.3, 0.05), Vec2::Zero(), 0.05, true);
-  for (int k = 0; k < 30; ++k)
-    addBody(s, 0.5 + u(rng), Vec2(-0.9 + 1.8 * u(rng), 0.1 + 1.5 * u(rng)), Vec2::Zero(), 0.04 + 0.03 * u(rng));
+  for (int k = 0; k < 30; ++k) {
+    const double m = 0.5 + u(rng);
+    const Vec2 x{-0.9 + 1.8 * u(rng), 0.1 + 1.5 * u(rng)};
+    addBody(s, m, x, Vec2::Zero(), 0.04 + 0.03 * u(rng));
+  }
   for (int link = 0; link < 2; ++link) {
     const Vec2 at0(-0.6 + 1.0 * u(rng), 1.8 + 0.3 * link);
     const int first = s.scene.numParticles();

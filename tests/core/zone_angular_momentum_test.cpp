@@ -37,8 +37,9 @@ TestScene freePack(int pack, bool edges) {
   for (int i = 0; i < side; ++i)
     for (int j = 0; j < side; ++j) {
       const Vec2 p((2 * r + gap) * i + (j % 2) * (r + gap / 2), (2 * r + gap) * 0.87 * j);
-      const Vec2 v(uniform(rng, -1, 1), uniform(rng, -1, 1));
-      addBody(s, uniform(rng, 0.5, 2.0), p - centre, speed * v - squeeze * (p - centre), r * uniform(rng, 0.9, 1.0));
+      const Vec2 v = uniformVec(rng, -1, 1);
+      const double m = uniform(rng, 0.5, 2.0);
+      addBody(s, m, p - centre, speed * v - squeeze * (p - centre), r * uniform(rng, 0.9, 1.0));
     }
   const int n = s.state.numParticles();
   if (edges)

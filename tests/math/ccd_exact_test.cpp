@@ -28,7 +28,13 @@ class Scenes {
     const double v = std::uniform_real_distribution<double>(lo, hi)(rng_);
     return std::round(v * 1048576.0) / 1048576.0;
   }
-  Vec2 vec(double reach) { return Vec2(real(-reach, reach), real(-reach, reach)); }
+  // x drawn before y, in separate statements: a call's arguments are evaluated in an order the
+  // compiler picks (gcc right to left, clang left to right), and both must build the same scenes.
+  Vec2 vec(double reach) {
+    const double x = real(-reach, reach);
+    const double y = real(-reach, reach);
+    return Vec2(x, y);
+  }
 
   PPInput pp() {
     PPInput in;

@@ -117,8 +117,11 @@ TEST(CcdCoefficients, ReferenceQuinticDiffersOnlyInTCubed) {
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (int i = 0; i < 100; ++i) {
-    const PEInput in = pe({u(rng), u(rng)}, {u(rng), u(rng)}, 0.1, {u(rng), u(rng)}, {u(rng), u(rng)},
-                          {u(rng), u(rng)}, {u(rng), u(rng)}, 0.05);
+    // Drawn into named points first, left to right: a call's arguments are evaluated in an order
+    // the compiler picks (gcc right to left, clang left to right), and both must see the same inputs.
+    const Vec2 x1{u(rng), u(rng)}, d1{u(rng), u(rng)}, x2{u(rng), u(rng)}, d2{u(rng), u(rng)};
+    const Vec2 x3{u(rng), u(rng)}, d3{u(rng), u(rng)};
+    const PEInput in = pe(x1, d1, 0.1, x2, d2, x3, d3, 0.05);
     const Polynomial exact = peApproach(in, QuinticForm::Exact);
     const Polynomial ref = peApproach(in, QuinticForm::Reference);
     ASSERT_EQ(exact.size, 6);
@@ -264,8 +267,12 @@ TEST(CcdDetect, FastPathAgreesWithLoggingPath) {
     const double reach = (i % 3 == 0) ? 0.05 : 0.6;  // some far, some close
     Contact a, b;
     PairPolynomials log;
-    const PPInput p = pp({u(rng), u(rng)}, {reach * u(rng), reach * u(rng)}, 0.1 + 0.1 * u(rng),
-                         {u(rng), u(rng)}, {reach * u(rng), reach * u(rng)}, 0.15);
+    // Drawn into named points first, left to right: a call's arguments are evaluated in an order
+    // the compiler picks (gcc right to left, clang left to right), and both must see the same pairs.
+    const Vec2 px1{u(rng), u(rng)}, pd1{reach * u(rng), reach * u(rng)};
+    const double pr1 = 0.1 + 0.1 * u(rng);
+    const Vec2 px2{u(rng), u(rng)}, pd2{reach * u(rng), reach * u(rng)};
+    const PPInput p = pp(px1, pd1, pr1, px2, pd2, 0.15);
     const bool fp = detectPP(p, &a);
     ASSERT_EQ(fp, detectPP(p, &b, &log)) << i;
     if (fp) {
@@ -273,8 +280,10 @@ TEST(CcdDetect, FastPathAgreesWithLoggingPath) {
       ASSERT_EQ(a.tau, b.tau);
       ASSERT_EQ(a.n, b.n);
     }
-    const PEInput e = pe({u(rng), u(rng)}, {reach * u(rng), reach * u(rng)}, 0.1, {u(rng), u(rng)},
-                         {reach * u(rng), reach * u(rng)}, {u(rng), u(rng)}, {reach * u(rng), reach * u(rng)}, 0.05);
+    const Vec2 ex1{u(rng), u(rng)}, ed1{reach * u(rng), reach * u(rng)};
+    const Vec2 ex2{u(rng), u(rng)}, ed2{reach * u(rng), reach * u(rng)};
+    const Vec2 ex3{u(rng), u(rng)}, ed3{reach * u(rng), reach * u(rng)};
+    const PEInput e = pe(ex1, ed1, 0.1, ex2, ed2, ex3, ed3, 0.05);
     const bool fe = detectPE(e, &a);
     ASSERT_EQ(fe, detectPE(e, &b, &log)) << i;
     if (fe) {
@@ -282,7 +291,8 @@ TEST(CcdDetect, FastPathAgreesWithLoggingPath) {
       ASSERT_EQ(a.tau, b.tau);
       ASSERT_EQ(a.n, b.n);
     }
-    const PHInput h = ph({u(rng), u(rng)}, {reach * u(rng), reach * u(rng)}, 0.1, {u(rng), u(rng)}, {u(rng), u(rng)});
+    const Vec2 hx1{u(rng), u(rng)}, hd1{reach * u(rng), reach * u(rng)}, hp{u(rng), u(rng)}, hm{u(rng), u(rng)};
+    const PHInput h = ph(hx1, hd1, 0.1, hp, hm);
     const bool fh = detectPH(h, &a);
     ASSERT_EQ(fh, detectPH(h, &b, &log)) << i;
     if (fh) {

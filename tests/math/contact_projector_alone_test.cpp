@@ -61,11 +61,13 @@ TEST(ContactProjectorAlone, EqualsTheActiveSetProjection) {
   for (int trial = 0; trial < 2000; ++trial) {
     const int obstacles = std::uniform_int_distribution<int>(1, 3)(rng);
     std::vector<double> invMass{1.0 / (0.1 + 10 * unit01(rng))};
-    std::vector<Vec2> v{Vec2(u(rng), u(rng))};
+    // Braced Vec2s: x is drawn before y under every compiler (a call's arguments come in an order
+    // the compiler picks: gcc right to left, clang left to right).
+    std::vector<Vec2> v{Vec2{u(rng), u(rng)}};
     const bool moving = unit01(rng) < 0.5;
     for (int b = 0; b < obstacles; ++b) {
       invMass.push_back(0.0);
-      v.push_back(moving && unit01(rng) < 0.7 ? Vec2(u(rng), u(rng)) : Vec2::Zero());
+      v.push_back(moving && unit01(rng) < 0.7 ? Vec2{u(rng), u(rng)} : Vec2::Zero());
     }
     std::vector<ConstraintRow> rows;
     const int count = std::uniform_int_distribution<int>(1, ContactProjector::kAloneRows)(rng);

@@ -141,7 +141,9 @@ void nextInstantWithKick(ContactProjector& cp, const Zone& z, std::mt19937& rng)
   for (size_t b = 0; b < z.v.size(); ++b) {
     if (z.invMass[b] == 0.0) continue;
     const int id = static_cast<int>(b);
-    const Vec2 kicked = cp.velocity(id) + Vec2(u(rng), u(rng));
+    // Braced: x is drawn before y under every compiler (a call's arguments come in an order the
+    // compiler picks: gcc right to left, clang left to right).
+    const Vec2 kicked = cp.velocity(id) + Vec2{u(rng), u(rng)};
     cp.freeze(id, kicked);
     cp.release(id, z.invMass[b], kicked);
   }

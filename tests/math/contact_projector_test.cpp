@@ -157,7 +157,10 @@ TEST(ContactProjector, ABodyInMoreRowsThanItStoresInlineIsSolvedExactly) {
   for (int trial = 0; trial < 60; ++trial) {
     Zone z;
     z.invMass = {0.0, 1.0, 0.5};  // an obstacle, the hub, a neighbour
-    z.v = {Vec2::Zero(), speed(rng) * unit(spread(rng)), Vec2::Zero()};
+    // The speed drawn before the direction, in its own statement: a product's operands are
+    // evaluated in an order the compiler picks (gcc right to left, clang left to right).
+    const double hubSpeed = speed(rng);
+    z.v = {Vec2::Zero(), hubSpeed * unit(spread(rng)), Vec2::Zero()};
     const int rows = 9 + trial % 4;  // 9-12 rows, all naming the hub
     for (int k = 0; k < rows; ++k) {
       const Vec2 n = unit(3.141592653589793 + spread(rng));  // pointing back against the hub's motion

@@ -48,7 +48,9 @@ inline Zone randomZone(std::mt19937& rng, bool freeOnly = false) {
   for (int b = 0; b < bodies; ++b) {
     const bool fixed = b == 0 && !freeOnly;
     z.invMass.push_back(fixed ? 0.0 : 1.0 / std::exp(logMass(rng)));
-    z.v.push_back(fixed ? Vec2::Zero() : Vec2(u(rng), u(rng)));
+    // Braced, so x is drawn before y under every compiler (a call's arguments come in an order
+    // the compiler picks: gcc right to left, clang left to right).
+    z.v.push_back(fixed ? Vec2::Zero() : Vec2{u(rng), u(rng)});
   }
   std::vector<int> ids(bodies);
   std::iota(ids.begin(), ids.end(), 0);
