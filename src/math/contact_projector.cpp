@@ -159,7 +159,7 @@ bool ContactProjector::solve(const double* groupScale, double factor, double tol
       rescued = true;
       if (solveCluster(k, source, /*anyMasses=*/true)) {
         updates_ += maxUpdates;
-        updates = 0;
+        updates = 1;  // the exact solve, counted as one update
         continue;
       }
     }
