@@ -186,11 +186,13 @@ TEST(ContactProjectorRestitution, RowsAddedAfterAResetAreInelastic) {
 // pushes can add energy. They are then shortened to where they add none (at e = 1: where the
 // kinetic energy came in), instead of taken back whole as rows with different coefficients'
 // still are (the tests above), which left the partial projection's loss. Random free zones of
-// 3-5 bodies, e = 1 on every row, solves stopped after 1-6 updates.
+// 3-5 bodies, e = 1 on every row, solves stopped after 1-6 updates (those of up to
+// kClusterBodies that the exact rescue of a budget about to end settles are skipped: the cases
+// are the others).
 TEST(ContactProjectorRestitution, PushesAfterABudgetEndedSolveAreShortenedToAddNoEnergy) {
   std::mt19937 rng(5);
   int shortened = 0, cases = 0;
-  for (int trial = 0; trial < 300; ++trial) {
+  for (int trial = 0; trial < 800; ++trial) {
     const Zone z = randomZone(rng, /*freeOnly=*/true);
     for (long budget = 1; budget <= 6; ++budget) {
       ContactProjector cp;
@@ -215,7 +217,7 @@ TEST(ContactProjectorRestitution, PushesAfterABudgetEndedSolveAreShortenedToAddN
     }
   }
   EXPECT_GT(cases, 500);
-  EXPECT_GT(shortened, 300) << "of " << cases;  // 475 here; 134 with the pushes taken back whole
+  EXPECT_GT(shortened, 300) << "of " << cases;  // 474 of 1,117 here; 141 with the pushes taken back whole
 }
 
 }  // namespace
