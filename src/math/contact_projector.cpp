@@ -158,8 +158,12 @@ bool ContactProjector::solve(const double* groupScale, double factor, double tol
     if (++updates > maxUpdates && !rescued) {
       rescued = true;
       if (solveCluster(k, source, /*anyMasses=*/true)) {
-        updates_ += maxUpdates;
-        updates = 1;  // the exact solve, counted as one update
+        // The exact solve counts as one update, and what it queued may take kClusterRows more
+        // (the worklist is shared: a fresh budget went to the other zones' rows, and piles
+        // made 40% more updates a step).
+        updates_ += maxUpdates + 1 - kClusterRows;
+        updates = kClusterRows;
+        maxUpdates = 2 * kClusterRows;
         continue;
       }
     }

@@ -65,6 +65,11 @@ bool ContactProjector::solveCluster(int k, RowSource* source, bool anyMasses) {
   for (int i = 0; i < nb; ++i)
     lightest = std::max(lightest, inverseMass_[bodies[i]]), heaviest = std::min(heaviest, inverseMass_[bodies[i]]);
   if (!anyMasses && !(lightest >= kClusterMassRatio * heaviest)) return false;  // before anything changes
+  if (anyMasses && source != nullptr) {
+    int ids[kClusterBodies];
+    for (int i = 0; i < nb; ++i) ids[i] = body_[bodies[i]].id;
+    if (!source->mayRescue(ids, nb)) return false;
+  }
   if (!stale.empty()) {
     ConstraintRow now;
     for (int q : stale) {

@@ -42,6 +42,12 @@ class ContactProjector : public ExactSolveLimits {
     /// false keeps the row as it is for this instant (a row whose normal the caller chose
     /// deliberately, or with no direction now).
     virtual bool rowNow(int index, ConstraintRow& out) = 0;
+    /// Whether a solve about to end on its budget may project the cluster of these `count`
+    /// bodies (ids) exactly (solveCluster's rescue); every cluster may when there is no source.
+    virtual bool mayRescue(const int* ids, int count) {
+      (void)ids, (void)count;
+      return true;
+    }
 
    protected:
     ~RowSource() = default;

@@ -166,6 +166,8 @@ class ContactZones {
     RowsAt(const ContactZones& zones, const Scene& scene, const StepMotion& motion, double T)
         : zones_(zones), scene_(scene), motion_(motion), T_(T) {}
     bool rowNow(int index, math::ConstraintRow& out) override;
+    /// Only a cluster moving faster than kRescueKicks of its bodies' kicks (see there).
+    bool mayRescue(const int* ids, int count) override;
 
    private:
     const ContactZones& zones_;

@@ -211,4 +211,14 @@ bool ContactZones::RowsAt::rowNow(int index, math::ConstraintRow& out) {
   return n != Vec2::Zero();
 }
 
+bool ContactZones::RowsAt::mayRescue(const int* ids, int count) {
+  if (zones_.sleepers_ == nullptr) return true;
+  double speed = 0.0, kick = 0.0;
+  for (int k = 0; k < count; ++k) {
+    speed = std::max(speed, zones_.projector_.velocity(ids[k]).norm());
+    kick = std::max(kick, zones_.sleepers_->kickVector(ids[k]).norm());
+  }
+  return speed > kRescueKicks * kick;
+}
+
 }  // namespace fosssim
