@@ -150,17 +150,17 @@ bool ContactProjector::solve(const double* groupScale, double factor, double tol
       }
       row.epoch = epoch_;  // kept as it is for this instant
     }
-    // A solve about to end on its budget in a cluster small enough to be solved exactly is
-    // solved exactly, whatever its masses, and given its budget again to settle what that
-    // queued (once per solve): a budget-ended solve is a zone's failure, and enough of them make
-    // a jam, which stops its particles (two light disks wedged in a corner by two heavy ones at
-    // COR 1 lost 87% of a fast box's energy so).
+    // A solve about to end on its budget in a cluster small enough to be solved exactly (and
+    // that the source lets be: RowSource::mayRescue) is solved exactly, whatever its masses,
+    // once per solve: a budget-ended solve is a zone's failure, and enough of them make a jam,
+    // which stops its particles (two light disks wedged in a corner by two heavy ones at COR 1
+    // lost 87% of a fast box's energy so).
     if (++updates > maxUpdates && !rescued) {
       rescued = true;
       if (solveCluster(k, source, /*anyMasses=*/true)) {
         // The exact solve counts as one update, and what it queued may take kClusterRows more
-        // (the worklist is shared: a fresh budget went to the other zones' rows, and piles
-        // made 40% more updates a step).
+        // (the worklist is shared: a fresh budget went to the other zones' rows, and pile-rest
+        // 1,000 made 41% more updates a step).
         updates_ += maxUpdates + 1 - kClusterRows;
         updates = kClusterRows;
         maxUpdates = 2 * kClusterRows;
