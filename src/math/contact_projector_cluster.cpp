@@ -19,7 +19,8 @@ namespace fosssim::math {
 //     A_SS lambda_S = -G_S v0,  lambda_S >= 0,  G v* >= 0,  v* = v0 + M^-1 G_S^T lambda_S,
 // v0 the cluster's velocities without its rows' impulses. At most 2^kClusterRows systems of at
 // most 2 kClusterBodies unknowns: tried, like solveAlone, only for rows Gauss-Seidel keeps coming
-// back to.
+// back to (masses kClusterMassRatio apart), and once when a solve is about to end on its budget
+// (`anyMasses`: two light disks wedged in a corner by two heavy ones stall it as well).
 bool ContactProjector::solveCluster(int k, RowSource* source, bool anyMasses) {
   // The cluster: row k's movable bodies and, through their rows, every movable body they meet.
   // Rows set at an earlier instant are made again first, as Gauss-Seidel makes them when it

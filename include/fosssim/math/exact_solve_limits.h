@@ -29,17 +29,20 @@ struct ExactSolveLimits {
   /// Up to this many movable bodies (none locked to an axis) whose rows, at most kClusterRows,
   /// move no other body are projected exactly together, as solveAlone does for one
   /// (solveCluster, contact_projector_cluster.cpp): bodies of very different masses squeezed
-  /// together stall Gauss-Seidel. 2^kClusterRows small systems at most, tried as rarely.
+  /// together stall Gauss-Seidel. 2^kClusterRows small systems at most, tried as rarely, and
+  /// once when a solve is about to end on its budget (its rescue). Four and twelve: two light
+  /// disks wedged in a corner by two heavy ones.
   static constexpr int kClusterBodies = 4;
   static constexpr int kClusterRows = 12;
   /// The enumeration's feasibility slack there, relative as kAloneSlack is: nearly parallel rows
   /// of several bodies left no active set feasible to 1e-12 after their systems' rounding (one
   /// random cluster in eight); Gauss-Seidel settles what is left to the solve's tolerance.
   static constexpr double kClusterSlack = 1e-9;
-  /// Only clusters whose heaviest body is at least this many times its lightest: where masses
-  /// are alike, Gauss-Seidel stalls only in tight geometry, which the zones' budgets and jams
-  /// settle as before; solved exactly too, a settling pile's small clusters took another 20% of
-  /// Gauss-Seidel updates to come to rest (pile-rest 2,500: 11,595 -> 13,863 a step).
+  /// Only clusters whose heaviest body is at least this many times its lightest, except in the
+  /// rescue: where masses are alike, Gauss-Seidel stalls only in tight geometry; solved exactly
+  /// at every try, a settling pile's small clusters took another 20% of Gauss-Seidel updates to
+  /// come to rest (pile-rest 2,500: 11,595 -> 13,863 a step). The rescue, at a budget's end,
+  /// takes any masses, if the caller's RowSource allows it (the zones: fast clusters only).
   static constexpr double kClusterMassRatio = 10.0;
 };
 
