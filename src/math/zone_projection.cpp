@@ -173,24 +173,31 @@ bool projectByEnumeration(const std::vector<double>& inverseMass, const std::vec
                           std::vector<Vec2>& v, double relTol, std::vector<double>& impulses) {
   const int m = static_cast<int>(rows.size());
   const int n = 2 * static_cast<int>(v.size());
-  assert(m <= 20);
   impulses.assign(m, 0.0);
   // A_SS has rank at most the movable bodies' dimensions: larger active sets are singular.
   const int dims = 2 * static_cast<int>(std::count_if(inverseMass.begin(), inverseMass.end(), [](double w) { return w != 0.0; }));
-  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(m, n);
-  Eigen::VectorXd vt(n), minv(n);
+  // Sizes bounded at compile time (at most 20 rows and kMaxEnumerationBodies bodies): the
+  // enumeration's 2^m small systems then allocate nothing (malloc and free took a sixth of a
+  // rattling box's time, the LU factorisations half).
+  using RowsByDims = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 20, 2 * kMaxEnumerationBodies>;
+  using Square = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 20, 20>;
+  using RowVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 20, 1>;
+  using DimVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 2 * kMaxEnumerationBodies, 1>;
+  if (m > 20 || n > 2 * kMaxEnumerationBodies) return false;
+  RowsByDims G = RowsByDims::Zero(m, n);
+  DimVector vt(n), minv(n);
   for (int b = 0; b < static_cast<int>(v.size()); ++b) {
     vt.segment<2>(2 * b) = v[b];
     minv(2 * b) = minv(2 * b + 1) = inverseMass[b];
   }
   for (int k = 0; k < m; ++k)
     for (int j = 0; j < rows[k].count; ++j) G.block<1, 2>(k, 2 * rows[k].body[j]) += rows[k].coef[j].transpose();
-  const Eigen::MatrixXd A = G * minv.asDiagonal() * G.transpose();
-  const Eigen::VectorXd b = G * vt;
+  const Square A = G * minv.asDiagonal() * G.transpose();
+  const RowVector b = G * vt;
 
   const double speed = zoneSpeed(rows, v);
   if (speed == 0.0) return true;
-  Eigen::VectorXd scale(m);
+  RowVector scale(m);
   for (int k = 0; k < m; ++k) scale(k) = relTol * rowNorm(rows[k]) * speed;
 
   std::vector<int> active;
@@ -200,18 +207,18 @@ bool projectByEnumeration(const std::vector<double>& inverseMass, const std::vec
       if (mask & (1u << k)) active.push_back(k);
     const int s = static_cast<int>(active.size());
     if (s > dims) continue;
-    Eigen::VectorXd lambda = Eigen::VectorXd::Zero(m);
+    RowVector lambda = RowVector::Zero(m);
     if (s > 0) {
-      Eigen::MatrixXd Ass(s, s);
-      Eigen::VectorXd rhs(s);
+      Square Ass(s, s);
+      RowVector rhs(s);
       for (int i = 0; i < s; ++i) {
         rhs(i) = -b(active[i]);
         for (int j = 0; j < s; ++j) Ass(i, j) = A(active[i], active[j]);
       }
-      Eigen::FullPivLU<Eigen::MatrixXd> lu(Ass);
+      Eigen::FullPivLU<Square> lu(Ass);
       lu.setThreshold(1e-10);
       if (lu.rank() < s) continue;
-      const Eigen::VectorXd ls = lu.solve(rhs);
+      const RowVector ls = lu.solve(rhs);
       bool ok = true;
       for (int i = 0; i < s && ok; ++i) ok = A(active[i], active[i]) * ls(i) >= -scale(active[i]);
       if (!ok) continue;
@@ -220,8 +227,8 @@ bool projectByEnumeration(const std::vector<double>& inverseMass, const std::vec
     // The rows' velocities from the velocities, not as A lambda + b: with bodies of very
     // different masses A's entries are huge and their products cancel to w, rounding to far more
     // than the slack (a disk 10^6 times lighter than its neighbour: 1e-10 of the speeds).
-    const Eigen::VectorXd vs = vt + minv.asDiagonal() * (G.transpose() * lambda);
-    const Eigen::VectorXd w = G * vs;
+    const DimVector vs = vt + minv.asDiagonal() * (G.transpose() * lambda);
+    const RowVector w = G * vs;
     bool feasible = true;
     for (int k = 0; k < m && feasible; ++k) feasible = w(k) >= -scale(k);
     if (!feasible) continue;
