@@ -86,6 +86,8 @@ int ContactZones::unite(int a, int b) {
   zb.first = zb.last = zb.firstHoldable = zb.lastHoldable = -1;  // b is no root: its lists are a's
   za.metAgain = std::max(za.metAgain, zb.metAgain);
   za.bounces = std::max(za.bounces, zb.bounces);
+  za.lightest = std::min(za.lightest, zb.lightest);
+  za.heaviest = std::max(za.heaviest, zb.heaviest);
   if (zb.firstBounce >= 0.0 && (za.firstBounce < 0.0 || zb.firstBounce < za.firstBounce)) za.firstBounce = zb.firstBounce;
   za.bounced = za.bounced && zb.bounced;
   za.solves = std::max(za.solves, zb.solves);
@@ -110,7 +112,9 @@ int ContactZones::take(const Scene& scene, const StepMotion& motion, int p, int 
     if (projector_.hasBody(p)) projector_.release(p, 1.0 / scene.massOf(p), motion.rate(p) / h);
     else projector_.addBody(p, 1.0 / scene.massOf(p), motion.rate(p) / h);
   }
+  const bool fresh = parent_[p] < 0;
   const int r = join(p);
+  if (fresh) record_[r].lightest = record_[r].heaviest = scene.massOf(p);
   rateScale_[r] = std::max(rateScale_[r], motion.rate(p).norm());
   if (zone < 0) return r;
   // The count of the side that did not move rigidly, if one did (its contacts' record, not the raft's).
@@ -138,7 +142,7 @@ int ContactZones::absorb(const Scene& scene, const StepMotion& motion, const Pai
   bool welded = false;   // whether that jam welded bodies that were apart
   if (solved && !requeried_[*known]) {
     ZoneRecord& z = record_[root(zone)];
-    if (z.bounced && z.bounces < kMaxZoneBounces) {
+    if (z.bounced && z.bounces < bounceLimit(z)) {
       if (z.bounces++ == 0) z.firstBounce = T;
     } else {
       ++z.metAgain;

@@ -240,7 +240,8 @@ class ContactZones {
   /// splices the smaller zone's lists after the larger's.
   struct ZoneRecord {
     int metAgain = 0;  ///< contacts back after a solve, failed solves (jam count)
-    int bounces = 0;   ///< contacts back after a solve that bounced (not jams: kMaxZoneBounces)
+    int bounces = 0;   ///< contacts back after a solve that bounced (not jams: bounceLimit)
+    double lightest = 0, heaviest = 0;  ///< its movable members' extreme masses (bounceLimit)
     double firstBounce = -1.0;  ///< the instant (fraction of the step) of the first of those; -1: none
     int solves = 0;    ///< solves in this step
     int rowCount = 0;  ///< the projector rows set for its contacts in this step
@@ -254,6 +255,8 @@ class ContactZones {
     char immovable = 0;   ///< a fixed particle or a half-plane among its rows
     char bounced = 0;     ///< its last solve's restitution was kept (ContactProjector::restitute)
   };
+  /// The bounces zone record z may take in a step (kMaxZoneBounces, kBouncesPerGalperinCount).
+  static int bounceLimit(const ZoneRecord& z);
   /// Calls f(p) for every member of zone `zone` (a root), in the order they joined.
   template <class F>
   void forEachMember(int zone, F&& f) const {

@@ -50,13 +50,13 @@ Status EventHandler::handle(const Scene& scene, const State& start, State& state
   }
   // Respond, in time order. Every event is dropped (stale, resolved), costs a particle one of its
   // quota of impulses, adds a contact's rows to a zone (bounded by the candidate pairs), or brings
-  // one back (up to kMaxZoneBounces of those after solves that bounced, then counted as met
+  // one back (up to ContactZones::bounceLimit of those after solves that bounced, then counted as met
   // again); past kMaxZoneProjections of those a jam welds, locks or stops particles (each jam
   // takes one of those, at most three per particle: ContactZones::lockJammed) or a zone moves
   // rigidly, which also happens at most once per particle (a rigid zone that meets an obstacle
   // goes back to the projection, with a fresh count or that of the zone it merged with, and can
   // then only jam). So the loop ends; the budget below only guards that reasoning.
-  const long budget = static_cast<long>(eventsPerParticle_ + kMaxZoneProjections + kMaxZoneBounces + 2) * (n + 1) * 4 + 1000;
+  const long budget = static_cast<long>(eventsPerParticle_ + kMaxZoneProjections + kMaxZoneBouncesCap + 2) * (n + 1) * 4 + 1000;
   long processed = 0;
   changed_.clear();
   while (!heap_.empty()) {

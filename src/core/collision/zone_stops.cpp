@@ -247,9 +247,17 @@ void ContactZones::settleJam(int p) {
 // the speed it had before its first jam: the lock leaves it its motion along the walls, so with
 // one jam |v_end|^2 + share^2 |taken|^2 is at most that speed squared; with two (a second lock
 // stops it) the cap decides.
+int ContactZones::bounceLimit(const ZoneRecord& z) {
+  if (!(z.lightest > 0.0) || !(z.heaviest > z.lightest)) return kMaxZoneBounces;
+  const double galperin = 3.14159265358979323846 * std::sqrt(z.heaviest / z.lightest);
+  const double limit = kBouncesPerGalperinCount * galperin;  // NaN-free: both masses positive
+  if (!(limit < kMaxZoneBouncesCap)) return kMaxZoneBouncesCap;
+  return std::max(kMaxZoneBounces, static_cast<int>(std::ceil(limit)));
+}
+
 int ContactZones::rattlerOf(const Scene& scene, int zone, const PairParticles& pair) const {
   const ZoneRecord& z = record_[root(zone)];
-  if (!(cor_ > 0.0) || z.bounces < kMaxZoneBounces || z.size != 1) return -1;
+  if (!(cor_ > 0.0) || z.bounces < bounceLimit(z) || z.size != 1) return -1;
   for (int k = 0; k < pair.count; ++k)
     if (!isImmobile(scene, pair.p[k])) return pair.p[k];
   return -1;
