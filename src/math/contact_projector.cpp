@@ -161,9 +161,7 @@ bool ContactProjector::solve(const double* groupScale, double factor, double tol
         // The exact solve counts as one update, and what it queued may take kClusterRows more
         // (the worklist is shared: a fresh budget went to the other zones' rows, and pile-rest
         // 1,000 made 41% more updates a step).
-        updates_ += maxUpdates + 1 - kClusterRows;
-        updates = kClusterRows;
-        maxUpdates = 2 * kClusterRows;
+        maxUpdates = updates + kClusterRows;
         continue;
       }
     }

@@ -9,6 +9,9 @@
 
 namespace fosssim::math {
 
+static_assert(ContactProjector::kClusterRows <= kMaxEnumerationRows, "a cluster's rows must fit the enumeration");
+static_assert(ContactProjector::kClusterBodies <= kMaxEnumerationBodies, "a cluster's bodies must fit the enumeration");
+
 // Why: Gauss-Seidel contracts slowly where bodies of very different masses are squeezed
 // together. A light disk between a heavy one and a wall is pushed back and forth between its two
 // rows, each update passing on a share of about m / M of what is left: a disk 245 times lighter
@@ -62,11 +65,13 @@ bool ContactProjector::solveCluster(int k, RowSource* source, bool anyMasses) {
     return true;
   };
   if (!gather() || nb < 2) return false;  // one body: solveAlone's (a locked one: Gauss-Seidel's)
-  double lightest = 0.0, heaviest = std::numeric_limits<double>::infinity();  // as inverse masses
-  for (int i = 0; i < nb; ++i)
-    lightest = std::max(lightest, inverseMass_[bodies[i]]), heaviest = std::min(heaviest, inverseMass_[bodies[i]]);
-  if (!anyMasses && !(lightest >= kClusterMassRatio * heaviest)) return false;  // before anything changes
-  if (anyMasses && source != nullptr) {
+  // Decided before anything changes: masses far apart, or the rescue where the source allows it.
+  if (!anyMasses) {
+    double lightest = 0.0, heaviest = std::numeric_limits<double>::infinity();  // as inverse masses
+    for (int i = 0; i < nb; ++i)
+      lightest = std::max(lightest, inverseMass_[bodies[i]]), heaviest = std::min(heaviest, inverseMass_[bodies[i]]);
+    if (!(lightest >= kClusterMassRatio * heaviest)) return false;
+  } else if (source != nullptr) {
     int ids[kClusterBodies];
     for (int i = 0; i < nb; ++i) ids[i] = body_[bodies[i]].id;
     if (!source->mayRescue(ids, nb)) return false;

@@ -173,17 +173,17 @@ bool projectByEnumeration(const std::vector<double>& inverseMass, const std::vec
                           std::vector<Vec2>& v, double relTol, std::vector<double>& impulses) {
   const int m = static_cast<int>(rows.size());
   const int n = 2 * static_cast<int>(v.size());
+  if (m > kMaxEnumerationRows || n > 2 * kMaxEnumerationBodies) return false;
   impulses.assign(m, 0.0);
   // A_SS has rank at most the movable bodies' dimensions: larger active sets are singular.
   const int dims = 2 * static_cast<int>(std::count_if(inverseMass.begin(), inverseMass.end(), [](double w) { return w != 0.0; }));
-  // Sizes bounded at compile time (at most 20 rows and kMaxEnumerationBodies bodies): the
-  // enumeration's 2^m small systems then allocate nothing (malloc and free took a sixth of a
-  // rattling box's time, the LU factorisations half).
-  using RowsByDims = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 20, 2 * kMaxEnumerationBodies>;
-  using Square = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 20, 20>;
-  using RowVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 20, 1>;
-  using DimVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 2 * kMaxEnumerationBodies, 1>;
-  if (m > 20 || n > 2 * kMaxEnumerationBodies) return false;
+  // Sizes bounded at compile time: the enumeration's 2^m small systems then allocate nothing
+  // (malloc and free took a sixth of a rattling box's time, the LU factorisations half).
+  constexpr int kRows = kMaxEnumerationRows, kDims = 2 * kMaxEnumerationBodies;
+  using RowsByDims = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kRows, kDims>;
+  using Square = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kRows, kRows>;
+  using RowVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kRows, 1>;
+  using DimVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kDims, 1>;
   RowsByDims G = RowsByDims::Zero(m, n);
   DimVector vt(n), minv(n);
   for (int b = 0; b < static_cast<int>(v.size()); ++b) {

@@ -91,15 +91,13 @@ TEST(FastBox, RandomFastDisksInABoxKeepTheirEnergy) {
     const int n = uniformInt(rng, 2, 4);
     for (int p = 0; p < n; ++p) {
       const double r = uniform(rng, 0.05, 0.12);
-      const double px = uniform(rng, -0.8, 0.8), py = uniform(rng, -0.8, 0.8);  // draws in sequence
-      const Vec2 x(px, py);
+      const Vec2 x = uniformVec(rng, -0.8, 0.8);
       bool apart = true;
       for (int q = 0; q < s.scene.numParticles(); ++q)  // the disks placed so far
         apart = apart && (at(s.state.x, q) - x).norm() > s.scene.radius[q] + r;
       if (!apart) continue;  // the draw overlaps one placed already: one disk fewer
       const double m = std::pow(10.0, uniform(rng, -1.5, 1.5));
-      const double vx = uniform(rng, -100, 100), vy = uniform(rng, -100, 100);
-      addBody(s, m, x, Vec2(vx, vy), r);
+      addBody(s, m, x, uniformVec(rng, -100, 100), r);
     }
     if (s.scene.numParticles() < 2) continue;
     auto sim = defaultModeSimulator(s);

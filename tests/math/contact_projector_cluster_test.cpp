@@ -67,8 +67,7 @@ Cluster randomCluster(std::mt19937& rng) {
   const int obstacles = std::uniform_int_distribution<int>(0, 2)(rng);
   for (int b = 0; b < c.free; ++b) {
     c.invMass.push_back(std::exp(-logMass(rng)));
-    const double vx = u(rng), vy = u(rng);
-    c.v.emplace_back(vx, vy);
+    c.v.push_back(Vec2{u(rng), u(rng)});  // braced: x drawn before y under every compiler
   }
   for (int b = 0; b < obstacles; ++b) c.invMass.push_back(0.0), c.v.push_back(Vec2::Zero());
   c.bodies = c.free + obstacles;

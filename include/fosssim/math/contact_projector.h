@@ -44,10 +44,7 @@ class ContactProjector : public ExactSolveLimits {
     virtual bool rowNow(int index, ConstraintRow& out) = 0;
     /// Whether a solve about to end on its budget may project the cluster of these `count`
     /// bodies (ids) exactly (solveCluster's rescue); every cluster may when there is no source.
-    virtual bool mayRescue(const int* ids, int count) {
-      (void)ids, (void)count;
-      return true;
-    }
+    virtual bool mayRescue(const int* /*ids*/, int /*count*/) { return true; }
 
    protected:
     ~RowSource() = default;

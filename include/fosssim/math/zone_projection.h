@@ -92,11 +92,14 @@ class ZoneProjector {  // owns scratch so repeated solves do not allocate
   std::vector<double> rowScale_;  // per row: |G_k| V, the denominator of the residual (0: trivial row)
 };
 
-/// Bodies (movable or not) that projectByEnumeration takes: its arrays are sized at compile time.
+/// Rows and bodies (movable or not) that projectByEnumeration takes: its arrays are sized at
+/// compile time, and 2^rows active sets are as many as it can afford.
+constexpr int kMaxEnumerationRows = 20;
 constexpr int kMaxEnumerationBodies = 32;
 
 /// Reference solver for tests: enumerates active sets (feasible for up to ~14 rows), exact KKT;
-/// returns false if none found (or for more than 20 rows or kMaxEnumerationBodies bodies).
+/// returns false if none found (or for more than kMaxEnumerationRows rows or kMaxEnumerationBodies
+/// bodies).
 bool projectByEnumeration(const std::vector<double>& inverseMass, const std::vector<ConstraintRow>& rows,
                           std::vector<Vec2>& v);
 /// The same with a row counted as satisfied at w_k >= -relTol |G_k| V (V: the largest speed of

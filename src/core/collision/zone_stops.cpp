@@ -229,6 +229,15 @@ void ContactZones::settleJam(int p) {
   });
 }
 
+// Galperin's count (kBouncesPerGalperinCount): a zone of alike masses keeps kMaxZoneBounces.
+int ContactZones::bounceLimit(const ZoneRecord& z) {
+  if (!(z.lightest > 0.0) || !(z.heaviest > z.lightest)) return kMaxZoneBounces;
+  const double galperin = 3.14159265358979323846 * std::sqrt(z.heaviest / z.lightest);
+  const double limit = kBouncesPerGalperinCount * galperin;  // NaN-free: both masses positive
+  if (!(limit < kMaxZoneBouncesCap)) return kMaxZoneBouncesCap;
+  return std::max(kMaxZoneBounces, static_cast<int>(std::ceil(limit)));
+}
+
 // A rattle: a ball between two walls a hair wider than it bounces u h / gap times in a step (200
 // at 20 m/s across a gap of 1 mm, dt 0.01), past the zone's bounces, and jams; its lock took its
 // speed across the walls for good (at COR 1, four fifths of its kinetic energy there). The
@@ -247,14 +256,6 @@ void ContactZones::settleJam(int p) {
 // the speed it had before its first jam: the lock leaves it its motion along the walls, so with
 // one jam |v_end|^2 + share^2 |taken|^2 is at most that speed squared; with two (a second lock
 // stops it) the cap decides.
-int ContactZones::bounceLimit(const ZoneRecord& z) {
-  if (!(z.lightest > 0.0) || !(z.heaviest > z.lightest)) return kMaxZoneBounces;
-  const double galperin = 3.14159265358979323846 * std::sqrt(z.heaviest / z.lightest);
-  const double limit = kBouncesPerGalperinCount * galperin;  // NaN-free: both masses positive
-  if (!(limit < kMaxZoneBouncesCap)) return kMaxZoneBouncesCap;
-  return std::max(kMaxZoneBounces, static_cast<int>(std::ceil(limit)));
-}
-
 int ContactZones::rattlerOf(const Scene& scene, int zone, const PairParticles& pair) const {
   const ZoneRecord& z = record_[root(zone)];
   if (!(cor_ > 0.0) || z.bounces < bounceLimit(z) || z.size != 1) return -1;
