@@ -49,14 +49,10 @@
 
 #include <Eigen/Dense>
 
+#include "row_measures.h"
+
 namespace fosssim::math {
 namespace {
-
-double rowVelocity(const ConstraintRow& row, const std::vector<Vec2>& v) {
-  double w = 0.0;
-  for (int j = 0; j < row.count; ++j) w += row.coef[j].dot(v[row.body[j]]);
-  return w;
-}
 
 // G_k M^-1 G_k^T. Entries naming the same body add their coefficients first.
 double rowDiagonal(const ConstraintRow& row, const std::vector<double>& inverseMass) {
@@ -71,20 +67,6 @@ double rowDiagonal(const ConstraintRow& row, const std::vector<double>& inverseM
     d += inverseMass[row.body[j]] * c.squaredNorm();
   }
   return d;
-}
-
-// The zone's velocity scale V: the largest predicted speed among the bodies the rows reference.
-double zoneSpeed(const std::vector<ConstraintRow>& rows, const std::vector<Vec2>& v) {
-  double speed = 0.0;
-  for (const ConstraintRow& row : rows)
-    for (int j = 0; j < row.count; ++j) speed = std::max(speed, v[row.body[j]].norm());
-  return speed;
-}
-
-double rowNorm(const ConstraintRow& row) {
-  double n2 = 0.0;
-  for (int j = 0; j < row.count; ++j) n2 += row.coef[j].squaredNorm();
-  return std::sqrt(n2);
 }
 
 }  // namespace
@@ -104,7 +86,7 @@ ProjectionResult ZoneProjector::project(const std::vector<double>& inverseMass, 
     }
   }
 
-  const double speed = zoneSpeed(rows, v);
+  const double speed = measure::zoneSpeed(rows, v);
   if (!std::isfinite(speed)) {
     result.residual = std::numeric_limits<double>::infinity();
     return result;  // v untouched
@@ -118,17 +100,17 @@ ProjectionResult ZoneProjector::project(const std::vector<double>& inverseMass, 
   // once and can only be reported. Rows with no coefficients (|G_k| == 0) are trivially met.
   double immovableResidual = 0.0;
   for (int k = 0; k < m; ++k) {
-    rowScale_[k] = rowNorm(rows[k]) * speed;
+    rowScale_[k] = measure::rowNorm(rows[k]) * speed;
     diag_[k] = rowDiagonal(rows[k], inverseMass);
     if (rowScale_[k] > 0.0 && diag_[k] == 0.0)
-      immovableResidual = std::max(immovableResidual, std::max(0.0, -rowVelocity(rows[k], v)) / rowScale_[k]);
+      immovableResidual = std::max(immovableResidual, std::max(0.0, -measure::rowVelocity(rows[k], v)) / rowScale_[k]);
   }
 
   auto movableResidual = [&]() {
     double r = 0.0;
     for (int k = 0; k < m; ++k) {
       if (rowScale_[k] == 0.0 || diag_[k] == 0.0) continue;
-      r = std::max(r, std::abs(std::min(diag_[k] * lambda_[k], rowVelocity(rows[k], v))) / rowScale_[k]);
+      r = std::max(r, std::abs(std::min(diag_[k] * lambda_[k], measure::rowVelocity(rows[k], v))) / rowScale_[k]);
     }
     return r;
   };
@@ -139,7 +121,7 @@ ProjectionResult ZoneProjector::project(const std::vector<double>& inverseMass, 
     for (int k = 0; k < m; ++k) {
       if (rowScale_[k] == 0.0 || diag_[k] == 0.0) continue;
       const ConstraintRow& row = rows[k];
-      const double w = rowVelocity(row, v);
+      const double w = measure::rowVelocity(row, v);
       largestUpdate = std::max(largestUpdate, std::abs(std::min(diag_[k] * lambda_[k], w)) / rowScale_[k]);
       const double updated = std::max(0.0, lambda_[k] - w / diag_[k]);
       const double delta = updated - lambda_[k];
@@ -195,10 +177,10 @@ bool projectByEnumeration(const std::vector<double>& inverseMass, const std::vec
   const Square A = G * minv.asDiagonal() * G.transpose();
   const RowVector b = G * vt;
 
-  const double speed = zoneSpeed(rows, v);
+  const double speed = measure::zoneSpeed(rows, v);
   if (speed == 0.0) return true;
   RowVector scale(m);
-  for (int k = 0; k < m; ++k) scale(k) = relTol * rowNorm(rows[k]) * speed;
+  for (int k = 0; k < m; ++k) scale(k) = relTol * measure::rowNorm(rows[k]) * speed;
 
   std::vector<int> active;
   for (unsigned mask = 0; mask < (1u << m); ++mask) {

@@ -1,0 +1,188 @@
+// Goldfarb and Idnani's dual active-set method for the zone projection (active_set_projection.h).
+//
+// Coordinates. Only movable bodies have unknowns. With y = M^1/2 (v - v~) (movable bodies'
+// components, 2 per body) the objective is 1/2 |y|^2, and row k reads
+//     a_k . y + s_k >= 0,   a_k = M^-1/2 G_k^T (the row's movable coefficients, each times
+//                           sqrt of its body's inverse mass),   s_k = G_k v~
+// (s_k includes what the row's obstacles contribute: their velocities are constants). The
+// problem is the point of least norm in a polyhedron, whose optimum is y* = sum_k u_k a_k with
+// u >= 0 and u_k = 0 on rows that are not tight: then v* = v~ + M^-1/2 y* = v~ + M^-1 G^T u, so
+// the multipliers u are the rows' impulses lambda.
+//
+// The method. Start at the unconstrained optimum y = 0 with no active rows. While some row is
+// violated, take the most violated p (by its distance a_p . y + s_p over |a_p|, which does not
+// depend on the units) and move towards satisfying it while keeping the active rows tight:
+//     z = a_p - Q Q^T a_p   (the part of a_p orthogonal to the active normals; Q an orthonormal
+//                            basis of them, Q R = N = [a_j] over the active rows j),
+//     r = R^-1 Q^T a_p      (how the active multipliers must change: a_p = N r + z).
+// Along y + t z, row p's violation falls at |z|^2 per unit t and the active rows stay tight
+// (a_j . z = 0); stationarity, y = N u_N + u_p a_p, holds on with u_N -> u_N - t r and
+// u_p -> u_p + t, since t z = t a_p - N (t r). The step is the least of
+//     t2 = -(a_p . y + s_p) / |z|^2   (row p becomes tight: it joins the active set), and
+//     t1 = min over active j with r_j > 0 of u_j / r_j   (an active multiplier reaches 0: row j
+//                                                         leaves the active set, and p is tried
+//                                                         again from there).
+// When a_p depends on the active normals (z = 0) only the multipliers move (a step t1 in the
+// dual alone); if then no r_j is positive, a_p is a non-positive combination of tight rows that
+// all hold: no y satisfies them and p together, and the problem is infeasible. The dual
+// objective grows at every step and no active set repeats, so the method ends after finitely
+// many (Goldfarb and Idnani's theorem); a cap on the steps guards against rounding.
+//
+// Active normals stay linearly independent (a dependent row never joins), so there are at most
+// as many as the unknowns, 2 per movable body. Q and R are rebuilt for each step by classical
+// Gram-Schmidt applied twice ("twice is enough", Giraud et al. 2005): at these sizes (16 columns
+// at most) that costs less than updating a factorisation, and is as accurate.
+#include "fosssim/math/active_set_projection.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Dense>
+
+#include "row_measures.h"
+
+namespace fosssim::math {
+namespace {
+
+constexpr int kDims = 2 * kMaxActiveSetMovable;
+using RowsByDims = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor, kMaxActiveSetRows, kDims>;
+using DimsByActive = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kDims, kDims>;
+using DimVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kDims, 1>;
+using ActiveVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kDims, 1>;
+
+/// Steps (a row joining or leaving) a solve may take per row and unknown before it gives up: the
+/// method needs about one per row joining, and a few leaving, on the clusters it is given.
+constexpr int kStepsPerSize = 8;
+
+struct Basis {
+  DimsByActive q;  ///< dims x count: orthonormal columns spanning the active normals
+  DimsByActive r;  ///< count x count, upper triangular: N = q r
+  int count = 0;
+};
+
+// Q R = N for the active normals a.row(active[0..count)), each column orthogonalised against the
+// earlier ones twice. False when a column is (nearly) dependent on the earlier ones, which the
+// method never lets join: rounding may still bring it there, and the solve then gives up.
+bool factor(const RowsByDims& a, const int* active, int count, int dims, Basis& basis) {
+  basis.q.resize(dims, count);
+  basis.r.setZero(count, count);
+  basis.count = count;
+  for (int c = 0; c < count; ++c) {
+    DimVector col = a.row(active[c]).transpose();
+    const double length = col.norm();
+    for (int pass = 0; pass < 2; ++pass) {
+      const ActiveVector proj = basis.q.leftCols(c).transpose() * col;
+      col -= basis.q.leftCols(c) * proj;
+      basis.r.col(c).head(c) += proj;
+    }
+    const double left = col.norm();
+    if (!(left > kActiveSetDependence * length)) return false;
+    basis.r(c, c) = left;
+    basis.q.col(c) = col / left;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool projectByActiveSet(const std::vector<double>& inverseMass, const std::vector<ConstraintRow>& rows,
+                        std::vector<Vec2>& v, double relTol, std::vector<double>& impulses) {
+  const int m = static_cast<int>(rows.size());
+  const int bodies = static_cast<int>(v.size());
+  if (m > kMaxActiveSetRows || bodies > kMaxActiveSetBodies) return false;
+  const double speed = measure::zoneSpeed(rows, v);
+  if (speed == 0.0) {  // nothing moves, so nothing closes: v* = v~ with no impulse
+    impulses.assign(m, 0.0);
+    return true;
+  }
+  int column[kMaxActiveSetBodies];  // a movable body's first unknown, -1 for an obstacle
+  int dims = 0;
+  for (int b = 0; b < bodies; ++b) {
+    column[b] = inverseMass[b] != 0.0 ? dims : -1;
+    if (inverseMass[b] != 0.0) dims += 2;
+    if (dims > kDims) return false;
+  }
+
+  RowsByDims a = RowsByDims::Zero(m, dims);
+  double s[kMaxActiveSetRows], slack[kMaxActiveSetRows], length[kMaxActiveSetRows], u[kMaxActiveSetRows];
+  for (int k = 0; k < m; ++k) {
+    const ConstraintRow& row = rows[k];
+    for (int j = 0; j < row.count; ++j)
+      if (const int c = column[row.body[j]]; c >= 0)
+        a.block<1, 2>(k, c) += std::sqrt(inverseMass[row.body[j]]) * row.coef[j].transpose();
+    s[k] = measure::rowVelocity(row, v);
+    slack[k] = relTol * measure::rowNorm(row) * speed;
+    length[k] = a.row(k).norm();
+    u[k] = 0.0;
+    if (length[k] == 0.0 && s[k] < -slack[k]) return false;  // obstacles alone, closing
+  }
+
+  DimVector y = DimVector::Zero(dims);
+  int active[kDims];
+  int count = 0;
+  bool isActive[kMaxActiveSetRows] = {};
+  Basis basis;
+  const int maxSteps = kStepsPerSize * (m + dims) + 16;
+  int steps = 0;
+  while (true) {
+    // The most violated row, by distance in y (rows of obstacles alone are settled above).
+    int p = -1;
+    double worst = 0.0;
+    for (int k = 0; k < m; ++k) {
+      if (isActive[k] || length[k] == 0.0) continue;
+      const double w = a.row(k).dot(y) + s[k];
+      if (w >= -slack[k]) continue;
+      if (const double distance = w / length[k]; p < 0 || distance < worst) p = k, worst = distance;
+    }
+    if (p < 0) break;
+    const DimVector ap = a.row(p).transpose();
+    while (true) {  // until p joins (or the problem is found infeasible)
+      if (++steps > maxSteps || !factor(a, active, count, dims, basis)) return false;
+      ActiveVector proj = basis.q.leftCols(count).transpose() * ap;
+      DimVector z = ap - basis.q.leftCols(count) * proj;
+      const ActiveVector proj2 = basis.q.leftCols(count).transpose() * z;  // twice, as in factor
+      z -= basis.q.leftCols(count) * proj2;
+      proj += proj2;
+      const ActiveVector r = basis.r.topLeftCorner(count, count).triangularView<Eigen::Upper>().solve(proj);
+      double t1 = std::numeric_limits<double>::infinity();
+      int leaving = -1;
+      for (int i = 0; i < count; ++i)
+        if (r(i) > 0.0 && u[active[i]] / r(i) < t1) t1 = u[active[i]] / r(i), leaving = i;
+      const bool dependent = !(z.norm() > kActiveSetDependence * length[p]);
+      if (dependent && leaving < 0) return false;  // p closes against tight rows: infeasible
+      const double t2 = dependent ? std::numeric_limits<double>::infinity() : -(ap.dot(y) + s[p]) / z.squaredNorm();
+      const double t = std::min(t1, t2);
+      if (!dependent) y += t * z;
+      for (int i = 0; i < count; ++i) u[active[i]] = std::max(0.0, u[active[i]] - t * r(i));
+      u[p] += t;
+      if (t2 <= t1) {
+        active[count++] = p;
+        isActive[p] = true;
+        break;
+      }
+      u[active[leaving]] = 0.0;
+      isActive[active[leaving]] = false;
+      for (int i = leaving; i + 1 < count; ++i) active[i] = active[i + 1];
+      --count;
+    }
+  }
+
+  // v* from the multipliers (v~ + M^-1 G^T u), each row then checked on the velocities
+  // themselves: with very different masses the y coordinates hide cancellations.
+  Vec2 out[kMaxActiveSetBodies];
+  std::copy(v.begin(), v.end(), out);
+  for (int k = 0; k < m; ++k)
+    for (int j = 0; j < rows[k].count && u[k] != 0.0; ++j)
+      out[rows[k].body[j]] += (inverseMass[rows[k].body[j]] * u[k]) * rows[k].coef[j];
+  for (int k = 0; k < m; ++k) {
+    double w = 0.0;
+    for (int j = 0; j < rows[k].count; ++j) w += rows[k].coef[j].dot(out[rows[k].body[j]]);
+    if (!(w >= -slack[k])) return false;
+  }
+  std::copy(out, out + bodies, v.begin());
+  impulses.assign(u, u + m);
+  return true;
+}
+
+}  // namespace fosssim::math
