@@ -55,6 +55,9 @@ using ActiveVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kDims, 1>;
 /// method needs about one per row joining, and a few leaving, on the clusters it is given.
 constexpr int kStepsPerSize = 8;
 
+/// Passes of iterative refinement of the active rows' multipliers at the end (see there).
+constexpr int kRefinements = 2;
+
 struct Basis {
   DimsByActive q;  ///< dims x count: orthonormal columns spanning the active normals
   DimsByActive r;  ///< count x count, upper triangular: N = q r
@@ -168,18 +171,38 @@ bool projectByActiveSet(const std::vector<double>& inverseMass, const std::vecto
     }
   }
 
-  // v* from the multipliers (v~ + M^-1 G^T u), each row then checked on the velocities
-  // themselves: with very different masses the y coordinates hide cancellations.
+  // v* from the multipliers (v~ + M^-1 G^T u), and the active rows' multipliers refined so that
+  // those rows are tight on the velocities themselves: the steps' rounding accumulates in y, and
+  // a row left closing by a few ulps of a large impulse comes back to the caller as a contact
+  // that still closes. Refinement: the active rows' velocities w_A are linear in their
+  // multipliers, dw_A = N^T N du_A = R^T R du_A, so du_A = -(R^T R)^-1 w_A; twice, as iterative
+  // refinement goes. Each row is then checked on the velocities, where the y coordinates would
+  // hide the cancellations of very different masses.
   Vec2 out[kMaxActiveSetBodies];
-  std::copy(v.begin(), v.end(), out);
-  for (int k = 0; k < m; ++k)
-    for (int j = 0; j < rows[k].count && u[k] != 0.0; ++j)
-      out[rows[k].body[j]] += (inverseMass[rows[k].body[j]] * u[k]) * rows[k].coef[j];
-  for (int k = 0; k < m; ++k) {
+  const auto velocities = [&]() {
+    std::copy(v.begin(), v.end(), out);
+    for (int k = 0; k < m; ++k)
+      for (int j = 0; j < rows[k].count && u[k] != 0.0; ++j)
+        out[rows[k].body[j]] += (inverseMass[rows[k].body[j]] * u[k]) * rows[k].coef[j];
+  };
+  const auto rowVelocity = [&](int k) {
     double w = 0.0;
     for (int j = 0; j < rows[k].count; ++j) w += rows[k].coef[j].dot(out[rows[k].body[j]]);
-    if (!(w >= -slack[k])) return false;
+    return w;
+  };
+  velocities();
+  if (count > 0 && factor(a, active, count, dims, basis)) {
+    for (int pass = 0; pass < kRefinements; ++pass) {
+      ActiveVector w(count);
+      for (int i = 0; i < count; ++i) w(i) = -rowVelocity(active[i]);
+      const auto R = basis.r.topLeftCorner(count, count).triangularView<Eigen::Upper>();
+      const ActiveVector du = R.solve(R.transpose().solve(w));
+      for (int i = 0; i < count; ++i) u[active[i]] = std::max(0.0, u[active[i]] + du(i));
+      velocities();
+    }
   }
+  for (int k = 0; k < m; ++k)
+    if (!(rowVelocity(k) >= -slack[k])) return false;
   std::copy(out, out + bodies, v.begin());
   impulses.assign(u, u + m);
   return true;

@@ -5,24 +5,27 @@
 #include <vector>
 
 #include "contact_projector_update.h"
-#include "fosssim/math/zone_projection.h"
+#include "fosssim/math/active_set_projection.h"
 
 namespace fosssim::math {
 
-static_assert(ContactProjector::kClusterRows <= kMaxEnumerationRows, "a cluster's rows must fit the enumeration");
-static_assert(ContactProjector::kClusterBodies <= kMaxEnumerationBodies, "a cluster's bodies must fit the enumeration");
+// A cluster's bodies, and the obstacles its rows name (up to two a row), must fit the solver.
+static_assert(ContactProjector::kClusterRows <= kMaxActiveSetRows, "a cluster's rows must fit the solver");
+static_assert(ContactProjector::kClusterBodies <= kMaxActiveSetMovable, "a cluster's bodies must fit the solver");
+static_assert(ContactProjector::kClusterBodies + 2 * ContactProjector::kClusterRows <= kMaxActiveSetBodies,
+              "a cluster's bodies and obstacles must fit the solver");
 
 // Why: Gauss-Seidel contracts slowly where bodies of very different masses are squeezed
 // together. A light disk between a heavy one and a wall is pushed back and forth between its two
 // rows, each update passing on a share of about m / M of what is left: a disk 245 times lighter
 // ran through 65,536 updates without settling, every solve of its zone ended on its budget, and
 // the zone, taken for a jam, stopped both disks (all their kinetic energy, at COR 1). Such
-// clusters are small, and their projection is found exactly by the active-set enumeration
-// (projectByEnumeration): some active set S of linearly independent rows holds the optimum, where
-//     A_SS lambda_S = -G_S v0,  lambda_S >= 0,  G v* >= 0,  v* = v0 + M^-1 G_S^T lambda_S,
-// v0 the cluster's velocities without its rows' impulses. At most 2^kClusterRows systems of at
-// most 2 kClusterBodies unknowns: tried, like solveAlone, only for rows Gauss-Seidel keeps coming
-// back to (masses kClusterMassRatio apart), and once when a solve is about to end on its budget
+// clusters are small, and their projection is found exactly by the dual active-set method
+// (projectByActiveSet, active_set_projection.cpp) from v0, the cluster's velocities without its
+// rows' impulses: v* = v0 + M^-1 G^T lambda with lambda >= 0, G v* >= 0 and complementarity.
+// Its steps grow with the rows, where the enumeration of active sets it replaced took up to
+// 2^rows systems. Tried, like solveAlone, only for rows Gauss-Seidel keeps coming back to
+// (masses kClusterMassRatio apart), and once when a solve is about to end on its budget
 // (`anyMasses`: two light disks wedged in a corner by two heavy ones stall it as well).
 bool ContactProjector::solveCluster(int k, RowSource* source, bool anyMasses) {
   // The cluster: row k's movable bodies and, through their rows, every movable body they meet.
@@ -85,7 +88,7 @@ bool ContactProjector::solveCluster(int k, RowSource* source, bool anyMasses) {
     if (!gather() || !stale.empty() || nb < 2) return false;
   }
 
-  // The enumeration's problem: the cluster's bodies first, then each obstacle a row names (its
+  // The solver's problem: the cluster's bodies first, then each obstacle a row names (its
   // velocity a constant of the row), rows on local indices, v0 without the rows' impulses.
   std::vector<double>& invMass = clusterMass_;
   std::vector<Vec2>& v = clusterVelocity_;
@@ -108,7 +111,7 @@ bool ContactProjector::solveCluster(int k, RowSource* source, bool anyMasses) {
     }
     local.push_back(r);
   }
-  if (!projectByEnumeration(invMass, local, v, kClusterSlack, clusterImpulses_)) return false;
+  if (!projectByActiveSet(invMass, local, v, kClusterSlack, clusterImpulses_)) return false;
   // As for solveAlone: exact arithmetic never ends above the guard's start; rounding, on nearly
   // dependent rows, can, and Gauss-Seidel then goes on instead.
   double after = 0.0, start = 0.0;
