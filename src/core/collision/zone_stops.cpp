@@ -229,8 +229,10 @@ void ContactZones::settleJam(int p) {
   });
 }
 
-// Galperin's count (kBouncesPerGalperinCount): a zone of alike masses keeps kMaxZoneBounces.
+// A small zone's rattles (kSmallZoneMembers), then Galperin's count (kBouncesPerGalperinCount): a
+// zone of alike masses keeps kMaxZoneBounces.
 int ContactZones::bounceLimit(const ZoneRecord& z) {
+  if (z.size >= 2 && z.size <= kSmallZoneMembers) return kMaxZoneBouncesCap;
   if (!(z.lightest > 0.0) || !(z.heaviest > z.lightest)) return kMaxZoneBounces;
   const double galperin = 3.14159265358979323846 * std::sqrt(z.heaviest / z.lightest);
   const double limit = kBouncesPerGalperinCount * galperin;  // NaN-free: both masses positive
