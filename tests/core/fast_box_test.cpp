@@ -107,11 +107,12 @@ TEST(FastBox, ALightDiskRattlingAgainstADiskTheWallsHoldDoesNotJam) {
 }
 
 // Random boxes: 2-4 disks of 0.03 to 30 kg at up to 100 m/s in a box of 2 m, dt 0.03 (up to 1.5
-// crossings a step), five steps each: the kinetic energy never falls (nor grows).
+// crossings a step), five steps each, 600 boxes (3,000 took 0.6 s here and kept their energy
+// too): the kinetic energy never falls (nor grows).
 TEST(FastBox, RandomFastDisksInABoxKeepTheirEnergy) {
   Rng rng(2026);
   int runs = 0;
-  for (int trial = 0; trial < 60; ++trial) {
+  for (int trial = 0; trial < 600; ++trial) {
     const char* type = kEventTypes[trial % 2];
     SCOPED_TRACE(std::string(type) + " trial " + std::to_string(trial));
     TestScene s = box(type, 1.0, 0.03);
@@ -135,7 +136,7 @@ TEST(FastBox, RandomFastDisksInABoxKeepTheirEnergy) {
     }
     ++runs;
   }
-  EXPECT_GT(runs, 50);
+  EXPECT_GT(runs, 500);
 }
 
 }  // namespace
