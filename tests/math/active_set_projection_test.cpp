@@ -19,33 +19,6 @@ using namespace testing;  // random_zones.h
 
 constexpr double kSlack = 1e-9;  // the feasibility slack asked of the solver, relative (as the enumeration's)
 
-// KKT of min 1/2 |v - v~|_M^2 s.t. G v >= 0, recomputed here from the rows: v* - v~ = M^-1 G^T
-// lambda, lambda >= 0, every row satisfied to the slack, and complementarity in velocity units
-// (a row with an impulse is tight). Immovable bodies keep their velocities.
-void expectKkt(const Zone& z, const std::vector<Vec2>& v, const std::vector<double>& lambda, double tol) {
-  ASSERT_EQ(lambda.size(), z.rows.size());
-  const double scale = speedScale(z.v);
-  std::vector<Vec2> change(z.v.size(), Vec2::Zero());
-  for (size_t k = 0; k < z.rows.size(); ++k)
-    for (int j = 0; j < z.rows[k].count; ++j)
-      change[z.rows[k].body[j]] += z.invMass[z.rows[k].body[j]] * lambda[k] * z.rows[k].coef[j];
-  for (size_t b = 0; b < z.v.size(); ++b) {
-    EXPECT_LE((v[b] - z.v[b] - change[b]).norm(), 1e-12 * scale) << "body " << b;
-    if (z.invMass[b] == 0.0) {
-      EXPECT_EQ(v[b], z.v[b]) << "body " << b;
-    }
-  }
-  for (size_t k = 0; k < z.rows.size(); ++k) {
-    const double w = rowVelocity(z.rows[k], v);
-    const double rowTol = tol * rowNorm(z.rows[k]) * scale;
-    double akk = 0.0;
-    for (int j = 0; j < z.rows[k].count; ++j) akk += z.invMass[z.rows[k].body[j]] * z.rows[k].coef[j].squaredNorm();
-    EXPECT_GE(lambda[k], 0.0) << "row " << k;
-    EXPECT_GE(w, -rowTol) << "row " << k;
-    EXPECT_LE(std::min(akk * lambda[k], std::max(w, 0.0)), rowTol) << "row " << k;
-  }
-}
-
 // Every random zone has a body fixed at rest, so v = 0 satisfies all its rows: the solver must
 // find the optimum, and it must be the enumeration's (v* is unique; the impulses need not be).
 TEST(ActiveSetProjection, MatchesTheEnumerationOnRandomZones) {

@@ -1,6 +1,6 @@
 // Test helpers shared by the zone projection and ContactProjector tests: contact rows of the three
-// kinds, a random-zone generator, and the per-zone quantities the tests check (row velocity, speed
-// scale, kinetic energy, momentum).
+// kinds, a random-zone generator, the per-zone quantities the tests check (row velocity, speed
+// scale, kinetic energy, momentum), and the projection's optimality (KKT) conditions.
 #pragma once
 
 #include <algorithm>
@@ -9,6 +9,8 @@
 #include <numeric>
 #include <random>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "fosssim/math/zone_projection.h"
 
@@ -90,6 +92,33 @@ inline Vec2 momentum(const std::vector<double>& invMass, const std::vector<Vec2>
   Vec2 p = Vec2::Zero();
   for (size_t b = 0; b < v.size(); ++b) p += v[b] / invMass[b];
   return p;
+}
+
+// KKT of min 1/2 |v - v~|_M^2 s.t. G v >= 0, recomputed here from the rows: v* - v~ = M^-1 G^T
+// lambda, lambda >= 0, every row satisfied to the slack, and complementarity in velocity units
+// (a row with an impulse is tight). Immovable bodies keep their velocities.
+inline void expectKkt(const Zone& z, const std::vector<Vec2>& v, const std::vector<double>& lambda, double tol) {
+  ASSERT_EQ(lambda.size(), z.rows.size());
+  const double scale = speedScale(z.v);
+  std::vector<Vec2> change(z.v.size(), Vec2::Zero());
+  for (size_t k = 0; k < z.rows.size(); ++k)
+    for (int j = 0; j < z.rows[k].count; ++j)
+      change[z.rows[k].body[j]] += z.invMass[z.rows[k].body[j]] * lambda[k] * z.rows[k].coef[j];
+  for (size_t b = 0; b < z.v.size(); ++b) {
+    EXPECT_LE((v[b] - z.v[b] - change[b]).norm(), 1e-12 * scale) << "body " << b;
+    if (z.invMass[b] == 0.0) {
+      EXPECT_EQ(v[b], z.v[b]) << "body " << b;
+    }
+  }
+  for (size_t k = 0; k < z.rows.size(); ++k) {
+    const double w = rowVelocity(z.rows[k], v);
+    const double rowTol = tol * rowNorm(z.rows[k]) * scale;
+    double akk = 0.0;
+    for (int j = 0; j < z.rows[k].count; ++j) akk += z.invMass[z.rows[k].body[j]] * z.rows[k].coef[j].squaredNorm();
+    EXPECT_GE(lambda[k], 0.0) << "row " << k;
+    EXPECT_GE(w, -rowTol) << "row " << k;
+    EXPECT_LE(std::min(akk * lambda[k], std::max(w, 0.0)), rowTol) << "row " << k;
+  }
 }
 
 }  // namespace fosssim::math::testing
