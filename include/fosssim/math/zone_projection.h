@@ -103,8 +103,8 @@ constexpr int kMaxEnumerationBodies = 32;
 bool projectByEnumeration(const std::vector<double>& inverseMass, const std::vector<ConstraintRow>& rows,
                           std::vector<Vec2>& v);
 /// The same with a row counted as satisfied at w_k >= -relTol |G_k| V (V: the largest speed of
-/// the rows' bodies), writing each row's multiplier to `impulses`: ContactProjector's exact solve
-/// of a few bodies (solveCluster) is this enumeration.
+/// the rows' bodies), writing each row's multiplier to `impulses`: the reference the tests hold
+/// the exact solves (projectByActiveSet, ContactProjector::solveAlone) to.
 bool projectByEnumeration(const std::vector<double>& inverseMass, const std::vector<ConstraintRow>& rows,
                           std::vector<Vec2>& v, double relTol, std::vector<double>& impulses);
 
