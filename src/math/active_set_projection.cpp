@@ -108,7 +108,8 @@ bool projectByActiveSet(const std::vector<double>& inverseMass, const std::vecto
   }
 
   RowsByDims a = RowsByDims::Zero(m, dims);
-  double s[kMaxActiveSetRows], slack[kMaxActiveSetRows], length[kMaxActiveSetRows], u[kMaxActiveSetRows];
+  double s[kMaxActiveSetRows], slack[kMaxActiveSetRows], join[kMaxActiveSetRows], length[kMaxActiveSetRows],
+      u[kMaxActiveSetRows];
   for (int k = 0; k < m; ++k) {
     const ConstraintRow& row = rows[k];
     for (int j = 0; j < row.count; ++j)
@@ -116,6 +117,7 @@ bool projectByActiveSet(const std::vector<double>& inverseMass, const std::vecto
         a.block<1, 2>(k, c) += std::sqrt(inverseMass[row.body[j]]) * row.coef[j].transpose();
     s[k] = measure::rowVelocity(row, v);
     slack[k] = relTol * measure::rowNorm(row) * speed;
+    join[k] = std::min(relTol, kActiveSetJoin) * measure::rowNorm(row) * speed;
     length[k] = a.row(k).norm();
     u[k] = 0.0;
     if (length[k] == 0.0 && s[k] < -slack[k]) return false;  // obstacles alone, closing
@@ -125,6 +127,7 @@ bool projectByActiveSet(const std::vector<double>& inverseMass, const std::vecto
   int active[kDims];
   int count = 0;
   bool isActive[kMaxActiveSetRows] = {};
+  bool givenUp[kMaxActiveSetRows] = {};  // within the slack, and no step can do better (below)
   Basis basis;
   const int maxSteps = kStepsPerSize * (m + dims) + 16;
   int steps = 0;
@@ -133,9 +136,9 @@ bool projectByActiveSet(const std::vector<double>& inverseMass, const std::vecto
     int p = -1;
     double worst = 0.0;
     for (int k = 0; k < m; ++k) {
-      if (isActive[k] || length[k] == 0.0) continue;
+      if (isActive[k] || givenUp[k] || length[k] == 0.0) continue;
       const double w = a.row(k).dot(y) + s[k];
-      if (w >= -slack[k]) continue;
+      if (w >= -join[k]) continue;
       if (const double distance = w / length[k]; p < 0 || distance < worst) p = k, worst = distance;
     }
     if (p < 0) break;
@@ -153,7 +156,14 @@ bool projectByActiveSet(const std::vector<double>& inverseMass, const std::vecto
       for (int i = 0; i < count; ++i)
         if (r(i) > 0.0 && u[active[i]] / r(i) < t1) t1 = u[active[i]] / r(i), leaving = i;
       const bool dependent = !(z.norm() > kActiveSetDependence * length[p]);
-      if (dependent && leaving < 0) return false;  // p closes against tight rows: infeasible
+      if (dependent && leaving < 0) {
+        // p closes against tight rows: infeasible, unless p is within the caller's slack (its
+        // violation then rounding of the tight rows it depends on) and took no multiplier yet
+        // (so y stays the active rows' combination alone)
+        if (ap.dot(y) + s[p] < -slack[p] || u[p] != 0.0) return false;
+        givenUp[p] = true;
+        break;
+      }
       const double t2 = dependent ? std::numeric_limits<double>::infinity() : -(ap.dot(y) + s[p]) / z.squaredNorm();
       const double t = std::min(t1, t2);
       if (!dependent) y += t * z;

@@ -182,23 +182,23 @@ TEST(ContactPhysics, ARigidZoneThatLandsOnARestingZoneKeepsItsSlide) {
 }
 
 // 8h. The contacts a budget-ended solve leaves closing are solved at its instant, each once in a
-// step (ContactZones::solvesNow). Five unit disks (radius 0.05) on the x axis moving right at 1,
-// 0.5, 0, -0.5 and -1 m/s, h = 0.01, gaps 5e-5, 1.5e-4, 2.5e-4 and 3.5e-4: neighbours close at
-// 0.5 m/s, 0.005 a step, so the left pair touches at t = 5e-5 / 0.005 = 0.01 of the step and its
-// zone takes the three pairs to its right (near: each closes more than its gap in the rest of
-// the step). Gauss-Seidel on a chain of four rows of equal masses needs dozens of sweeps to reach
-// the relative tolerance 1e-10, so with one update per row the solve's budget, 1 x max(4, 8) = 8
-// updates, ends it; five bodies are more than a solve about to end on its budget projects
-// exactly (ContactProjector::kClusterBodies). Every contact of the zone was queried again for
-// that failure: each is brought forward at most once, and a pair without a row is not.
+// step (ContactZones::solvesNow). A row of n = kClusterBodies + 1 unit disks (radius 0.05) on the
+// x axis, disk k moving right at (n - 1) / 4 - k / 2 m/s, h = 0.01, the gap after disk k
+// 5e-5 + 1e-4 k: neighbours close at 0.5 m/s, 0.005 a step, so the left pair touches at
+// t = 5e-5 / 0.005 = 0.01 of the step and its zone takes the pairs to its right (near: each
+// closes more than its gap, at most 5e-5 + 1e-4 (n - 2) < 0.005, in the rest of the step).
+// Gauss-Seidel on a chain of n - 1 rows of equal masses needs dozens of sweeps to reach the
+// relative tolerance 1e-10, so with one update per row the solve's budget, 1 x max(n - 1, 8)
+// updates, ends it; n bodies are one more than a solve about to end on its budget projects
+// exactly. Every contact of the zone was queried again for that failure: each is brought forward
+// at most once, and a pair without a row is not.
 TEST(ContactPhysics, ContactsABudgetEndedSolveLeavesAreSolvedAtItsInstantOnce) {
-  static_assert(math::ContactProjector::kClusterBodies < 5, "the five disks must be too many to project exactly");
+  const int n = math::ContactProjector::kClusterBodies + 1;
   TestScene s = contactScene("hybrid", 0.0, 0.01, Failsafe::Projection, /*maxIterations=*/0);
-  const double gaps[] = {5e-5, 1.5e-4, 2.5e-4, 3.5e-4};
   double x = 0.0;
-  for (int k = 0; k < 5; ++k) {
-    addBody(s, 1.0, Vec2(x, 0.0), Vec2(1.0 - 0.5 * k, 0.0), 0.05);
-    if (k < 4) x += 0.1 + gaps[k];
+  for (int k = 0; k < n; ++k) {
+    addBody(s, 1.0, Vec2(x, 0.0), Vec2(0.25 * (n - 1) - 0.5 * k, 0.0), 0.05);
+    x += 0.1 + 5e-5 + 1e-4 * k;
   }
   const double h = s.scene.dt, T = 0.01;
   StepZones step(s, /*updatesPerRow=*/1, /*hold=*/false);
@@ -209,7 +209,7 @@ TEST(ContactPhysics, ContactsABudgetEndedSolveLeavesAreSolvedAtItsInstantOnce) {
 
   const int zone = zones.absorb(s.scene, motion, candidates, left, T, h);
   ASSERT_GE(zone, 0);
-  for (int k = 1; k < 5; ++k) EXPECT_EQ(zones.zoneOf(k), zones.zoneOf(0)) << "disk " << k << " is near: it joins the zone";
+  for (int k = 1; k < n; ++k) EXPECT_EQ(zones.zoneOf(k), zones.zoneOf(0)) << "disk " << k << " is near: it joins the zone";
   EXPECT_FALSE(zones.solvesNow(left)) << "no solve has failed yet";
   VecX v = s.state.v;
   std::vector<int> changed;
@@ -217,7 +217,7 @@ TEST(ContactPhysics, ContactsABudgetEndedSolveLeavesAreSolvedAtItsInstantOnce) {
   zones.resolve(s.scene, motion, candidates, zone, T, h, v, changed, stats);
   EXPECT_EQ(stats.failsafeRounds, 1);
   bool closing = false;
-  for (int k = 0; k < 4; ++k) closing = closing || motion.rate(k).x() > motion.rate(k + 1).x();
+  for (int k = 0; k + 1 < n; ++k) closing = closing || motion.rate(k).x() > motion.rate(k + 1).x();
   EXPECT_TRUE(closing) << "the solve should have ended on its budget, some pair still closing";
 
   EXPECT_TRUE(zones.solvesNow(left));
@@ -227,10 +227,20 @@ TEST(ContactPhysics, ContactsABudgetEndedSolveLeavesAreSolvedAtItsInstantOnce) {
   EXPECT_FALSE(zones.solvesNow(outer)) << "a pair without a row";
 }
 
+// The state before the step's forces for 8i and 8j: each particle at half its velocity, so that
+// its kick is the other half. Then none is held (each started faster than a quarter of its kick,
+// kHeldStartFraction) and none is rescued exactly at a budget's end (each moves at two kicks, far
+// below kRescueKicks): the budgets alone decide what the solves spend.
+State kickedFromHalf(const TestScene& s) {
+  State start = s.state;
+  start.v *= 0.5;
+  return start;
+}
+
 // 8i. With holding on, a zone against an obstacle halves its budget per row at each of its first
 // two counts toward the jam limit (kRepeatBudgetHalvings). Five unit disks (radius 0.05) stacked
-// exactly on the floor, all moving down at one kick (g h = 0.0981 m/s), no sleepers (so nothing is
-// ever held: only the budgets are looked at), 40 updates per row. The column's rows need about
+// exactly on the floor, all moving down at g h = 0.0981 m/s, half of it their kick
+// (kickedFromHalf: nothing is held or rescued, only the budgets are looked at), 40 updates per row. The column's rows need about
 // 1,150 updates to settle from cold (8c), so every solve below ends on its budget, spending it
 // whole: the first solve of the step has a fifth of the budget per row (kFirstSolveBudgetDivisor)
 // over its 5 rows, at least 8: 8 x 8 = 64. After each failure the contacts still closing come
@@ -244,7 +254,8 @@ TEST(ContactPhysics, AZoneAgainstAnObstacleHalvesItsBudgetAfterEachOfItsFirstTwo
     TestScene s = restingColumn(5);
     for (int k = 0; k < 5; ++k) at(s.state.v, k) = Vec2(0.0, -9.81 * 0.01);
     const double h = s.scene.dt;
-    StepZones step(s, /*updatesPerRow=*/40, hold);
+    const State start = kickedFromHalf(s);
+    StepZones step(s, /*updatesPerRow=*/40, hold, &start);
     StepMotion& motion = step.motion;
     PairCandidates& candidates = step.candidates;
     ContactZones& zones = step.zones;
@@ -279,7 +290,7 @@ TEST(ContactPhysics, AZoneAgainstAnObstacleHalvesItsBudgetAfterEachOfItsFirstTwo
 }
 
 // 8j. A zone's first solve is budgeted on its own rows, not on every row of the step. The five-disk
-// column of 8i (all moving down at one kick, no sleepers, 40 updates per row, holding on) is a
+// column of 8i (all moving down, half of it their kick, 40 updates per row, holding on) is a
 // zone whose first solve comes at T = 0.1; its rows need about 1,150 updates from cold, so it spends
 // its whole budget, 40 / 5 x max(5, 8) = 64 (8i). A column of 20 disks 10 m away, its own zone,
 // solved first at t = 0, puts 20 rows into the projector both zones share: the near column's first
@@ -294,7 +305,8 @@ TEST(ContactPhysics, AZonesFirstSolveIsBudgetedOnItsOwnRows) {
       for (int k = 0; k < 20; ++k) addBody(s, 1.0, Vec2(10.0, 0.05 + 0.1 * k), Vec2::Zero(), 0.05);
     for (int p = 0; p < s.scene.numParticles(); ++p) at(s.state.v, p) = Vec2(0.0, -9.81 * 0.01);
     const double h = s.scene.dt;
-    StepZones step(s, /*updatesPerRow=*/40, /*hold=*/true);
+    const State start = kickedFromHalf(s);
+    StepZones step(s, /*updatesPerRow=*/40, /*hold=*/true, &start);
     VecX v = s.state.v;
     std::vector<int> changed;
     auto solveColumnFrom = [&](int bottom, double T) {

@@ -105,17 +105,18 @@ TEST(FastBox, ALightDiskRattlingAgainstADiskTheWallsHoldDoesNotJam) {
   keepsItsEnergyWithoutJams(s);
 }
 
-// Random boxes: 2-4 disks of 0.03 to 30 kg at up to 100 m/s in a box of 2 m, dt 0.03 (up to 1.5
-// crossings a step), five steps each, 600 boxes (3,000 took 0.6 s here and kept their energy
-// too): the kinetic energy never falls (nor grows).
-TEST(FastBox, RandomFastDisksInABoxKeepTheirEnergy) {
-  Rng rng(2026);
+// Random boxes: `disks` (a range) of 0.03 to 30 kg and radius 0.05-0.12 at up to 100 m/s in a box
+// of 2 m, dt 0.03 (up to 1.5 crossings a step), five steps each, the scene type alternating
+// between continuous-time and hybrid. check(sim, scene, start energy, step) after each step.
+template <class Check>
+int randomBoxes(unsigned seed, int trials, int fewest, int most, const Check& check) {
+  Rng rng(seed);
   int runs = 0;
-  for (int trial = 0; trial < 600; ++trial) {
+  for (int trial = 0; trial < trials; ++trial) {
     const char* type = kEventTypes[trial % 2];
     SCOPED_TRACE(std::string(type) + " trial " + std::to_string(trial));
     TestScene s = box(type, 1.0, 0.03);
-    const int n = uniformInt(rng, 2, 4);
+    const int n = uniformInt(rng, fewest, most);
     for (int p = 0; p < n; ++p) {
       const double r = uniform(rng, 0.05, 0.12);
       const Vec2 x = uniformVec(rng, -0.8, 0.8);
@@ -130,12 +131,43 @@ TEST(FastBox, RandomFastDisksInABoxKeepTheirEnergy) {
     auto sim = defaultModeSimulator(s);
     const double start = kinetic(s);
     for (int k = 0; k < 5; ++k) {
-      ASSERT_TRUE(stepClean(*sim, s));
-      EXPECT_NEAR(kinetic(s), start, 1e-7 * start) << "step " << k + 1;
+      if (!stepClean(*sim, s)) {
+        ADD_FAILURE() << "step " << k + 1 << " failed";
+        break;
+      }
+      if (!check(*sim, s, start, k + 1)) break;
     }
     ++runs;
   }
+  return runs;
+}
+
+// 2-4 disks, 600 boxes (3,000 took 0.6 s here and kept their energy too): the kinetic energy never
+// falls (nor grows).
+TEST(FastBox, RandomFastDisksInABoxKeepTheirEnergy) {
+  const int runs = randomBoxes(2026, 600, 2, 4, [](const Simulator&, const TestScene& s, double start, int step) {
+    EXPECT_NEAR(kinetic(s), start, 1e-7 * start) << "step " << step;
+    return true;
+  });
   EXPECT_GT(runs, 500);
+}
+
+// 5-8 disks: the kinetic energy never grows, and it falls only in a step with a jam, which only a
+// rattle faster than the bounce cap makes (a disk between a wall and disks the walls hold,
+// bouncing every 2.5e-5 of a step; of 600 boxes from this seed 7 lose 37-79% of their energy).
+// Before small clusters were solved exactly up to 8 disks and 32 rows, with as many bounces, 125
+// of 600 boxes (another seed) lost energy, most of them without a jam.
+TEST(FastBox, RandomCrowdedBoxesLoseEnergyOnlyInJams) {
+  int lossy = 0;
+  const int runs = randomBoxes(2027, 200, 5, 8, [&](const Simulator& sim, const TestScene& s, double start, int step) {
+    EXPECT_LE(kinetic(s), start * (1 + 1e-7)) << "step " << step;
+    if (kinetic(s) >= start * (1 - 1e-7)) return true;
+    EXPECT_GT(sim.stats().jammedParticles, 0) << "step " << step << ": energy lost without a jam";
+    ++lossy;
+    return false;  // the rest of the run starts from less
+  });
+  EXPECT_GT(runs, 150);
+  EXPECT_LE(lossy, runs / 50);
 }
 
 }  // namespace

@@ -17,7 +17,7 @@ namespace {
 
 using namespace testing;  // random_zones.h
 
-constexpr double kSlack = 1e-9;  // the feasibility slack asked of the solver, relative (as the enumeration's)
+constexpr double kSlack = 1e-9;  // the feasibility slack asked of the solver, relative (as the projector asks)
 
 // Every random zone has a body fixed at rest, so v = 0 satisfies all its rows: the solver must
 // find the optimum, and it must be the enumeration's (v* is unique; the impulses need not be).
@@ -120,6 +120,18 @@ TEST(ActiveSetProjection, DependentAndRepeatedRowsInACorner) {
   for (size_t k = 0; k < rows.size(); ++k) total += impulses[k] * rows[k].coef[0];
   EXPECT_NEAR(total.x(), 2.0, 1e-13);
   EXPECT_NEAR(total.y(), 2.0, 1e-13);
+}
+
+// A row closing by less than the slack the caller accepts is still solved (kActiveSetJoin): a
+// disk at (1, -1e-11) m/s on a floor, slack 1e-9, ends at (1, 0) with an impulse of m 1e-11. Left
+// closing, such rows came back to the failsafe as contacts that still close.
+TEST(ActiveSetProjection, ARowClosingWithinTheSlackIsStillSolved) {
+  std::vector<Vec2> v = {Vec2(1.0, -1e-11)};
+  std::vector<double> impulses;
+  ASSERT_TRUE(projectByActiveSet({0.5}, {halfPlaneRow(0, Vec2(0, 1))}, v, kSlack, impulses));
+  EXPECT_EQ(v[0].x(), 1.0);
+  EXPECT_GE(v[0].y(), -kActiveSetJoin);
+  EXPECT_NEAR(impulses[0], 2e-11, 1e-24);
 }
 
 // A disk between two obstacles that close on it (each at 1 m/s): v >= 1 and v <= -1 along x. No

@@ -1,4 +1,5 @@
-// Helpers of the ContactProjector tests: bodies from a random zone, their velocities.
+// Helpers of the ContactProjector tests: bodies from a random zone, their velocities, a source of
+// rows that keeps them and lets no budget-ended solve be rescued.
 #pragma once
 
 #include "fosssim/math/contact_projector.h"
@@ -18,5 +19,13 @@ inline std::vector<Vec2> velocities(const ContactProjector& cp, size_t bodies) {
   for (size_t b = 0; b < bodies; ++b) v.push_back(cp.velocity(static_cast<int>(b)));
   return v;
 }
+
+/// Rows kept as they are, and no exact rescue at a budget's end (ContactProjector::solveCluster):
+/// for tests of what a budget-ended Gauss-Seidel solve leaves, whatever the cluster's size.
+class NoRescue final : public ContactProjector::RowSource {
+ public:
+  bool rowNow(int, ConstraintRow&) override { return false; }
+  bool mayRescue(const int*, int) override { return false; }
+};
 
 }  // namespace fosssim::math::testing

@@ -26,13 +26,20 @@ namespace fosssim::math {
 /// solve allocates nothing. Bodies of inverse mass 0 (obstacles a row names) count in
 /// kMaxActiveSetBodies, not in kMaxActiveSetMovable.
 constexpr int kMaxActiveSetMovable = 16;
-constexpr int kMaxActiveSetBodies = 64;
+constexpr int kMaxActiveSetBodies = 96;
 constexpr int kMaxActiveSetRows = 64;
 
 /// A row whose normal (in the mass-weighted coordinates M^1/2 v) lies within this fraction of its
 /// length of the span of the active rows' normals is taken as dependent on them: a step along
 /// what is left of it would be lost to rounding (nearly parallel walls of a wedge).
 constexpr double kActiveSetDependence = 1e-10;
+
+/// Rows violated by more than this (relative as the caller's slack, relTol below) join the
+/// active set, whatever the slack the caller accepts: a row left closing by up to the slack
+/// comes back to the failsafe as a contact that still closes (a pile of masses 10^6 apart ended
+/// a step overlapping a wall so, at a slack of 1e-9), and the active set's rows end tight to
+/// rounding. A row that cannot join (dependent on tight rows) and is within the slack is left.
+constexpr double kActiveSetJoin = 1e-13;
 
 /// Writes v* into v and each row's multiplier into `impulses` (v* = v~ + M^-1 G^T impulses) and
 /// returns true when it finds v* with every row satisfied to G_k v* >= -relTol |G_k| V (V: the

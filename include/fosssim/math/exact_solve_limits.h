@@ -30,18 +30,23 @@ struct ExactSolveLimits {
   /// move no other body are projected exactly together, as solveAlone does for one
   /// (solveCluster, contact_projector_cluster.cpp): bodies of very different masses squeezed
   /// together stall Gauss-Seidel. Tried as rarely, and once when a solve is about to end on its
-  /// budget (its rescue). Four bodies: two light disks wedged in a corner by two heavy ones.
-  /// Sixteen rows: four disks in a box have up to six pairs and two walls each; a 13-row cluster
-  /// of four disks outgrew the enumeration's 12 (2^12 systems, which that solver could afford)
-  /// and jammed. With the active-set solve, 16 rows, and up to 8 bodies and 24 rows alike, left
-  /// rain, chains and the piles at 1,000 and 2,500 within 1% of their Gauss-Seidel updates.
-  static constexpr int kClusterBodies = 4;
-  static constexpr int kClusterRows = 16;
-  /// The exact solve's feasibility slack there, relative as kAloneSlack is: set for the
-  /// enumeration it replaced, where nearly parallel rows of several bodies left no active set
-  /// feasible to 1e-12 after their systems' rounding (one random cluster in eight). The active
-  /// set's own rows end tight to rounding (it refines them); the slack decides which others it
-  /// takes as satisfied, and Gauss-Seidel settles those to the solve's tolerance.
+  /// budget (its rescue). Measured on random fast boxes at COR 1 (2 m, dt 0.03, disks at up to
+  /// 100 m/s, tests/core/fast_box_test.cpp): with 4 bodies and 12 rows (all that the
+  /// enumeration of 2^rows active sets, which the active-set solve replaced, could afford), 6 of
+  /// 3,000 boxes of 2-4 disks lost energy, one in a cluster of 13 rows; of 600 boxes of 5-8
+  /// disks, with 4 bodies and 16 rows, 125 did, most in zones of 5-8 disks whose solves ended on
+  /// their budgets and then shortened their bounces. With 8 bodies and 24 rows, 18 of the 600;
+  /// with 32 rows (8 disks in a box have up to 28 pairs and some walls) and small zones' bounces
+  /// (kSmallZoneMembers), 4, all in jams of rattles. Piles' clusters are larger and their
+  /// gathering stops at the limit: rain, chains and the piles at 1,000 and 2,500 made
+  /// Gauss-Seidel updates within 7% of 4 bodies' (rain 1,000 7% fewer, pile-high-cor0 1,000 7%
+  /// more), in times within this machine's noise.
+  static constexpr int kClusterBodies = 8;
+  static constexpr int kClusterRows = 32;
+  /// The exact solve's feasibility slack there, relative as kAloneSlack is: what it accepts, not
+  /// what it aims at (every row closing by more than math::kActiveSetJoin joins its active set).
+  /// At 1e-12, random clusters of 8 bodies, 32 rows and masses 10^4 apart left rows violated by
+  /// rounding beyond it, and their solves fell back on Gauss-Seidel, which ran out of budget.
   static constexpr double kClusterSlack = 1e-9;
   /// Only clusters whose heaviest body is at least this many times its lightest, except in the
   /// rescue: where masses are alike, Gauss-Seidel stalls only in tight geometry; solved exactly

@@ -231,6 +231,8 @@ void ContactZones::settleJam(int p) {
 
 // A small zone's rattles (kSmallZoneMembers), then Galperin's count (kBouncesPerGalperinCount): a
 // zone of alike masses keeps kMaxZoneBounces.
+static_assert(kSmallZoneMembers <= math::ContactProjector::kClusterBodies,
+              "a small zone's bounces are cheap only where its cluster is solved exactly");
 int ContactZones::bounceLimit(const ZoneRecord& z) {
   if (z.size >= 2 && z.size <= kSmallZoneMembers) return kMaxZoneBouncesCap;
   if (!(z.lightest > 0.0) || !(z.heaviest > z.lightest)) return kMaxZoneBounces;

@@ -29,15 +29,16 @@ constexpr int kMaxZoneBounces = 64;
 /// 82% of their energy. Piles of alike masses keep 64.
 constexpr double kBouncesPerGalperinCount = 4.0;
 constexpr int kMaxZoneBouncesCap = 4096;
-/// A zone of 2 to this many members may take kMaxZoneBouncesCap bounces whatever its masses. A
-/// disk rattling at COR 1 between a wall and a disk the walls hold bounced every 0.0027 to
-/// 0.00023 of a step, up to some 1,500 times, and at 64 bounces the jam took 37-72% of a fast
-/// box's energy (3 of 3,000 random boxes). A zone of one particle keeps its limit: its rattle's
-/// outcome is given back whole at the jam (rattlerOf). A bounce of a small zone costs an event
-/// and a small solve, so the cap bounds such a zone's cost in a step; piles' zones are far larger
-/// (rain, chains, gas, bullets and the piles at 1,000 and 2,500 made the same Gauss-Seidel
-/// updates with it).
-constexpr int kSmallZoneMembers = 4;
+/// A zone of 2 to this many members (those whose cluster math::ContactProjector solves exactly,
+/// kClusterBodies) may take kMaxZoneBouncesCap bounces whatever its masses. A disk rattling at
+/// COR 1 between a wall and a disk the walls hold bounced every 0.0027 to 0.00023 of a step, up to
+/// some 1,500 times, and at 64 bounces the jam took 37-72% of a fast box's energy (3 of 3,000
+/// random boxes of 2-4 disks; in boxes of 5-8 disks most of the jams left once their clusters
+/// were solved exactly). A zone of one particle keeps its limit: its rattle's outcome is given
+/// back whole at the jam (rattlerOf). A bounce of a small zone costs an event and a small solve,
+/// so the cap bounds such a zone's cost in a step; piles' zones are far larger. A rattle faster
+/// still (every 2.5e-5 of a step: 40,000 bounces) passes the cap and jams.
+constexpr int kSmallZoneMembers = 8;
 
 /// A jammed contact's particles stop at rest, as obstacles, instead of being welded, when their
 /// common velocity moves across their kick (the velocity change this step's forces gave them) by
