@@ -64,9 +64,21 @@ struct Basis {
   int count = 0;
 };
 
+// Takes from col its part in the span of q's first `columns` columns, twice (classical
+// Gram-Schmidt, reorthogonalised), and returns that part's coefficients.
+ActiveVector orthogonalise(const Basis& basis, int columns, DimVector& col) {
+  ActiveVector coefficients = ActiveVector::Zero(columns);
+  for (int pass = 0; pass < 2; ++pass) {
+    const ActiveVector proj = basis.q.leftCols(columns).transpose() * col;
+    col -= basis.q.leftCols(columns) * proj;
+    coefficients += proj;
+  }
+  return coefficients;
+}
+
 // Q R = N for the active normals a.row(active[0..count)), each column orthogonalised against the
-// earlier ones twice. False when a column is (nearly) dependent on the earlier ones, which the
-// method never lets join: rounding may still bring it there, and the solve then gives up.
+// earlier ones. False when a column is (nearly) dependent on the earlier ones, which the method
+// never lets join: rounding may still bring it there, and the solve then gives up.
 bool factor(const RowsByDims& a, const int* active, int count, int dims, Basis& basis) {
   basis.q.resize(dims, count);
   basis.r.setZero(count, count);
@@ -74,11 +86,7 @@ bool factor(const RowsByDims& a, const int* active, int count, int dims, Basis& 
   for (int c = 0; c < count; ++c) {
     DimVector col = a.row(active[c]).transpose();
     const double length = col.norm();
-    for (int pass = 0; pass < 2; ++pass) {
-      const ActiveVector proj = basis.q.leftCols(c).transpose() * col;
-      col -= basis.q.leftCols(c) * proj;
-      basis.r.col(c).head(c) += proj;
-    }
+    basis.r.col(c).head(c) = orthogonalise(basis, c, col);
     const double left = col.norm();
     if (!(left > kActiveSetDependence * length)) return false;
     basis.r(c, c) = left;
@@ -145,11 +153,8 @@ bool projectByActiveSet(const std::vector<double>& inverseMass, const std::vecto
     const DimVector ap = a.row(p).transpose();
     while (true) {  // until p joins (or the problem is found infeasible)
       if (++steps > maxSteps || !factor(a, active, count, dims, basis)) return false;
-      ActiveVector proj = basis.q.leftCols(count).transpose() * ap;
-      DimVector z = ap - basis.q.leftCols(count) * proj;
-      const ActiveVector proj2 = basis.q.leftCols(count).transpose() * z;  // twice, as in factor
-      z -= basis.q.leftCols(count) * proj2;
-      proj += proj2;
+      DimVector z = ap;
+      const ActiveVector proj = orthogonalise(basis, count, z);
       const ActiveVector r = basis.r.topLeftCorner(count, count).triangularView<Eigen::Upper>().solve(proj);
       double t1 = std::numeric_limits<double>::infinity();
       int leaving = -1;
@@ -195,11 +200,7 @@ bool projectByActiveSet(const std::vector<double>& inverseMass, const std::vecto
       for (int j = 0; j < rows[k].count && u[k] != 0.0; ++j)
         out[rows[k].body[j]] += (inverseMass[rows[k].body[j]] * u[k]) * rows[k].coef[j];
   };
-  const auto rowVelocity = [&](int k) {
-    double w = 0.0;
-    for (int j = 0; j < rows[k].count; ++j) w += rows[k].coef[j].dot(out[rows[k].body[j]]);
-    return w;
-  };
+  const auto rowVelocity = [&](int k) { return measure::rowVelocity(rows[k], out); };
   velocities();
   if (count > 0 && factor(a, active, count, dims, basis)) {
     for (int pass = 0; pass < kRefinements; ++pass) {

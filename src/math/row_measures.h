@@ -12,12 +12,13 @@
 
 namespace fosssim::math::measure {
 
-/// G_k v: the row's velocity (>= 0 when the contact does not close).
-inline double rowVelocity(const ConstraintRow& row, const std::vector<Vec2>& v) {
+/// G_k v: the row's velocity (>= 0 when the contact does not close); v indexed by body.
+inline double rowVelocity(const ConstraintRow& row, const Vec2* v) {
   double w = 0.0;
   for (int j = 0; j < row.count; ++j) w += row.coef[j].dot(v[row.body[j]]);
   return w;
 }
+inline double rowVelocity(const ConstraintRow& row, const std::vector<Vec2>& v) { return rowVelocity(row, v.data()); }
 
 /// |G_k| = sqrt(sum of |coef|^2) over the row's entries.
 inline double rowNorm(const ConstraintRow& row) {
