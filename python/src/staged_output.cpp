@@ -3,6 +3,7 @@
 #include "errors.h"
 
 #include <stdexcept>
+#include <unistd.h>
 #include <sys/stat.h>
 
 namespace fosssim::py {
@@ -40,6 +41,14 @@ StagedOutput::StagedOutput(const std::string& finalPath, const char* what, const
   if (const std::string writePath = io::stagedPaths(finalPath, renameTo); writePath != renameTo)
     checkNotInput(writePath, input, what, "its partial file " + quote(writePath) + " ");
   if (const Status s = io::StagedFile::prepare(finalPath, what, file_); !s) throw FileError(s.message());
+  // Last: nothing may throw after a pipe's probe is open (a throwing constructor runs no destructor).
+  if (const char* kind = io::unwritableOutput(finalPath, pipeProbe_))
+    throw FileError(std::string(what) + ": " + quote(finalPath) + ": cannot write there (it is " + kind +
+                    ", not a file): choose a file name");
+}
+
+StagedOutput::~StagedOutput() {
+  if (pipeProbe_ >= 0) close(pipeProbe_);
 }
 
 std::string StagedOutput::whereData(const char* data) const {

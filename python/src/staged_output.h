@@ -5,6 +5,8 @@
 // was (an older file of that name is not cut or removed) and the exception says where the data so
 // far is. Devices and named pipes are written directly: there is nothing to rename, and a device
 // node must never be replaced or removed (libpng's simplified writer removes its file on error).
+// What the command line refuses to write is refused here too (io::unwritableOutput): a named
+// pipe that nothing reads (the write would block for ever), a socket, a block device.
 #pragma once
 
 #include "errors.h"
@@ -26,6 +28,10 @@ class StagedOutput {
   /// name or link) and removes a stale partial file (the partial name is FOSSSim's own). `what`
   /// names the function in messages. Throws ValueError or FileError; nothing is written then.
   StagedOutput(const std::string& finalPath, const char* what, const std::string& input = "");
+  /// Closes the named pipe's probe (io::unwritableOutput), the writer being done with the pipe.
+  ~StagedOutput();
+  StagedOutput(const StagedOutput&) = delete;
+  StagedOutput& operator=(const StagedOutput&) = delete;
 
   /// Where to write now: the partial name, or the final one for a device or a named pipe.
   const std::string& writePath() const { return file_.writePath(); }
@@ -68,6 +74,7 @@ class StagedOutput {
 
  private:
   io::StagedFile file_;
+  int pipeProbe_ = -1;  ///< a named pipe's probe, open until the writing is done (io::unwritableOutput)
 };
 
 }  // namespace fosssim::py

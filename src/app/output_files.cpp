@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <cstring>
 #include <dirent.h>
-#include <fcntl.h>
 #include <filesystem>
 #include <sys/stat.h>
 #include <vector>
@@ -32,32 +31,18 @@ std::vector<Input> inputsOf(const Options& options) {
   return inputs;
 }
 
-/// Whether some process reads the pipe `path`: opening it for writing without blocking fails
-/// (ENXIO) when none does. The descriptor is kept open for the rest of the process: closed, it
-/// would be the pipe's last writer, and a reader such as `cat` would take that for the end of its
-/// input and leave before the run opens the pipe again, which then blocks for ever.
-bool pipeHasReader(const std::string& path) {
-  static std::vector<int> kept;  // the probes, closed when the process ends
-  const int fd = open(path.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);
-  if (fd < 0) return false;
-  kept.push_back(fd);
-  return true;
-}
-
-/// Follows symbolic links: a link to an input is that input. A named pipe that nothing reads is
-/// refused: opening it for writing blocks until a reader opens it, which may never happen (a run
-/// hung in open() before its first step, deaf to SIGTERM); one that a process reads (-o
-/// /dev/stdout piped into gzip, -o >(gzip > t.gz)) is written. A socket cannot be opened at
-/// all, and a block device is a disk, never a wanted output. Character devices (/dev/null) are
-/// written.
+/// Follows symbolic links: a link to an input is that input. What io::unwritableOutput refuses
+/// is refused (a named pipe that nothing reads, a socket, a block device); a pipe that a process
+/// reads (-o /dev/stdout piped into gzip, -o >(gzip > t.gz)) and character devices (/dev/null)
+/// are written.
 Status checkOne(const std::string& option, const std::string& output, const std::string& role,
                 const std::vector<Input>& inputs) {
   struct stat st {};
   if (stat(output.c_str(), &st) != 0) return Status::ok();  // does not exist (yet): not an input
-  const char* kind = S_ISFIFO(st.st_mode) ? (pipeHasReader(output) ? nullptr : "a named pipe that nothing reads")
-                     : S_ISSOCK(st.st_mode) ? "a socket"
-                     : S_ISBLK(st.st_mode)  ? "a block device"
-                                            : nullptr;
+  static std::vector<int> probes;  // the pipes' probes, kept open until the process ends (see there)
+  int probe = -1;
+  const char* kind = io::unwritableOutput(output, probe);
+  if (probe >= 0) probes.push_back(probe);
   if (kind)
     return Status::error(option + " \"" + output + "\": cannot write " + (role.empty() ? "the output " : role) +
                          "(it is " + kind + ", not a file): choose a file name");

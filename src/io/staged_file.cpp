@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <sys/stat.h>
 
@@ -29,6 +30,19 @@ std::string stagedPaths(const std::string& finalPath, std::string& renameTo) {
     if (!ec) renameTo = target.string();
   }
   return partialName(renameTo);
+}
+
+const char* unwritableOutput(const std::string& path, int& probe) {
+  probe = -1;
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0) return nullptr;  // made by the writer
+  if (S_ISFIFO(st.st_mode)) {
+    // Without blocking, opening for writing fails (ENXIO) when no process has the pipe open for
+    // reading.
+    probe = open(path.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);
+    return probe >= 0 ? nullptr : "a named pipe that nothing reads";
+  }
+  return S_ISSOCK(st.st_mode) ? "a socket" : S_ISBLK(st.st_mode) ? "a block device" : nullptr;
 }
 
 Status StagedFile::prepare(const std::string& finalPath, const std::string& what, StagedFile& out) {

@@ -21,6 +21,17 @@ std::string partialName(const std::string& path);
 /// itself for a device or a named pipe (nothing to rename).
 std::string stagedPaths(const std::string& finalPath, std::string& renameTo);
 
+/// Why no output can be written at `path`, or nullptr when one can (nothing there yet, a regular
+/// file, a character device such as /dev/null, or a named pipe that a process reads). A named
+/// pipe that nothing reads is refused: opening it for writing blocks until a reader comes, which
+/// may never happen (a run hung in open(), deaf to SIGTERM). A socket cannot be opened at all,
+/// and a block device is a disk, never a wanted output. For a pipe that a process reads, `probe`
+/// receives a descriptor open for writing on it, -1 otherwise. The caller closes it only after its
+/// own writer has opened the pipe: closed before, it would be the pipe's last writer, a reader
+/// such as `cat` would take that for the end of its input and leave, and the writer's open would
+/// then block for ever.
+const char* unwritableOutput(const std::string& path, int& probe);
+
 /// One output written under its partial name and renamed at the end.
 class StagedFile {
  public:
