@@ -6,7 +6,7 @@ import pandas as pd
 import pytest
 
 import fosssim
-from fosssim import sweeps
+from fosssim import sweep_cli, sweeps
 
 SCENE = "t2m2/ContinuousTimeTests/head_on_swap.xml"
 
@@ -83,34 +83,34 @@ def test_local_cluster_gives_the_serial_table(assets):
 
 def test_command_line(assets, tmp_path):
     csv, png = tmp_path / "s.csv", tmp_path / "s.png"
-    code = sweeps.main([str(assets / SCENE), "--methods", "simple,continuous-time", "--dt", "0.01,0.02", "--serial",
+    code = sweep_cli.main([str(assets / SCENE), "--methods", "simple,continuous-time", "--dt", "0.01,0.02", "--serial",
                         "--csv", str(csv), "--chart", str(png)])
     assert code == 0
     table = pd.read_csv(csv, keep_default_na=False)
     assert len(table) == 4
     assert png.read_bytes()[:4] == b"\x89PNG"
     with pytest.raises(SystemExit):
-        sweeps.main([str(assets / SCENE), "--methods", "bogus"])
+        sweep_cli.main([str(assets / SCENE), "--methods", "bogus"])
 
 
 def test_command_line_fails_when_no_run_was_measured(assets, tmp_path, capsys):
     csv = tmp_path / "s.csv"
     # Every run fails (cor out of range): the table is written, the exit status says so.
-    code = sweeps.main([str(assets / SCENE), "--methods", "simple,hybrid", "--param", "cor=2", "--serial",
+    code = sweep_cli.main([str(assets / SCENE), "--methods", "simple,hybrid", "--param", "cor=2", "--serial",
                         "--csv", str(csv)])
     assert code == 1
     assert "no run was measured (2 failed)" in capsys.readouterr().err
     assert (pd.read_csv(csv, keep_default_na=False)["error"] != "").all()
     # One run measured of two: success, the failed one printed.
-    code = sweeps.main([str(assets / SCENE), "--methods", "hybrid", "--param", "cor=2,1", "--serial",
+    code = sweep_cli.main([str(assets / SCENE), "--methods", "hybrid", "--param", "cor=2,1", "--serial",
                         "--csv", str(csv)])
     assert code == 0
     assert "cor must lie in [0, 1]" in capsys.readouterr().err
     # An unknown parameter, or a worker count that is not positive, is refused before any run.
     with pytest.raises(SystemExit, match="--param foo: unknown parameter"):
-        sweeps.main([str(assets / SCENE), "--param", "foo=1", "--serial", "--csv", str(csv)])
+        sweep_cli.main([str(assets / SCENE), "--param", "foo=1", "--serial", "--csv", str(csv)])
     with pytest.raises(SystemExit) as info:
-        sweeps.main([str(assets / SCENE), "--workers", "0", "--csv", str(csv)])
+        sweep_cli.main([str(assets / SCENE), "--workers", "0", "--csv", str(csv)])
     assert info.value.code == 2
 
 
@@ -148,15 +148,15 @@ def test_command_line_refuses_no_methods_and_non_integers_without_a_traceback(as
     csv = tmp_path / "s.csv"
     # "--methods ," ended in a KeyError traceback (dropping 'error' of an empty table).
     with pytest.raises(SystemExit) as info:
-        sweeps.main([str(assets / SCENE), "--methods", ",", "--dt", "0.01", "--serial", "--csv", str(csv)])
+        sweep_cli.main([str(assets / SCENE), "--methods", ",", "--dt", "0.01", "--serial", "--csv", str(csv)])
     assert info.value.code == 2
     assert "--methods: no method given in ','" in capsys.readouterr().err
     # "1e3" was "not a number".
     with pytest.raises(SystemExit, match=r"--param maxiters: expected an integer, got '1e3'"):
-        sweeps.main([str(assets / SCENE), "--param", "maxiters=1e3", "--serial", "--csv", str(csv)])
+        sweep_cli.main([str(assets / SCENE), "--param", "maxiters=1e3", "--serial", "--csv", str(csv)])
     assert not csv.exists()
     # Beyond C's int: each run's error (it was a TypeError traceback), and no run measured.
-    code = sweeps.main([str(assets / SCENE), "--methods", "hybrid", "--dt", "0.01", "--param", "maxiters=99999999999",
+    code = sweep_cli.main([str(assets / SCENE), "--methods", "hybrid", "--dt", "0.01", "--param", "maxiters=99999999999",
                         "--serial", "--csv", str(csv)])
     assert code == 1
     err = capsys.readouterr().err

@@ -3,7 +3,7 @@ the runs (exit 2), and a table or chart that fails to be written is reported (ex
 file of that name left as it was."""
 import pytest
 
-from fosssim import sweeps
+from fosssim import sweep_cli, sweeps
 
 SCENE = "t2m2/ContinuousTimeTests/head_on_swap.xml"
 
@@ -23,7 +23,7 @@ def test_unwritable_outputs_are_refused_before_any_run(assets, tmp_path, capsys,
     for path, why in ((tmp_path / "missing" / "x.out", "does not exist"), (folder, "is a directory"),
                       (str(tmp_path / "a") + "\0b", "embedded null byte")):
         with pytest.raises(SystemExit) as info:
-            sweeps.main([str(assets / SCENE), "--serial", option, str(path)])
+            sweep_cli.main([str(assets / SCENE), "--serial", option, str(path)])
         assert info.value.code == 2
         err = capsys.readouterr().err
         assert option in err and why in err and "Traceback" not in err
@@ -38,7 +38,7 @@ def test_a_failed_chart_is_reported_and_the_older_chart_kept(assets, tmp_path, c
         path.write(b"\x89PNG half a chart")
         raise OSError(28, "No space left on device")
     monkeypatch.setattr(sweeps, "chart", chart)
-    code = sweeps.main([str(assets / SCENE), "--methods", "simple", "--serial", "--csv", str(csv), "--chart", str(png)])
+    code = sweep_cli.main([str(assets / SCENE), "--methods", "simple", "--serial", "--csv", str(csv), "--chart", str(png)])
     assert code == 1
     assert "--chart" in capsys.readouterr().err
     assert png.read_bytes() == b"older chart"
