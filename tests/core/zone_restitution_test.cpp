@@ -15,12 +15,17 @@
 //     out at the speed it went in;
 //   * a ball rattling between two walls a hair wider than it, too fast for the step's bounces:
 //     each bounce reverses its speed across the walls times the COR and keeps its speed along
-//     them, so at COR 1 it keeps both speeds, and below 1 it never gains.
+//     them, so at COR 1 it keeps both speeds, and below 1 it never gains;
+//   * a fat capsule pinned at one end, overlapping fixed disks on both sides, bounces between
+//     them at one instant: a rattle that does not move on in time is a jam (kMaxStalledBounces).
 // Before, the zones were inelastic whatever the COR: every one of these stopped its contact.
 #include "contact_physics.h"
 
 #include "fosssim/core/forces.h"
 
+#include "core/collision/zone_tuning.h"
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -191,6 +196,40 @@ TEST(ZoneRestitution, ABallRattlingBetweenCloseWallsKeepsItsSpeed) {
         else EXPECT_NEAR(got, exact, 0.05 * exact);
         EXPECT_NEAR(s.state.x[0], along * steps * h, 1e-9);
       }
+}
+
+// A fuzzer's scene, rewritten: a capsule of radius 4.1 from a fixed particle to a free one, with
+// fixed disks inside it on both sides and free disks around, under gravity at COR 1 (hybrid, with
+// its default penalty layer). Its zone bounced from one side to the other at the step's first
+// instant until a small zone's kMaxZoneBouncesCap: up to 1,370 solve rounds a step here, 26 now
+// (the fuzzer's scene: 600 a step, 219 s for one input under the sanitizers). Those bounces do not
+// move the rattle on in time, so past kMaxStalledBounces they count as the jam's comebacks, and
+// the jam ends them: a step's rounds are then bounded by those bounces, the jam's limit and its
+// comebacks, not by the cap.
+TEST(ZoneRestitution, BouncesAtOneInstantEndInAJamNotAtTheCap) {
+  TestScene s = contactScene("hybrid", 1.0, 0.01);
+  s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, -20)));
+  s.scene.forces.push_back(std::make_unique<PenaltyForce>(10.0, 0.1));  // hybrid's defaults
+  for (const Vec2& x : {Vec2(4, 4), Vec2(2, 5)}) addBody(s, 1.0, x, Vec2::Zero(), 0.1, /*fixed=*/true);
+  addBody(s, 1.0, Vec2(2, -1), Vec2::Zero(), 0.5);
+  addBody(s, 1.0, Vec2(1, 4), Vec2::Zero(), 0.1, /*fixed=*/true);
+  addBody(s, 1.0, Vec2(-4, 4), Vec2::Zero(), 0.5);
+  addBody(s, 1.0, Vec2(3, -1), Vec2::Zero(), 0.1);
+  addBody(s, 1.0, Vec2(4, 4), Vec2::Zero(), 0.1, /*fixed=*/true);
+  addBody(s, 1.0, Vec2(4, -1), Vec2::Zero(), 0.5);
+  addBody(s, 1.0, Vec2(1, 4), Vec2::Zero(), 0.1, /*fixed=*/true);
+  addBody(s, 1.0, Vec2(-4, 4), Vec2::Zero(), 0.5);
+  s.scene.edges.push_back(Edge{1, 2, 4.1});
+  s.scene.edges.push_back(Edge{3, 4, 0.1});
+  auto sim = defaultModeSimulator(s);
+  int most = 0;
+  for (int k = 0; k < 100; ++k) {
+    ASSERT_TRUE(sim->step(s.scene, s.state).isOk()) << "step " << k + 1;
+    most = std::max(most, sim->stats().failsafeRounds);
+  }
+  std::printf("[ stalled  ] at most %d solve rounds a step\n", most);
+  EXPECT_GT(most, 0) << "the scene no longer reaches the zones";
+  EXPECT_LE(most, 2 * (kMaxStalledBounces + kMaxZoneProjections)) << "bounces at one instant ran on to the cap";
 }
 
 }  // namespace

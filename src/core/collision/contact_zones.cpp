@@ -89,6 +89,8 @@ int ContactZones::unite(int a, int b) {
   za.lightest = std::min(za.lightest, zb.lightest);
   za.heaviest = std::max(za.heaviest, zb.heaviest);
   if (zb.firstBounce >= 0.0 && (za.firstBounce < 0.0 || zb.firstBounce < za.firstBounce)) za.firstBounce = zb.firstBounce;
+  za.lastBounce = std::max(za.lastBounce, zb.lastBounce);
+  za.stalledBounces = std::max(za.stalledBounces, zb.stalledBounces);
   za.bounced = za.bounced && zb.bounced;
   za.solves = std::max(za.solves, zb.solves);
   za.rigid = za.rigid || zb.rigid;
@@ -142,8 +144,14 @@ int ContactZones::absorb(const Scene& scene, const StepMotion& motion, const Pai
   bool welded = false;   // whether that jam welded bodies that were apart
   if (solved && !requeried_[*known]) {
     ZoneRecord& z = record_[root(zone)];
-    if (z.bounced && z.bounces < bounceLimit(z)) {
+    // A bounce back at the instant of the one before has not moved the rattle on (a capsule
+    // pinned between fixed disks, bouncing from one to the other at one instant, took 600 solves a
+    // step): past kMaxStalledBounces of those, it counts as a jam's comeback.
+    const bool stalled = z.bounces > 0 && T <= z.lastBounce;
+    if (z.bounced && z.bounces < bounceLimit(z) && !(stalled && z.stalledBounces >= kMaxStalledBounces)) {
       if (z.bounces++ == 0) z.firstBounce = T;
+      z.lastBounce = T;
+      z.stalledBounces += stalled;
     } else {
       ++z.metAgain;
     }

@@ -243,6 +243,8 @@ class ContactZones {
     int bounces = 0;   ///< contacts back after a solve that bounced (not jams: bounceLimit)
     double lightest = 0, heaviest = 0;  ///< its movable members' extreme masses (bounceLimit)
     double firstBounce = -1.0;  ///< the instant (fraction of the step) of the first of those; -1: none
+    double lastBounce = -1.0;   ///< ... and of the last; -1: none
+    int stalledBounces = 0;     ///< those back at the instant of the bounce before (kMaxStalledBounces)
     int solves = 0;    ///< solves in this step
     int rowCount = 0;  ///< the projector rows set for its contacts in this step
     int size = 0;      ///< members
