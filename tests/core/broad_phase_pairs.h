@@ -1,4 +1,5 @@
-// Shared by the broad phase's tests (broad_phase_test.cpp, broad_phase_grazing_test.cpp): a scene
+// Shared by the broad phase's tests (broad_phase_test.cpp, broad_phase_lists_test.cpp,
+// broad_phase_grazing_test.cpp): a random scene built to be hard for it, a scene
 // with its step's start and end positions, the candidate pairs a PairCandidates lists, and the
 // ground truth of every pair checked by the reference's sweep.
 #pragma once
@@ -9,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <random>
 #include <set>
 #include <vector>
 
@@ -44,6 +46,65 @@ inline std::vector<Collision> allPairs(const Scene& scene, const VecX& qs, const
   std::vector<Collision> out;
   ContinuousDetector(rules).forEachCollision(scene, qs, qe, nullptr, [&](const Collision& c) { out.push_back(c); });
   return out;
+}
+
+/// A random scene and step designed to stress the broad phase's margins.
+inline Motion randomMotion(std::mt19937& rng, int n, double offset) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  auto u = [&](double lo, double hi) { return lo + (hi - lo) * unit(rng); };
+  // x drawn before y, in separate statements: a call's arguments are evaluated in an order the
+  // compiler picks (gcc right to left, clang left to right), and both must build the same scenes.
+  auto uv = [&](double lo, double hi) {
+    const double x = u(lo, hi);
+    const double y = u(lo, hi);
+    return Vec2(x, y);
+  };
+  Motion m;
+  m.qs.resize(2 * n);
+  m.qe.resize(2 * n);
+  const double size = u(0.5, 4.0);
+  for (int p = 0; p < n; ++p) {
+    const int style = static_cast<int>(u(0, 6));
+    double r = std::pow(10.0, u(-4, 0));
+    if (style == 0) r = std::pow(10.0, u(0, 1.5));  // huge
+    Vec2 x = uv(-size, size);
+    if (p > 0 && style <= 3) {  // near another particle: just inside or outside reach
+      const int q = static_cast<int>(u(0, p));
+      const double reach = r + m.scene.radius[q];
+      const double angle = u(0, 6.283185307179586);
+      const double gap = style == 1 ? u(-1e-6, 1e-6) * reach : (style == 2 ? u(0.9, 1.1) * reach : u(1.0, 1.0 + 1e-9) * reach);
+      x = at(m.qs, q) + gap * Vec2(std::cos(angle), std::sin(angle));
+      if (style == 3) x = at(m.qs, q) + (reach + std::pow(10.0, u(-9, -3))) * Vec2(std::cos(angle), std::sin(angle));
+    }
+    Vec2 d = uv(-1, 1);
+    const int speed = static_cast<int>(u(0, 4));
+    d *= speed == 0 ? 1e-8 : (speed == 1 ? 0.01 * size : (speed == 2 ? size : 0.0));  // static, slow, fast, still
+    const double mass = std::pow(10.0, u(-2, 2));
+    const bool fixed = u(0, 1) < 0.1;
+    addParticle(m.scene, mass, fixed, r);
+    at(m.qs, p) = x + Vec2(offset, -offset);
+    at(m.qe, p) = at(m.qs, p) + d;
+  }
+  const int edges = static_cast<int>(u(0, n / 2));
+  for (int k = 0; k < edges; ++k) {
+    const int i = static_cast<int>(u(0, n));
+    int j = static_cast<int>(u(0, n));
+    if (j == i) j = (i + 1) % n;
+    if (u(0, 1) < 0.2) {  // a tiny or collapsing edge
+      at(m.qs, j) = at(m.qs, i) + uv(-1e-7, 1e-7);
+      at(m.qe, j) = at(m.qe, i) + (u(0, 1) < 0.5 ? uv(-1e-7, 1e-7) : uv(-1, 1));
+    }
+    m.scene.edges.push_back(Edge{i, j, std::pow(10.0, u(-4, -1))});
+  }
+  const int planes = static_cast<int>(u(0, 4));
+  for (int k = 0; k < planes; ++k) {
+    const double length = std::pow(10.0, u(-4, 3));
+    const Vec2 normal = length * uv(-1, 1).normalized();
+    const int on = static_cast<int>(u(0, n));
+    const Vec2 shift = uv(-0.1, 0.1);
+    m.scene.halfplanes.push_back(HalfPlane{at(m.qs, on) + shift, normal});
+  }
+  return m;
 }
 
 }  // namespace fosssim::testing
