@@ -3,6 +3,7 @@
 #include "fosssim/render/glut_window.h"
 
 #include "gl_painter.h"
+#include "step_pacer.h"
 #include "x_display.h"
 
 #include "fosssim/render/camera.h"
@@ -19,7 +20,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -42,14 +42,13 @@ class Window {
  public:
   Window(const WindowSettings& settings, const SceneFile& file, const State& state, const std::function<Status()>& step)
       : settings_(settings), file_(file), state_(state), step_(step), painter_(gl_),
-        trails_(file.look.paths, file.scene.dt) {
+        trails_(file.look.paths, file.scene.dt), pacer_(settings.stepsPerSecond, Clock::now()) {
     view_.width = settings.width;
     view_.height = settings.height;
     camera_.start(file, state, view_.width, view_.height);
     view_.camera = camera_.camera();
     trails_.record(state);
     paused_ = settings.startPaused;
-    anchor_ = rateTime_ = Clock::now();
   }
 
   Status loadGl() {
@@ -91,8 +90,7 @@ class Window {
     switch (k) {
       case ' ':
         paused_ = !paused_;
-        anchor_ = Clock::now();
-        anchorSteps_ = 0;
+        pacer_.restart(Clock::now());
         break;
       case 's':
       case 'S':
@@ -194,23 +192,13 @@ class Window {
       updateRate();
       return;
     }
-    // Keep to <maxsimfreq> steps per wall second, but never fall into catching up forever
-    // with a scene whose steps are slower than that.
-    const double due = seconds(now - anchor_) * settings_.stepsPerSecond - static_cast<double>(anchorSteps_);
-    if (due > settings_.stepsPerSecond * 0.25) {
-      anchor_ = now;
-      anchorSteps_ = 0;
-    }
-    // Compared in double: at <maxsimfreq max="1e30"/> `due` is beyond any long, and converting it
-    // is undefined (it came out negative, and the window never stepped). The steps left bound it.
-    const double left = static_cast<double>(settings_.totalSteps - stepsTaken_);
-    const long n = due >= left ? settings_.totalSteps - stepsTaken_ : due > 0 ? static_cast<long>(due) : 0L;
+    const long n = pacer_.due(now, settings_.totalSteps - stepsTaken_);
     const auto begin = Clock::now();
     long done = 0;
     while (done < n && !finished() && seconds(Clock::now() - begin) < kMaxStepTimePerTick)
       if (advance(1)) ++done;
       else break;
-    anchorSteps_ += done;
+    pacer_.took(done);
     updateRate();
   }
 
@@ -260,8 +248,7 @@ class Window {
     status_ = settings_.restart();
     if (!status_) failedAt_ = Clock::now();
     stepsTaken_ = 0;
-    anchor_ = Clock::now();
-    anchorSteps_ = 0;
+    pacer_.restart(Clock::now());
     trails_.clear();
     trails_.record(state_);
     camera_.refit(file_, state_, view_.width, view_.height);
@@ -317,23 +304,14 @@ class Window {
   }
 
   void updateRate() {
-    const auto now = Clock::now();
-    const double dt = seconds(now - rateTime_);
-    if (dt < 0.5) return;
-    const double rate = static_cast<double>(stepsTaken_ - rateSteps_) / dt;
-    rateTime_ = now;
-    rateSteps_ = stepsTaken_;
-    if (std::abs(rate - rate_) > 0.5) {
-      rate_ = rate;
-      glutPostRedisplay();
-    }
+    if (pacer_.measure(Clock::now(), stepsTaken_)) glutPostRedisplay();
   }
 
   std::string statusText() const {
     char text[256];
     const char* mode = !status_ ? "failed" : finished() ? "done" : paused_ ? "paused" : "running";
     std::snprintf(text, sizeof text, "%s  step %ld/%ld  %s  %.0f steps/s  %s", settings_.sceneName.c_str(), state_.step,
-                  settings_.totalSteps, timeText(state_.time, file_.scene.dt).c_str(), rate_, mode);
+                  settings_.totalSteps, timeText(state_.time, file_.scene.dt).c_str(), pacer_.rate(), mode);
     return text;
   }
 
@@ -354,11 +332,7 @@ class Window {
   Status status_ = Status::ok();
   bool paused_ = true;
   long stepsTaken_ = 0;
-  Clock::time_point anchor_;  // pacing: steps due since the anchor
-  long anchorSteps_ = 0;
-  Clock::time_point rateTime_;  // steps per second, measured every half second
-  long rateSteps_ = 0;
-  double rate_ = 0;
+  StepPacer pacer_;  // steps due, and the steps per second shown
   bool dragging_ = false;
   int dragX_ = 0, dragY_ = 0;
   std::string title_;
