@@ -59,9 +59,9 @@ constexpr int kStepsPerSize = 8;
 constexpr int kRefinements = 2;
 
 struct Basis {
-  DimsByActive q;  ///< dims x count: orthonormal columns spanning the active normals
-  DimsByActive r;  ///< count x count, upper triangular: N = q r
-  int count = 0;
+  DimsByActive q;  ///< dims x dims, its first `count` columns orthonormal, spanning the active normals
+  DimsByActive r;  ///< dims x dims, its top left count x count upper triangular: N = q r
+  int count = 0;   ///< the active rows it holds (the first `count` of the active list)
 };
 
 // Takes from col its part in the span of q's first `columns` columns, twice (classical
@@ -76,21 +76,30 @@ ActiveVector orthogonalise(const Basis& basis, int columns, DimVector& col) {
   return coefficients;
 }
 
+// Column c of Q R = N: col is the active normal N_c orthogonalised against the columns before it
+// (orthogonalise), `coefficients` what it took, `length` |N_c|. False when N_c is (nearly)
+// dependent on the columns before it, which the method never lets join: rounding may still bring
+// it there, and the solve then gives up.
+bool setColumn(Basis& basis, int c, const DimVector& col, const ActiveVector& coefficients, double length) {
+  const double left = col.norm();
+  if (!(left > kActiveSetDependence * length)) return false;
+  basis.r.col(c).head(c) = coefficients;
+  basis.r(c, c) = left;
+  basis.q.col(c) = col / left;
+  basis.count = c + 1;
+  return true;
+}
+
 // Q R = N for the active normals a.row(active[0..count)), each column orthogonalised against the
-// earlier ones. False when a column is (nearly) dependent on the earlier ones, which the method
-// never lets join: rounding may still bring it there, and the solve then gives up.
-bool factor(const RowsByDims& a, const int* active, int count, int dims, Basis& basis) {
-  basis.q.resize(dims, count);
-  basis.r.setZero(count, count);
-  basis.count = count;
-  for (int c = 0; c < count; ++c) {
+// earlier ones. Columns the basis holds already are kept: a column depends only on those before
+// it, so they are what a factorisation from scratch makes, to the bit. A row that joins is the
+// last column (appended by the caller); one that leaves takes the columns after it with it.
+bool factor(const RowsByDims& a, const int* active, int count, Basis& basis) {
+  for (int c = basis.count; c < count; ++c) {
     DimVector col = a.row(active[c]).transpose();
     const double length = col.norm();
-    basis.r.col(c).head(c) = orthogonalise(basis, c, col);
-    const double left = col.norm();
-    if (!(left > kActiveSetDependence * length)) return false;
-    basis.r(c, c) = left;
-    basis.q.col(c) = col / left;
+    const ActiveVector coefficients = orthogonalise(basis, c, col);
+    if (!setColumn(basis, c, col, coefficients, length)) return false;
   }
   return true;
 }
@@ -137,6 +146,8 @@ bool projectByActiveSet(const std::vector<double>& inverseMass, const std::vecto
   bool isActive[kMaxActiveSetRows] = {};
   bool givenUp[kMaxActiveSetRows] = {};  // within the slack, and no step can do better (below)
   Basis basis;
+  basis.q.resize(dims, dims);
+  basis.r.resize(dims, dims);
   const int maxSteps = kStepsPerSize * (m + dims) + 16;
   int steps = 0;
   while (true) {
@@ -152,7 +163,7 @@ bool projectByActiveSet(const std::vector<double>& inverseMass, const std::vecto
     if (p < 0) break;
     const DimVector ap = a.row(p).transpose();
     while (true) {  // until p joins (or the problem is found infeasible)
-      if (++steps > maxSteps || !factor(a, active, count, dims, basis)) return false;
+      if (++steps > maxSteps || !factor(a, active, count, basis)) return false;
       DimVector z = ap;
       const ActiveVector proj = orthogonalise(basis, count, z);
       const ActiveVector r = basis.r.topLeftCorner(count, count).triangularView<Eigen::Upper>().solve(proj);
@@ -175,6 +186,9 @@ bool projectByActiveSet(const std::vector<double>& inverseMass, const std::vecto
       for (int i = 0; i < count; ++i) u[active[i]] = std::max(0.0, u[active[i]] - t * r(i));
       u[p] += t;
       if (t2 <= t1) {
+        // z is p's normal orthogonalised against the basis, as factor would make it: appended
+        // (if it is dependent after all, the next factor finds so, as it did from scratch).
+        (void)setColumn(basis, count, z, proj, ap.norm());
         active[count++] = p;
         isActive[p] = true;
         break;
@@ -183,6 +197,7 @@ bool projectByActiveSet(const std::vector<double>& inverseMass, const std::vecto
       isActive[active[leaving]] = false;
       for (int i = leaving; i + 1 < count; ++i) active[i] = active[i + 1];
       --count;
+      basis.count = std::min(basis.count, leaving);  // the columns from `leaving` on are made again
     }
   }
 
@@ -202,7 +217,7 @@ bool projectByActiveSet(const std::vector<double>& inverseMass, const std::vecto
   };
   const auto rowVelocity = [&](int k) { return measure::rowVelocity(rows[k], out); };
   velocities();
-  if (count > 0 && factor(a, active, count, dims, basis)) {
+  if (count > 0 && factor(a, active, count, basis)) {
     for (int pass = 0; pass < kRefinements; ++pass) {
       ActiveVector w(count);
       for (int i = 0; i < count; ++i) w(i) = -rowVelocity(active[i]);
