@@ -24,7 +24,7 @@ constexpr int kMaxZoneBounces = 64;
 /// Of those, the bounces a zone may take at the instant of its bounce before (whatever its
 /// bounceLimit): a rattle moves on in time, and one that does not is a jam. A capsule pinned
 /// between fixed disks bounced from one to the other at the step's first instant until a small
-/// zone's kMaxZoneBouncesCap: 600 solves a step for 16 particles (a fuzzer's scene, 219 s under
+/// zone's kMaxZoneBouncesCap: 600 solves a step for 14 particles (a fuzzer's scene, 219 s under
 /// the sanitizers).
 constexpr int kMaxStalledBounces = kMaxZoneBounces;
 /// A zone whose movable members' masses differ needs more: a light disk driven into a wall by a
