@@ -34,12 +34,7 @@ class Builder {
   double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng_); }
   int add(double m, Vec2 x, Vec2 v, double r, bool fixed = false) {
     addParticle(s_.scene, m, fixed, r);
-    const Eigen::Index n = s_.state.x.size();
-    s_.state.x.conservativeResize(n + 2);
-    s_.state.v.conservativeResize(n + 2);
-    s_.state.x.segment<2>(n) = x;
-    s_.state.v.segment<2>(n) = v;
-    return static_cast<int>(n / 2);
+    return s_.state.addParticle(x, v);
   }
   void plane(Vec2 point, Vec2 normal) { s_.scene.halfplanes.push_back(HalfPlane{point, normal}); }
   void link(int i, int j, double radius, double k, double l0, double damping) {

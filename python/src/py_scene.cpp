@@ -97,14 +97,8 @@ int PyScene::addParticle(const Vec2& x, const Vec2& v, double mass, double radiu
   requirePositive("add_particle: radius", radius);
   for (double c : {x.x(), x.y(), v.x(), v.y()}) requireFinite("add_particle: position and velocity", c);
   fosssim::addParticle(file.scene, mass, fixed, radius);
-  State& s = file.initial;
-  const Eigen::Index n = s.x.size();
-  s.x.conservativeResize(n + 2);
-  s.v.conservativeResize(n + 2);
-  s.x.segment<2>(n) = x;
-  s.v.segment<2>(n) = v;
   file.look.particleColors.push_back(kDefaultParticleColor);
-  return static_cast<int>(n / 2);
+  return file.initial.addParticle(x, v);
 }
 
 int PyScene::addEdge(int i, int j, double radius) {

@@ -16,12 +16,7 @@ struct TestScene {
 /// Appends a particle to both the scene and the state.
 inline int addBody(TestScene& s, double m, Vec2 x, Vec2 v, double radius = 0.1, bool fixed = false) {
   addParticle(s.scene, m, fixed, radius);
-  const Eigen::Index n = s.state.x.size();
-  s.state.x.conservativeResize(n + 2);
-  s.state.v.conservativeResize(n + 2);
-  s.state.x.segment<2>(n) = x;
-  s.state.v.segment<2>(n) = v;
-  return static_cast<int>(n / 2);
+  return s.state.addParticle(x, v);
 }
 
 /// The ground most contact tests stand on: the floor y = 0 (a half-plane facing up) and gravity
