@@ -137,27 +137,26 @@ def test_diagnostics_columns_and_physics():
     assert list(df.columns) == sim.columns and len(df) == 21
 
 
-def test_failed_step_raises_with_the_step():
+def stiff_spring(dt, duration, k):
+    """Two particles on a spring too stiff for explicit Euler at dt: their velocities grow until
+    they are not finite."""
     s = fosssim.Scene()
-    s.set_integrator("explicit-euler", 1.0)
-    s.duration = 100
+    s.set_integrator("explicit-euler", dt)
+    s.duration = duration
     a = s.add_particle((0, 0), mass=1)
     b = s.add_particle((1, 0), mass=1)
-    s.add_spring(s.add_edge(a, b), k=1e6, l0=0.5)
-    sim = fosssim.Simulator(s)
+    s.add_spring(s.add_edge(a, b), k=k, l0=0.5)
+    return fosssim.Simulator(s)
+
+
+def test_failed_step_raises_with_the_step():
+    sim = stiff_spring(dt=1.0, duration=100, k=1e6)
     with pytest.raises(fosssim.SimulationError, match="step"):
         sim.run()
 
 
 def test_a_failed_step_leaves_the_last_good_state_and_stops_the_simulator():
-    # Explicit Euler on a spring too stiff for dt: the velocities grow until they are not finite.
-    s = fosssim.Scene()
-    s.set_integrator("explicit-euler", 0.01)
-    s.duration = 1.0
-    a = s.add_particle((0, 0), mass=1)
-    b = s.add_particle((1, 0), mass=1)
-    s.add_spring(s.add_edge(a, b), k=1e4, l0=0.5)
-    sim = fosssim.Simulator(s)
+    sim = stiff_spring(dt=0.01, duration=1.0, k=1e4)
     good = None
     with pytest.raises(fosssim.SimulationError, match="non-finite") as info:
         for _ in range(100):
