@@ -125,6 +125,32 @@ TEST(EnergyWatch, AStartWhoseEnergyOverflowsIsRefusedNamingTheParticle) {
   }
 }
 
+// The start's other two ways to overflow: a force's potential alone (a spring of k = 1e300
+// stretched by 1e6 m: k d^2 / 2 ~ 5e311), and a sum of finite terms (three kinetic energies of
+// 8.45e307 each: m v^2 / 2 with m = 1, v = 1.3e154, v^2 finite). Each is named for what overflowed.
+TEST(EnergyWatch, AStartWhosePotentialOrEnergySumOverflowsIsRefusedSayingWhich) {
+  TestScene stretched = testing::spring("symplectic-euler", 0.01, 1e300, 1e6);
+  RunEnd end = runFor(stretched, 10);
+  ASSERT_FALSE(end.status.isOk());
+  EXPECT_EQ(end.steps, 0);
+  for (const char* part : {"energy at the start is not finite", "the potential of 'springforce' #1 is inf",
+                           "choose smaller units"})
+    EXPECT_TRUE(contains(end.status.message(), part)) << "missing \"" << part << "\" in: " << end.status.message();
+
+  TestScene fast = testing::spring("symplectic-euler", 0.01, 1.0);
+  fast.state.v[0] = 1.3e154;
+  fast.state.v[2] = -1.3e154;
+  addBody(fast, 1.0, Vec2(5, 0), Vec2(0, 1.3e154));
+  ASSERT_TRUE(std::isfinite(1.3e154 * 1.3e154));  // each term, v^2 included, is finite
+  ASSERT_FALSE(std::isfinite(3 * (0.5 * 1.3e154 * 1.3e154)));
+  end = runFor(fast, 10);
+  ASSERT_FALSE(end.status.isOk());
+  EXPECT_EQ(end.steps, 0);
+  EXPECT_TRUE(contains(end.status.message(), "the sum of the kinetic and potential energies overflows (inf)"))
+      << end.status.message();
+  EXPECT_FALSE(contains(end.status.message(), "particle 0")) << end.status.message();
+}
+
 // The tracker's second case: two disks tied by a spring inside a stiff penalty layer. Left alone
 // they reach thousands of m/s (the tracker saw 1,650); watched, they stop well before.
 TEST(EnergyWatch, SpringPairInsideAStiffPenaltyLayerIsCaught) {

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -224,6 +225,50 @@ TEST(Trajectory, UnwritablePathsAreReported) {
   for (int k = 0; k < 1000 && !failed; ++k) failed = !writer->write(twoParticles(k), CollisionLog{}).isOk();
   if (!failed) failed = !writer->close().isOk();
   EXPECT_TRUE(failed);
+}
+
+TEST(Trajectory, ANonFiniteRecordIsRefusedNamingItsFirstNonFiniteNumberAndNothingIsWritten) {
+  TempDir dir("trajectory");
+  // Each case spoils one number; the message names what the spec's record would carry there.
+  struct Case {
+    const char* what;
+    RecordLayout layout;
+    void (*spoil)(State&, CollisionLog&);
+    const char* named;
+  };
+  const Case cases[] = {
+      {"position", kPlain, [](State& s, CollisionLog&) { s.x(3) = -std::numeric_limits<double>::infinity(); },
+       "particle 1's position"},
+      {"velocity", kPlain, [](State& s, CollisionLog&) { s.v(0) = std::numeric_limits<double>::quiet_NaN(); },
+       "particle 0's velocity"},
+      {"impulse normal", kImpulses, [](State&, CollisionLog& l) { l.impulses[1].n.y() = std::nan(""); },
+       "impulse 1 (particle-half-plane, 0 and 3"},
+      {"impulse time", kImpulses,
+       [](State&, CollisionLog& l) { l.impulses[0].tau = std::numeric_limits<double>::infinity(); }, "impulse 0"},
+      {"polynomial", kEverything,
+       [](State&, CollisionLog& l) {
+         const std::array<double, 2> p{1, std::nan("")};
+         l.polynomials.add(p.data(), 2);
+       },
+       "polynomial 3 of the collision log"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.what);
+    State state = twoParticles(0.5);
+    CollisionLog log = someLog(c.layout.polynomials);
+    c.spoil(state, log);
+    const std::string path = dir.file(std::string(c.what) + ".bin");
+    std::unique_ptr<TrajectoryWriter> writer;
+    ASSERT_TRUE(TrajectoryWriter::open(path, c.layout, writer).isOk());
+    const Status s = writer->write(state, log);
+    ASSERT_FALSE(s.isOk());
+    EXPECT_NE(s.message().find("cannot hold a non-finite number: "), std::string::npos) << s.message();
+    EXPECT_NE(s.message().find(c.named), std::string::npos) << s.message();
+    ASSERT_TRUE(writer->close().isOk());
+    std::vector<TrajectoryRecord> records;
+    EXPECT_EQ(readAll(path, 2, c.layout, records), "");
+    EXPECT_TRUE(records.empty());  // the refused record left no bytes
+  }
 }
 
 }  // namespace

@@ -210,6 +210,33 @@ TEST(ExactCcdScale, HugeSpeedsAndNormalsStillDetect) {
   EXPECT_NEAR(c.tau, (0.5 * std::sqrt(0.5) - 0.1) / (std::sqrt(0.5)), 1e-14);
 }
 
+TEST(ExactCcdScale, PairsAtTheEndsOfTheDoubleRangeKeepTheirAnswer) {
+  // HeadOnPair's numbers made integers (centres 12 apart, radii 1 and 3, closing 2 + 10 per
+  // step: gap 8, tau = 2/3) and scaled by 2^k. A power of two is exact for integer multiples of
+  // the smallest subnormal, 2^-1074, and below 2^1024: so the pair's largest magnitude lies in
+  // the subnormal range (k = -1070: 12 2^-1070 < 2^-1022) or above 2^1022 (k = 1019), where
+  // 2^-e is not a normal double and the normalisation takes two halves. Its answer is the
+  // unit-scale pair's, and 2/3 to rounding.
+  const auto scaled = [](int k) {
+    const auto v = [k](double x, double y) { return Vec2(std::ldexp(x, k), std::ldexp(y, k)); };
+    return PPInput{v(0, 0), v(2, 0), std::ldexp(1.0, k), v(12, 0), v(-10, 0), std::ldexp(3.0, k)};
+  };
+  ExactContact unit;
+  ASSERT_EQ(exactPP(scaled(0), &unit), CcdOutcome::Hit);
+  EXPECT_NEAR(unit.tau, 2.0 / 3.0, 1e-15);
+  for (int k : {-1070, -1060, -1030, 1000, 1019}) {
+    SCOPED_TRACE(k);
+    const PPInput in = scaled(k);
+    ASSERT_EQ(std::ldexp(in.x2.x(), -k), 12.0);  // represented exactly
+    ExactContact c;
+    ASSERT_EQ(exactPP(in, &c), CcdOutcome::Hit);
+    EXPECT_EQ(c.tau, unit.tau);
+    EXPECT_EQ(c.normal, unit.normal);
+  }
+  EXPECT_LT(std::ldexp(12.0, -1070), std::numeric_limits<double>::min());  // subnormal indeed
+  EXPECT_GT(std::ldexp(12.0, 1019), std::ldexp(1.0, 1022));
+}
+
 TEST(ExactCcdScale, NonFiniteGivesOverflow) {
   const PPInput pp{{0.0, 0.0}, {1.0, 0.0}, 0.5, {2.0, 0.0}, {0.0, 0.0}, 0.5};
   const PEInput pe{{0.5, 1.0}, {0.0, -1.0}, 0.1, {0.0, 0.0}, {0.0, 0.0}, {1.0, 0.0}, {0.0, 0.0}, 0.1};
