@@ -38,8 +38,7 @@ int main(int argc, char** argv) {
   scene.integrator = "symplectic-euler";
   scene.dt = 0.01;
   State state;
-  state.x = Vec2(0, 10);
-  state.v = Vec2(1, 0);
+  check(state.addParticle(Vec2(0, 10), Vec2(1, 0)) == 0, "State::addParticle returns the particle's index");
   std::unique_ptr<Simulator> simulator;
   Status created = Simulator::create(scene, SimulatorOptions{}, simulator);
   check(created.isOk(), "Simulator::create on a scene built in code");
