@@ -236,9 +236,14 @@ TEST(Window, KeysSaveRestartAndHelp) {
 
   // i: an SVG of the moment, p: a PNG screenshot, both in the current folder, named by the step.
   ASSERT_EQ(w.key("i p"), 0);
-  for (auto end = Clock::now() + std::chrono::seconds(10);
-       Clock::now() < end && !(std::filesystem::exists(tmp / "floor_step000003.png") &&
-                               std::filesystem::exists(tmp / "floor_step000003.svg"));)
+  // Until the window says both were saved, which it does once each is written: the files exist
+  // from their first byte on (an empty PNG was read under the sanitizers in CI).
+  const auto bothSaved = [&] {
+    const std::string out = w.output();
+    return out.find("saved floor_step000003.png") != std::string::npos &&
+           out.find("saved floor_step000003.svg") != std::string::npos;
+  };
+  for (auto end = Clock::now() + std::chrono::seconds(10); Clock::now() < end && !bothSaved();)
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   const std::string svg = readText(tmp / "floor_step000003.svg");
   EXPECT_NE(svg.find("<title>t = 0.3</title>"), std::string::npos) << svg.substr(0, 300);
