@@ -85,4 +85,15 @@ void StagedFile::discard() {
   if (staged()) (void)std::remove(writePath_.c_str());
 }
 
+Status writeStaged(const std::string& path, const std::string& what,
+                   const std::function<Status(const std::string&)>& write) {
+  StagedFile out;
+  if (Status s = StagedFile::prepare(path, what, out); !s) return s;
+  if (Status s = write(out.writePath()); !s) {
+    out.discard();  // a file cut short is of no use (libpng removes its own; other writers may not)
+    return out.staged() ? Status::error(s.message() + " (\"" + path + "\" was not written)") : s;
+  }
+  return out.commit();
+}
+
 }  // namespace fosssim::io

@@ -6,6 +6,7 @@
 #include "step_pacer.h"
 #include "x_display.h"
 
+#include "fosssim/io/staged_file.h"
 #include "fosssim/render/camera.h"
 #include "fosssim/render/path_trails.h"
 #include "fosssim/render/picture.h"
@@ -272,7 +273,8 @@ class Window {
   /// i (the course's key): the picture shown, as SVG, without the window's status line.
   void saveSvg() {
     const std::string path = savedName("svg");
-    saved(writeSvg(path, makePicture(file_, state_, trails_, view_)), path);
+    const Picture picture = makePicture(file_, state_, trails_, view_);
+    saved(io::writeStaged(path, "the window's SVG", [&](const std::string& to) { return writeSvg(to, picture); }), path);
   }
 
   /// p: the window's pixels as they are about to be shown, as PNG.
@@ -289,7 +291,10 @@ class Window {
     for (int y = 0; y < image.height; ++y)  // OpenGL's rows start at the bottom, PNG's at the top
       std::copy_n(rows.data() + row * (image.height - 1 - y), row, image.rgb.data() + row * y);
     const std::string path = savedName("png");
-    saved(writePng(path, image), path);
+    // Under a partial name, then renamed: a script that picks the file up as soon as it
+    // appears never reads it half written.
+    saved(io::writeStaged(path, "the window's screenshot", [&](const std::string& to) { return writePng(to, image); }),
+          path);
   }
 
   /// A step may draw off-screen frames (-g, --movie) through OSMesa on this thread, which leaves

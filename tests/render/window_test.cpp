@@ -236,8 +236,8 @@ TEST(Window, KeysSaveRestartAndHelp) {
 
   // i: an SVG of the moment, p: a PNG screenshot, both in the current folder, named by the step.
   ASSERT_EQ(w.key("i p"), 0);
-  // Until the window says both were saved, which it does once each is written: the files exist
-  // from their first byte on (an empty PNG was read under the sanitizers in CI).
+  // Until the window says both were saved, which it does once each is written and renamed (each
+  // is written under a partial name first: io::writeStaged).
   const auto bothSaved = [&] {
     const std::string out = w.output();
     return out.find("saved floor_step000003.png") != std::string::npos &&
@@ -257,6 +257,8 @@ TEST(Window, KeysSaveRestartAndHelp) {
   EXPECT_EQ(be32(16), 512u) << "the window's width";
   EXPECT_EQ(be32(20), 512u) << "the window's height";
   EXPECT_NE(w.output().find("saved floor_step000003.svg"), std::string::npos) << w.output();
+  EXPECT_FALSE(std::filesystem::exists(tmp / "floor_step000003.partial.png"));
+  EXPECT_FALSE(std::filesystem::exists(tmp / "floor_step000003.partial.svg"));
 
   // h: the help over the middle of the picture (dark letters where there was white background).
   Screenshot before, after;

@@ -9,6 +9,7 @@
 
 #include "fosssim/core/status.h"
 
+#include <functional>
 #include <string>
 
 namespace fosssim::io {
@@ -61,5 +62,13 @@ class StagedFile {
   std::string renameTo_;   ///< the final path, a symbolic link resolved (the link keeps pointing at it)
   std::string writePath_;
 };
+
+/// Writes one whole file at once through `write` (given the path to write to) under the partial
+/// name, then gives it the final name: a reader never finds the file half written under its name
+/// (the window's saves, which a script may pick up as soon as they appear), and a failed write
+/// leaves an older file of that name as it was and no partial file. `what` names the output in
+/// messages. Devices and named pipes are written directly (StagedFile).
+Status writeStaged(const std::string& path, const std::string& what,
+                   const std::function<Status(const std::string&)>& write);
 
 }  // namespace fosssim::io
