@@ -96,15 +96,15 @@ class EnergyWatch {
   std::string explain(const Scene& scene, const State& start, const State& end, ForceContext& forces, double gain,
                       double scale) const;
 
-  bool wanted_;
-  bool started_ = false;
-  bool active_ = false;
+  bool wanted_;            ///< the caller wants the watch (the constructor's `enabled`)
+  bool started_ = false;   ///< a baseline was taken (begin ran)
+  bool active_ = false;    ///< watching this run: wanted, the scene cannot gain energy honestly and E(0) is finite
   double energy0_ = 0;     ///< E(0)
   double baseScale_ = 0;   ///< the scale's terms fixed at the start
   double released_ = 0;    ///< the largest potential energy released so far
   double driftPerStep_ = 0;  ///< the first-order drift the fields may cause per step
   long steps_ = 0;         ///< steps checked since the baseline
-  double largestGrowth_ = 0;
+  double largestGrowth_ = 0;  ///< the largest gain / scale seen in this run (largestGrowth())
   /// A force whose potential is followed step by step, and its value at the start.
   struct Tracked {
     int force;

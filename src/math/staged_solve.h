@@ -38,13 +38,15 @@ class StagedSolve {
   }
 
  private:
-  IntervalRule rule_;
-  double tMax_;
+  IntervalRule rule_;  ///< how roots become the answer (interval_solver.h)
+  double tMax_;        ///< the interval searched is [0, tMax]
   // Filled in order up to count_; not zeroed on purpose (hot path).
   const Polynomial* polys_[kMaxSolverPolynomials];
-  PositiveSet sets_[kMaxSolverPolynomials];
+  PositiveSet sets_[kMaxSolverPolynomials];  ///< per polynomial: where it is positive in [0, tMax], once computed
+  /// Per polynomial: sets_ computed by add(); false: left to finish() (positive just after 0).
   bool known_[kMaxSolverPolynomials];
-  int count_ = 0;
+  int count_ = 0;  ///< polynomials added
+  /// Every polynomial added so far is positive just after 0 under IntervalRule::Exact: finish() gives 0.
   bool allPositiveAtZero_ = true;
 };
 

@@ -23,7 +23,7 @@ inline const char* pairKindName(PairKind kind) {
 /// A pair found colliding during a step: what detection finds and what --verify reports
 /// (Violation). For particle-edge and particle-half-plane, j is the edge or half-plane index.
 struct Collision {
-  PairKind kind = PairKind::ParticleParticle;
+  PairKind kind = PairKind::ParticleParticle;  ///< what j indexes: a particle, an edge or a half-plane
   int i = 0;              ///< the particle (the lower index for particle-particle)
   int j = 0;              ///< the other particle, the edge or the half-plane
   double tau = 0;         ///< first contact as a fraction of the step, in [0, 1]
@@ -34,7 +34,7 @@ struct Collision {
 /// One collision response, as trajectory records hold it (the reference's record: kind, i, j,
 /// n, then the contact time: the tau of the Collision it answers, 0 for discrete detection).
 struct Impulse {
-  PairKind kind = PairKind::ParticleParticle;
+  PairKind kind = PairKind::ParticleParticle;  ///< what j indexes: a particle, an edge or a half-plane
   int i = 0;                ///< the particle (the lower index for particle-particle)
   int j = 0;                ///< the other particle, edge or half-plane
   Vec2 n = Vec2::Zero();    ///< contact vector (unnormalised), from particle i to the other object
@@ -61,14 +61,16 @@ class PolynomialLog {
 
  private:
   int begin(int k) const { return k == 0 ? 0 : ends_[k - 1]; }
-  bool enabled_ = false;
+  bool enabled_ = false;  ///< whether detection logs its queries' polynomials here (setEnabled)
+  /// Every polynomial's coefficients, highest power first, back to back in call order.
   std::vector<double> coefficients_;
   std::vector<int> ends_;  ///< one past the last coefficient of each polynomial
 };
 
 struct CollisionLog {
+  /// The step's impulses in the order they were applied (the hybrid handler's stays empty).
   std::vector<Impulse> impulses;
-  PolynomialLog polynomials;
+  PolynomialLog polynomials;  ///< every continuous-time query's polynomials, in call order (only while enabled)
   void clear() {
     impulses.clear();
     polynomials.clear();

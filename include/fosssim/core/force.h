@@ -46,10 +46,11 @@ class ForceContext {
   const std::vector<char>* resting() const { return resting_; }
 
  private:
-  bool allPairs_;
-  int threads_;
+  bool allPairs_;  ///< every pair is a near-pair candidate, without the broad phase (HandlerOptions::allPairs)
+  int threads_;    ///< threads for the pair search and per-particle passes (HandlerOptions::threads; 1: the caller's)
+  /// See setResting: per particle (size N), 1 for a particle whose force nobody reads; null: none.
   const std::vector<char>* resting_ = nullptr;
-  std::unique_ptr<PenaltyScratch> penalty_;
+  std::unique_ptr<PenaltyScratch> penalty_;  ///< see penaltyScratch(); null until first use
 };
 
 class Force {

@@ -21,7 +21,7 @@ class PairForce : public Force {
 
  protected:
   PairForce(int i, int j) : i_(i), j_(j) {}
-  int i_, j_;
+  int i_, j_;  ///< the two particles' indices
 };
 
 /// <springforce edge k l0 b>: E = k/2 (l - l0)^2 with l = |x_j - x_i|, plus the damping force
@@ -42,7 +42,7 @@ class SpringForce final : public PairForce {
   double damping() const { return b_; }
 
  private:
-  double k_, l0_, b_;
+  double k_, l0_, b_;  ///< stiffness k, rest length l0 and damping coefficient b of the formula above
 };
 
 /// <simplegravity fx fy>: the force m g on every particle; E = -sum m_i g . x_i.
@@ -57,7 +57,7 @@ class SimpleGravityForce final : public Force {
   const Vec2& acceleration() const { return g_; }
 
  private:
-  Vec2 g_;
+  Vec2 g_;  ///< the acceleration g of every particle
 };
 
 /// <constantforce fx fy>: the same force f on every particle; E = -sum f . x_i.
@@ -72,7 +72,7 @@ class ConstantForce final : public Force {
   const Vec2& force() const { return f_; }
 
  private:
-  Vec2 f_;
+  Vec2 f_;  ///< the force f on every particle
 };
 
 /// <gravitationalforce i j G>: E = -G m_i m_j / |x_j - x_i|.
@@ -87,7 +87,7 @@ class GravitationalForce final : public PairForce {
   double G() const { return G_; }
 
  private:
-  double G_;
+  double G_;  ///< the gravitational constant G of the formula above
 };
 
 /// <dragdamping b>: the force -b v on every particle.
@@ -102,7 +102,7 @@ class DragDampingForce final : public Force {
   double damping() const { return b_; }
 
  private:
-  double b_;
+  double b_;  ///< the drag coefficient b (the force is -b v)
 };
 
 /// <vortexforce i j kbs kvc>: with r = x_j - x_i, rhat = r/|r|, perp(a, b) = (-b, a):
@@ -118,7 +118,7 @@ class VortexForce final : public PairForce {
   double kvc() const { return kvc_; }
 
  private:
-  double kbs_, kvc_;
+  double kbs_, kvc_;  ///< the coefficients kbs and kvc of the formula above
 };
 
 /// The penalty force of <collision type="penalty"> and "hybrid": for every pair closer than
@@ -142,7 +142,7 @@ class PenaltyForce final : public Force {
   double thickness() const { return thickness_; }
 
  private:
-  double k_, thickness_;
+  double k_, thickness_;  ///< stiffness k, and the thickness added to the pair's r_sum (see above)
 };
 
 }  // namespace fosssim

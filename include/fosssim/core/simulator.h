@@ -21,6 +21,7 @@
 namespace fosssim {
 
 struct SimulatorOptions {
+  /// The collision handler's options (compat, allPairs, threads, ...); threads and allPairs serve the forces too.
   HandlerOptions handler;
   /// Record every continuous-time query's polynomials (for trajectory files and grading only:
   /// the reference's log holds every pair's polynomials, so every pair is then queried in the
@@ -73,19 +74,20 @@ class Simulator {
 
  private:
   Simulator();
-  const CollisionEntry* collision_ = nullptr;
+  const CollisionEntry* collision_ = nullptr;  ///< the collision table's row of the scene's collision type (create)
   std::string integratorKeyword_;  ///< the settings create() read (see the top of this file)
-  double dt_ = 0;
-  CollisionSettings settings_;
+  double dt_ = 0;                  ///< the time step create() read (scene.dt)
+  CollisionSettings settings_;     ///< the collision settings create() read (scene.collision): step() refuses others
+  /// Built by create() from the integrator table's row of the scene's keyword.
   std::unique_ptr<Integrator> integrator_;
   /// The integrator holds the particles the handler keeps at rest where they are (the implicit
   /// methods: they leave the system); otherwise (the explicit methods, which predict each
   /// particle from its own force alone) their forces may be left incomplete.
   bool holdsResting_ = false;
   std::unique_ptr<CollisionHandler> handler_;  ///< null for "none" and "penalty"
-  CollisionLog log_;
-  StepStats stats_;
-  bool timing_ = false;
+  CollisionLog log_;  ///< what the last step's collision handling did (log()); cleared at each step
+  StepStats stats_;  ///< what the last step cost and did (stats())
+  bool timing_ = false;  ///< whether step() measures phase timings (setTiming)
   ForceContext forces_;  ///< the forces' pair search (allPairs, threads) and storage
   State start_;  ///< the state at the beginning of the current step (scratch)
   std::unique_ptr<EnergyWatch> energyWatch_;  ///< part of the verify phase

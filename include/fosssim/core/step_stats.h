@@ -56,8 +56,8 @@ class StepTimer {
   StepTimer& operator=(const StepTimer&) = delete;
 
  private:
-  double* into_;
-  std::chrono::steady_clock::time_point begin_;
+  double* into_;                                 ///< where the elapsed seconds are added; null when disabled
+  std::chrono::steady_clock::time_point begin_;  ///< when the timer started (set only when enabled)
 };
 
 }  // namespace fosssim

@@ -24,8 +24,8 @@ class Triplet {
   double value() const { return value_; }
 
  private:
-  int row_, col_;
-  double value_;
+  int row_, col_;  ///< the entry's position in the matrix
+  double value_;   ///< the entry's value, summed with the other entries at the same position
 };
 using Triplets = std::vector<Triplet>;
 

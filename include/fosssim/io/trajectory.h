@@ -20,7 +20,7 @@ namespace fosssim {
 /// One record as read from a file.
 struct TrajectoryRecord {
   VecX x, v;  ///< 2N each
-  CollisionLog log;
+  CollisionLog log;  ///< the record's impulses and polynomials (those its layout holds; empty otherwise)
 };
 
 /// Writes records straight to the file (one write() per append, no buffer in this process): what
@@ -53,12 +53,12 @@ class TrajectoryWriter {
   TrajectoryWriter() = default;
   /// "<name>: cannot <what> the trajectory file[ \"<path>\"]"
   std::string cannot(const std::string& what) const;
-  std::string path_;
+  std::string path_;             ///< the file written (path())
   std::string name_, realName_;  ///< for messages: shownAs (or the path), and the path when they differ
-  RecordLayout layout_;
-  int fd_ = -1;
-  std::uint64_t size_ = 0;
-  std::string buffer_;
+  RecordLayout layout_;          ///< what each record holds
+  int fd_ = -1;                  ///< the open file's descriptor; -1 once closed
+  std::uint64_t size_ = 0;       ///< bytes of the complete records in the file (bytesWritten())
+  std::string buffer_;           ///< write()'s scratch: the encoded record
 };
 
 class TrajectoryReader {
@@ -83,13 +83,13 @@ class TrajectoryReader {
   Status fail(const std::string& what) const;
   Status endsEarly(const std::string& what) const;
   bool readBytes(void* into, std::uint64_t bytes);
-  std::string path_;
-  int n_ = 0;
-  RecordLayout layout_;
-  std::ifstream in_;
-  std::uint64_t size_ = 0, offset_ = 0;
-  long records_ = 0;
-  std::vector<double> scratch_;
+  std::string path_;                     ///< the file read (for messages)
+  int n_ = 0;                            ///< particles per record: each holds 2n_ positions and 2n_ velocities
+  RecordLayout layout_;                  ///< what each record holds
+  std::ifstream in_;                     ///< the open file
+  std::uint64_t size_ = 0, offset_ = 0;  ///< the file's size and the bytes read so far (fileSize(), offset())
+  long records_ = 0;                     ///< whole records read so far (recordsRead())
+  std::vector<double> scratch_;          ///< next()'s scratch: one polynomial's coefficients as read
 };
 
 }  // namespace fosssim

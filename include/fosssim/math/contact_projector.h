@@ -267,10 +267,10 @@ class ContactProjector : public ExactSolveLimits {
   /// data misses over the run, the same instructions). One line with a 24-byte std::vector; not
   /// asserted, so that a debugging standard library's larger vector still builds.
   struct alignas(64) Body {
-    int id = 0;
+    int id = 0;             ///< the body's id; slot_[id] is this slot unless it was welded into another
     int rowCount = 0;       ///< rows it appears in: the first kInlineRows in `rows`, the rest in `moreRows`
-    int rows[kInlineRows] = {};
-    std::vector<int> moreRows;
+    int rows[kInlineRows] = {};  ///< the indices of its first kInlineRows rows
+    std::vector<int> moreRows;  ///< the indices of the rest of its rows
     bool hasRow(int k) const;
     void addRow(int k);
     /// Calls f(k) for each of its rows (inline: the worklist's hot loop reads them with the body).
@@ -285,7 +285,7 @@ class ContactProjector : public ExactSolveLimits {
     ConstraintRow r;        ///< bodies as slots into body_
     double diag = 0;        ///< A_kk = G_k M^-1 G_k^T
     double norm = 0;        ///< |G_k|
-    double lambda = 0;
+    double lambda = 0;      ///< its multiplier (impulse) along its current normal, >= 0
     int group = 0;          ///< index into solve's groupScale
     long epoch = 0;         ///< the instant (beginInstant's count) it was set at
   };
@@ -340,7 +340,7 @@ class ContactProjector : public ExactSolveLimits {
   void queueRowsOf(int slot, int except);
 
   std::vector<int> slot_;     ///< per body id: index into body_, -1 when absent
-  std::vector<Body> body_;
+  std::vector<Body> body_;    ///< per slot: the body's bookkeeping (see Body), in the order bodies were added
   /// Per slot: the ids of the bodies welded to it (weld), which share the slot. Apart from body_,
   /// whose row lists every update reads: a Body is then one cache line.
   std::vector<std::vector<int>> welded_;
@@ -348,7 +348,7 @@ class ContactProjector : public ExactSolveLimits {
   std::vector<Vec2> velocity_;       ///< per slot: the body's velocity
   std::vector<double> inverseMass_;  ///< per slot: 0 for an immovable body
   std::vector<Vec2> axis_;           ///< per slot: the one direction a locked body moves along; 0: free
-  std::vector<Row> row_;
+  std::vector<Row> row_;  ///< per row, indexed as addRow returned them: the row (bodies as slots) and its multiplier
   /// Per row: the multipliers of the normals setRow replaced (still applied). Apart from the rows,
   /// which every Gauss-Seidel update reads: this is read once a step (totalImpulse).
   std::vector<double> replaced_;
@@ -366,7 +366,7 @@ class ContactProjector : public ExactSolveLimits {
   std::vector<std::pair<int, Vec2>> restituted_;  ///< restitute's scratch: slots and their velocities before it
   std::vector<std::pair<int, Vec2>> pushedFrom_;  ///< shortenPushes' scratch: each pushed slot once, its velocity before
   std::vector<int> work_;     ///< FIFO of row indices: work_[head_, tail_) (the rest is room)
-  size_t head_ = 0, tail_ = 0;
+  size_t head_ = 0, tail_ = 0;  ///< the queue: the first queued row and one past the last, in work_
   std::vector<int> changed_;  ///< body slots changed since the last takeChanged
   /// The energy guard's starting point (capEnergy), since the last takeChanged. Per slot: its
   /// velocity when its rows first changed it (moved by what freeze and release set since).
@@ -375,8 +375,9 @@ class ContactProjector : public ExactSolveLimits {
   /// what setRow moved from its multiplier into replaced_ since then.
   std::vector<char> touchedFlag_;
   std::vector<int> revisits_;  ///< per row: Gauss-Seidel updates since the last takeChanged (solveAlone's trigger)
+  /// Per row (see touchedFlag_): its multiplier then, and what setRow moved into replaced_ since.
   std::vector<double> startLambda_, startReplaced_;
-  std::vector<int> touched_;
+  std::vector<int> touched_;  ///< rows whose multiplier changed since the last takeChanged, each once
   long updates_ = 0;          ///< see updates()
   long epoch_ = 0;            ///< instants begun (beginInstant); rows carry the one they were set at
 };

@@ -84,21 +84,22 @@ class BoxGrid {
     return static_cast<int>(v);
   }
 
-  int count_ = 0;
+  int count_ = 0;  ///< boxes indexed by the build: ids 0..count_-1
+  /// The lower-left corner of cell (0, 0), the cell size h and 1/h.
   double originX_ = 0, originY_ = 0, cell_ = 1, inverseCell_ = 1;
-  int columns_ = 1, rows_ = 1;
+  int columns_ = 1, rows_ = 1;  ///< the grid in cells: columns_ x rows_, numbered row by row
   std::vector<int> start_;     ///< per cell (row-major), its first entry; one more at the end
   std::vector<Box> boxes_;     ///< entries' boxes, cell by cell
   std::vector<int> ids_;       ///< entries' ids, parallel to boxes_
-  std::vector<Box> largeBoxes_;
-  std::vector<int> largeIds_;
+  std::vector<Box> largeBoxes_;  ///< the boxes too large for the cells, by ascending id
+  std::vector<int> largeIds_;    ///< their ids, parallel to largeBoxes_
   /// A box inserted after the build, in its home cell's list (or the large ones').
   struct Inserted {
-    Box box;
-    int id;
+    Box box;   ///< the box it files
+    int id;    ///< the box's id, as indexed by the build
     int next;  ///< the next entry of the same list, -1 at its end
   };
-  std::vector<Inserted> dynamic_;
+  std::vector<Inserted> dynamic_;  ///< the entries inserted since the build, in insertion order
   std::vector<int> head_;          ///< per cell: its first inserted entry, -1 if none (empty: none yet)
   std::vector<int> dynamicLarge_;  ///< inserted entries too large for the cells
   std::vector<int> live_;          ///< per id: its inserted entry, -1 while its sorted entry holds
@@ -106,7 +107,7 @@ class BoxGrid {
   std::vector<int> home_;      ///< scratch: each box's cell, or -1 for a large one
   std::vector<int> cursor_;    ///< scratch: per cell, where its next entry goes
   std::vector<int> bandStart_; ///< scratch: per band of cells (one per thread), its first entry
-  std::vector<double> scratch_;
+  std::vector<double> scratch_;  ///< scratch: the sampled extents (chooseCell) or corner coordinates (the trim)
 };
 
 template <class Visit>

@@ -21,11 +21,11 @@ class SimpleHandler final : public CollisionHandler {
   Status handle(const Scene& scene, const State& start, State& state, StepContext& ctx) override;
 
  private:
-  double cor_;
-  bool allPairs_;
+  double cor_;                 ///< coefficient of restitution (the scene's COR: 1 elastic .. 0 inelastic)
+  bool allPairs_;              ///< every pair is a candidate (HandlerOptions::allPairs)
   PairCandidates candidates_;  ///< pairs overlapping at the end of the step
-  std::vector<int> row_;
-  std::vector<uint64_t> keys_;
+  std::vector<int> row_;       ///< scratch for forEachInRow (one row's candidates)
+  std::vector<uint64_t> keys_;  ///< the step's candidate pair keys, in the reference's order
 };
 
 class ContinuousTimeHandler final : public CollisionHandler {
@@ -35,8 +35,8 @@ class ContinuousTimeHandler final : public CollisionHandler {
   Status handle(const Scene& scene, const State& start, State& state, StepContext& ctx) override;
 
  private:
-  double cor_;
-  CollisionSearch search_;
+  double cor_;              ///< coefficient of restitution (the scene's COR: 1 elastic .. 0 inelastic)
+  CollisionSearch search_;  ///< continuous-time detection with the broad phase
 };
 
 class HybridHandler final : public CollisionHandler {
@@ -62,14 +62,15 @@ class HybridHandler final : public CollisionHandler {
   /// particles they moved in touched_.
   void respond(const Scene& scene, const State& start, State& state, StepContext& ctx);
 
-  double cor_;
-  int maxIterations_;
-  CollisionSearch search_;
+  double cor_;                 ///< coefficient of restitution (the scene's COR: 1 elastic .. 0 inelastic)
+  int maxIterations_;          ///< impulse passes before the failsafe (the scene's maxiters; <= 0: none)
+  CollisionSearch search_;     ///< continuous-time detection with the broad phase
   std::vector<Collision> collisions_, previous_;  ///< this detection's and the last one's
+  /// Scratch of respond(): each collision's velocity change, in collisions_'s order.
   std::vector<VelocityChange> changes_;
   std::vector<int> touched_;   ///< particles whose end position the last responses or rigid moves changed
   std::vector<char> marked_;   ///< N: scratch for touched_
-  ImpactZones zones_;
+  ImpactZones zones_;          ///< the failsafe's rigid impact zones of this step
 };
 
 }  // namespace fosssim

@@ -70,23 +70,25 @@ class CollisionSearch {
   void referenceSweep(const Scene& scene, const VecX& qs, const VecX& qe, StepContext& ctx,
                       const std::function<void(const Collision&)>& onHit);
 
-  ContinuousDetector detector_;
-  bool forceAll_;
-  int threads_;
-  size_t blockSize_ = kKeysPerBlock;
-  PairCandidates candidates_;
+  ContinuousDetector detector_;    ///< the narrow phase: one pair's continuous-time query
+  bool forceAll_;  ///< query every pair in the reference's order, without the broad phase (HandlerOptions::allPairs)
+  int threads_;                    ///< threads for detectAll's rows and the broad phase's build
+  size_t blockSize_ = kKeysPerBlock;  ///< candidates collected at a time before the narrow phase (setBlockSize)
+  PairCandidates candidates_;      ///< the broad phase, built by prepare()
   const VecX* builtQs_ = nullptr;  ///< the vectors the broad phase was built on
-  const VecX* builtQe_ = nullptr;
+  const VecX* builtQe_ = nullptr;  ///< ... its end positions (both null when not built)
+  /// Candidate keys of the current block (detectChanged: the changed particles' pairs, sorted), and
+  /// sweep's min-heap of later pairs of the particles a response moved.
   std::vector<uint64_t> keys_, extra_;
-  std::vector<int> row_;
-  std::vector<char> mark_;
+  std::vector<int> row_;       ///< scratch for forEachInRow (one row's candidates)
+  std::vector<char> mark_;     ///< N: detectChanged's mark of the changed particles (all 0 between calls)
   struct alignas(64) Worker {  ///< one range of rows of a parallel detectAll (a cache line of its own)
-    std::vector<uint64_t> keys;
-    std::vector<int> row;
-    std::vector<Collision> out;
-    StepStats stats;
+    std::vector<uint64_t> keys;  ///< its current block of candidate keys
+    std::vector<int> row;        ///< scratch for forEachInRow
+    std::vector<Collision> out;  ///< its rows' collisions, in pair order
+    StepStats stats;             ///< its counts and phase times (joinRangeStats adds them up)
   };
-  std::vector<Worker> workers_;
+  std::vector<Worker> workers_;  ///< one per row range of the last parallel detectAll (grown, never shrunk)
 };
 
 /// Adds the counts of a detection's row ranges (range k's in stats(k)) to `total`; with timing,

@@ -170,10 +170,10 @@ class ContactZones {
     bool mayRescue(const int* ids, int count) override;
 
    private:
-    const ContactZones& zones_;
-    const Scene& scene_;
-    const StepMotion& motion_;
-    double T_;
+    const ContactZones& zones_;  ///< the zones whose rows it makes again
+    const Scene& scene_;         ///< the step's scene
+    const StepMotion& motion_;   ///< the step's motion, which places the particles at T_
+    double T_;                   ///< the instant, as a fraction of the step
   };
   /// The predicate "particle p is in zone `zone`" (a root), for the projector's row filters.
   auto memberOf(int zone) const {
@@ -222,10 +222,11 @@ class ContactZones {
   void stopJammed(int p);
 
   static constexpr char kJam = 1, kHeld = 2;  ///< why a particle stopped (stopped_)
-  bool rigidOnly_ = false;
+  bool rigidOnly_ = false;                    ///< every zone moves rigidly at once (failsafe="rigid"; setRigidOnly)
+  /// The solves' budget in Gauss-Seidel updates per added row (setUpdatesPerRow).
   long updatesPerRow_ = kZoneUpdatesPerRow;
-  bool hold_ = true;
-  Sleepers* sleepers_ = nullptr;
+  bool hold_ = true;              ///< budget-ended solves hold the particles they brought to rest (setHold)
+  Sleepers* sleepers_ = nullptr;  ///< the handler's sleepers, or null (setSleepers)
   double cor_ = 0.0;  ///< see setRestitution
   double h_ = 0.0;    ///< the step (absorb and resolve set it: kicks are speeds, rates are per step)
   std::vector<int> hitSleepers_;  ///< wakeHitSleepers' obstacles to wake (scratch)
@@ -297,9 +298,9 @@ class ContactZones {
   std::vector<char> curving_;
   std::vector<uint64_t> rowKey_;  ///< per projector row: its pair
   double instant_ = -1;           ///< the instant rows are set at now (atInstant); -1: none yet this step
-  std::vector<int> queue_;
-  std::vector<uint64_t> keys_;
-  std::vector<int> moved_;
+  std::vector<int> queue_;                 ///< grow()'s worklist: particles whose near pairs are still to be looked at
+  std::vector<uint64_t> keys_;             ///< grow()'s scratch: one particle's candidate pairs, sorted
+  std::vector<int> moved_;                 ///< resolve()'s scratch: the particles whose velocity the solve changed
   math::ContactProjector projector_;       ///< every zone's rows and velocities of this step
   int solvedRows_ = 0;                     ///< rows in the projector at its last solve
 };

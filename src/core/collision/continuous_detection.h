@@ -53,8 +53,8 @@ class ContinuousDetector {
   }
 
  private:
-  math::DetectionRules rules_;
-  StepStats* stats_ = nullptr;
+  math::DetectionRules rules_;  ///< the PE quintic and interval rule: FOSSSim's own, or the reference's (--compat)
+  StepStats* stats_ = nullptr;  ///< where forEachCollision counts its queries, or null (setStats)
 };
 
 }  // namespace fosssim

@@ -130,26 +130,27 @@ class EventHandler final : public CollisionHandler {
   /// initial velocity, and --compat does).
   Status fixedAtRest(const Scene& scene, const State& start) const;
 
-  double cor_;
+  double cor_;  ///< coefficient of restitution (the scene's COR: 1 elastic .. 0 inelastic)
+  /// A particle's quota of impulse events per step before the failsafe (0: every contact goes to the zones).
   int eventsPerParticle_;
-  bool allPairs_;
-  int threads_;
-  StepMotion motion_;
-  PairCandidates candidates_;
-  ContactZones zones_;
-  Sleepers sleepers_;
+  bool allPairs_;              ///< every pair is a candidate (HandlerOptions::allPairs)
+  int threads_;                ///< threads for the detection's rows, the broad phase and the per-particle passes (>= 1)
+  StepMotion motion_;          ///< every particle's straight pieces over the step, bent by the responses
+  PairCandidates candidates_;  ///< the broad phase over motion_'s from -> end, refreshed as paths bend
+  ContactZones zones_;         ///< the failsafe's impact zones of this step
+  Sleepers sleepers_;          ///< the particles at rest: obstacles until woken
   ContinuousDetector logger_{math::DetectionRules{}};  ///< builds the trajectory log's polynomials
-  std::vector<Event> heap_;
+  std::vector<Event> heap_;  ///< the events still to handle: a min-heap by time, then pair (Later)
   /// One per row range of detectAll: its events, scratch and counts. A cache line of its own:
   /// each thread writes its worker's vectors and counts all the time.
   struct alignas(64) Worker {
     std::vector<Event> events;
-    std::vector<uint64_t> keys;
+    std::vector<uint64_t> keys;  ///< its rows' candidate keys (all of them when they make the kept lists: keepAll)
     std::vector<int> row;
     StepStats stats;
-    Status status = Status::ok();
+    Status status = Status::ok();  ///< its range's first failure (ok when none)
   };
-  std::vector<Worker> workers_;
+  std::vector<Worker> workers_;    ///< one per row range of the last detectAll (grown, never shrunk)
   std::vector<int> pendingZones_;  ///< zones contacts joined at the current instant, not solved yet
   std::vector<Event> found_;      ///< scratch: detectChanged's events before they join the heap
   std::vector<int> events_;       ///< N: each particle's impulse events in this step that count toward its quota

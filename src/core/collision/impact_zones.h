@@ -42,14 +42,15 @@ class ImpactZones {
   size_t sorted_ = 0;            ///< members_[0, sorted_) is ascending (moveRigidly sorts)
   std::vector<int> slot_;        ///< N: per root, index of its accumulator (scratch)
   struct Accumulator {           ///< per zone, sums for its rigid motion
-    double mass = 0, inertia = 0, angular = 0;
+    double mass = 0, inertia = 0, angular = 0;  ///< M, I about the centre, and L of the displacements (see the .cpp)
+    /// Sums, then c and Dc: the start centre of mass and the mean displacement (see the .cpp).
     Vec2 centre = Vec2::Zero(), shift = Vec2::Zero();
-    bool immovable = false;
-    int root = -1;
+    bool immovable = false;      ///< holds a fixed particle or met a half-plane: it stays at the start
+    int root = -1;               ///< the zone's root particle
     double cos = 1, sin = 0;     ///< of the rotation angle
     Vec2 base = Vec2::Zero();    ///< centre + shift
   };
-  std::vector<Accumulator> accumulators_;
+  std::vector<Accumulator> accumulators_;  ///< moveRigidly's scratch: one per zone, indexed by slot_[root]
   std::vector<int> memberZone_;  ///< scratch: per member (in members_ order), its accumulator
 };
 

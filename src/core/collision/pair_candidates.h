@@ -201,7 +201,7 @@ class PairCandidates {
   struct alignas(64) KeptList {
     uint32_t generation = 0;  ///< 0: none
     int32_t count = 0;        ///< all of p's: the first kKeptInline in `other`, the rest in keptMore_[p]
-    int32_t other[kKeptInline] = {};
+    int32_t other[kKeptInline] = {};  ///< the list's first kKeptInline particles, ascending
   };
   /// keepsAllNext(): at least this inverse fraction of the particles had lists made one by one.
   /// Making all of them costs about a list entry per candidate pair and a line per particle
@@ -268,14 +268,17 @@ class PairCandidates {
   template <class Visit>
   void forEachEdgeNear(const Box& b, Visit&& visit) const;
 
-  const Scene* scene_ = nullptr;
-  const VecX* qs_ = nullptr;
-  const VecX* qe_ = nullptr;
+  const Scene* scene_ = nullptr;  ///< the build's scene
+  const VecX* qs_ = nullptr;      ///< the build's start positions (2N)
+  const VecX* qe_ = nullptr;      ///< the build's end positions (2N; read again as they change, update())
+  /// The build's extra reach, its coordinate scale (the largest |coordinate|, for the margins) and
+  /// the filing slack (a fraction of a box's extent; 0 without updates).
   double extra_ = 0, scale_ = 0, slack_ = 0;
-  int threads_ = 1;
-  bool allPairs_ = false;
+  int threads_ = 1;        ///< threads for the build's boxes and grids, and its rebuilds
+  bool allPairs_ = false;  ///< every pair is a candidate until the next build (a non-finite or huge state, or forced)
+  /// Per particle (N) and per edge: its box over the motion, as filed (slack included).
   std::vector<Box> particleBoxes_, edgeBoxes_;
-  BoxGrid particleGrid_, edgeGrid_;
+  BoxGrid particleGrid_, edgeGrid_;  ///< the grids of particleBoxes_ and edgeBoxes_ (box id: particle or edge index)
   std::vector<int> incidentStart_, incident_;  ///< edges of each particle (compressed rows)
   // pairsOf's lists. Without edges: the particles q != p whose boxes meet p's, ascending. A list
   // is good while its generation equals generation_ (or generation_ | kUnread, made by keepAll
@@ -298,7 +301,7 @@ class PairCandidates {
   long listsReadBefore_ = 0;  ///< listsRead_ at the last build: the last step's (keepsAllNext)
   /// The generation bit of a list keepAll made and pairsOf has not read yet (generation_ stays below it).
   static constexpr uint32_t kUnread = 1u << 31;
-  uint32_t generation_ = 0;
+  uint32_t generation_ = 0;  ///< the good lists' generation (see kept_); every index() advances it
 };
 
 }  // namespace fosssim

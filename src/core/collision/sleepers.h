@@ -152,10 +152,10 @@ class Sleepers {
   int sleeping() const { return sleeping_; }
 
  private:
-  bool enabled_ = true;
-  int threads_ = 1;
-  double h_ = 1;
-  int sleeping_ = 0;
+  bool enabled_ = true;          ///< sleeping on (setEnabled); off, nothing sleeps
+  int threads_ = 1;              ///< threads for the per-particle passes (setThreads)
+  double h_ = 1;                 ///< the step h, as begin() got it
+  int sleeping_ = 0;             ///< particles asleep now (sleeping())
   std::vector<char> mayRest_;    ///< N: may sleep in this scene (see the top of this file)
   std::vector<char> asleep_;     ///< N
   std::vector<int> still_;       ///< N: consecutive steps still

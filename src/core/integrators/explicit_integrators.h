@@ -17,7 +17,7 @@ class ExplicitEuler final : public Integrator {
   Status step(const Scene& scene, State& state, double dt, ForceContext& forces) override;
 
  private:
-  ExplicitForces forces_;
+  ExplicitForces forces_;  ///< the step's F/m (2N), its storage reused
 };
 
 class SymplecticEuler final : public Integrator {
@@ -26,7 +26,7 @@ class SymplecticEuler final : public Integrator {
   Status step(const Scene& scene, State& state, double dt, ForceContext& forces) override;
 
  private:
-  ExplicitForces forces_;
+  ExplicitForces forces_;  ///< the step's F/m (2N), its storage reused
 };
 
 }  // namespace fosssim

@@ -49,17 +49,18 @@ class ImplicitSystem {
   /// The sparse system of the solved particles (slot_, solved_).
   Status assembleSparse(const Scene& scene, double h);
 
+  /// The forces' -dF/dx and -dF/dv at (x, v), 2N x 2N, and the sparse system's entries.
   Triplets jacobianX_, jacobianV_, entries_;
-  bool dense_ = true;
+  bool dense_ = true;  ///< the last system was dense (nothing held, at most kMaxDenseDofs)
   /// For the sparse system: per particle its index among the solved particles (-1: fixed or
   /// held), the solved particles in order, and their right-hand side.
   std::vector<int> slot_, solved_;
   VecX solvedRhs_;
-  Eigen::MatrixXd denseMatrix_, denseDamping_;
-  Eigen::FullPivLU<Eigen::MatrixXd> denseLu_;
-  SparseMat matrix_;
-  Eigen::SparseLU<SparseMat> lu_;
-  VecX rhs_, delta_;
+  Eigen::MatrixXd denseMatrix_, denseDamping_;  ///< dense: the system matrix and the summed -dF/dv (2N x 2N)
+  Eigen::FullPivLU<Eigen::MatrixXd> denseLu_;   ///< dense: the factorisation of denseMatrix_
+  SparseMat matrix_;                            ///< sparse: the solved particles' system (2S x 2S, S solved particles)
+  Eigen::SparseLU<SparseMat> lu_;               ///< sparse: the factorisation of matrix_
+  VecX rhs_, delta_;                            ///< 2N: the right-hand side h F - M dvCurrent, and solve()'s delta
 };
 
 class ImplicitEuler final : public Integrator {
@@ -70,9 +71,10 @@ class ImplicitEuler final : public Integrator {
   void setCourseTolerances(bool course) override { course_ = course; }
 
  private:
-  ImplicitSystem system_;
+  ImplicitSystem system_;  ///< each Newton iteration's linear system
+  /// 2N: the step's position and velocity changes so far, and the trial point x + dx, v + dv.
   VecX dx_, dv_, xTrial_, vTrial_;
-  int iterations_ = 0;
+  int iterations_ = 0;  ///< Newton iterations of the last step (newtonIterations())
   bool course_ = true;  ///< kNewtonTolerance (absolute) or kNewtonRelativeTolerance
 };
 
@@ -83,8 +85,8 @@ class LinearizedImplicitEuler final : public Integrator {
   int newtonIterations() const override { return solved_ ? 1 : 0; }
 
  private:
-  ImplicitSystem system_;
-  VecX xTrial_, zero_;
+  ImplicitSystem system_;  ///< the step's one linear system
+  VecX xTrial_, zero_;   ///< 2N: x + h v, where the system is assembled, and a zero dvCurrent
   bool solved_ = false;  ///< the last step solved its system (not so for a scene without particles)
 };
 
