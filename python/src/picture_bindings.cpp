@@ -19,14 +19,7 @@
 #include <nanobind/stl/optional.h>
 #include <nanobind/stl/string.h>
 
-#include <cerrno>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <map>
-#include <unistd.h>
 
 namespace fosssim::py {
 namespace {
@@ -64,29 +57,6 @@ render::Image frame(const PySimulator& s, int width, int height) {
   check<SimulationError>(renderer(width, height).render(picture(s, width, height), image));
   return image;
 }
-/// A PNG for a device or a named pipe (written directly, nothing to rename): libpng's writer
-/// removes its file when a write fails, so it writes a temporary file, whose bytes are then copied.
-void writePngDirectly(const std::string& path, const render::Image& image) {
-  std::string temp = (std::filesystem::temp_directory_path() / "fosssim-png-XXXXXX").string();
-  const int fd = mkstemp(temp.data());
-  if (fd < 0) throw FileError("save_png: cannot make a temporary file for \"" + path + "\" (" + std::strerror(errno) + ")");
-  ::close(fd);
-  struct Remove {
-    const std::string& p;
-    ~Remove() { (void)std::remove(p.c_str()); }
-  } remove{temp};
-  check<FileError>(render::writePng(temp, image));
-  std::ifstream in(temp, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  std::FILE* f = std::fopen(path.c_str(), "wb");
-  if (!f) throw FileError("cannot write PNG file \"" + path + "\": " + std::strerror(errno));
-  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
-  const bool flushed = std::fflush(f) == 0;
-  const int err = errno;
-  const bool closed = std::fclose(f) == 0;
-  if (!written || !flushed || !closed)
-    throw FileError("cannot write PNG file \"" + path + "\": " + std::strerror(written && flushed ? errno : err));
-}
 #else
 [[noreturn]] void noRenderer() {
   throw SimulationError("this fosssim was built without its renderer (FOSSSIM_RENDER=OFF): no raster frames; "
@@ -118,11 +88,10 @@ void bindPictures(nb::module_& m) {
 #ifdef FOSSSIM_HAVE_RENDER
         StagedOutput out(path, "save_png", s.scene().file.path);
         const render::Image image = frame(s, width, height);
-        if (!out.staged()) return writePngDirectly(path, image);
-        // libpng removes the partial file when its write fails: the final name was never touched.
+        // A device or a named pipe is written directly (writeWholeFile never removes one).
         if (Status written = render::writePng(out.writePath(), image); !written) {
           out.discard();
-          throw FileError(written.message() + " (\"" + path + "\" was not written)");
+          throw FileError(written.message() + (out.staged() ? " (\"" + path + "\" was not written)" : ""));
         }
         out.commit();
 #else

@@ -85,12 +85,29 @@ void StagedFile::discard() {
   if (staged()) (void)std::remove(writePath_.c_str());
 }
 
+Status writeWholeFile(const std::string& path, std::string_view bytes, const char* kind) {
+  const auto failed = [&](int error) {
+    return Status::error(std::string("cannot write ") + kind + " file \"" + path + "\": " + std::strerror(error));
+  };
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) return failed(errno);
+  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
+  const bool flushed = std::fflush(f) == 0;
+  const int error = errno;
+  const bool closed = std::fclose(f) == 0;
+  if (written && flushed && closed) return Status::ok();
+  const int why = written && flushed ? errno : error;
+  struct stat st {};
+  if (stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) (void)std::remove(path.c_str());
+  return failed(why);
+}
+
 Status writeStaged(const std::string& path, const std::string& what,
                    const std::function<Status(const std::string&)>& write) {
   StagedFile out;
   if (Status s = StagedFile::prepare(path, what, out); !s) return s;
   if (Status s = write(out.writePath()); !s) {
-    out.discard();  // a file cut short is of no use (libpng removes its own; other writers may not)
+    out.discard();  // a file cut short is of no use (writeWholeFile removed it already)
     return out.staged() ? Status::error(s.message() + " (\"" + path + "\" was not written)") : s;
   }
   return out.commit();

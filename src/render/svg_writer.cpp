@@ -1,5 +1,7 @@
 #include "fosssim/render/svg_writer.h"
 
+#include "fosssim/io/staged_file.h"
+
 #include "fosssim/render/stroke_font.h"
 
 #include <algorithm>
@@ -191,19 +193,9 @@ std::string svgDocument(const Picture& pic) {
 }
 
 Status writeSvg(const std::string& path, const Picture& picture) {
-  const std::string text = svgDocument(picture);
-  std::FILE* f = std::fopen(path.c_str(), "wb");
-  if (!f) return Status::error("cannot write SVG file \"" + path + "\": " + std::strerror(errno));
-  const bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-  const bool closed = std::fclose(f) == 0;
-  if (!written || !closed) {
-    // A frame cut short (a full disk) is no picture and would pass for one among whole frames
-    // (-m said "frames 1 to 16" next to an empty frame 17): it is removed.
-    const int error = errno;
-    std::remove(path.c_str());
-    return Status::error("cannot write SVG file \"" + path + "\": " + std::strerror(error));
-  }
-  return Status::ok();
+  // A frame cut short (a full disk) is no picture and would pass for one among whole frames
+  // (-m said "frames 1 to 16" next to an empty frame 17): writeWholeFile removes it.
+  return io::writeWholeFile(path, svgDocument(picture), "SVG");
 }
 
 std::string svgFrameName(const std::string& dir, long number) {

@@ -7,12 +7,15 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
-#include <algorithm>
 
 namespace fosssim::io {
 namespace {
@@ -113,6 +116,20 @@ TEST_F(StagedWrite, AStalePartialFileOfAnEarlierCrashIsReplaced) {
               }).isOk());
   EXPECT_EQ(read(path), "new");
   EXPECT_EQ(entries(), "shot.png;");
+}
+
+TEST_F(StagedWrite, AWholeFileIsWrittenAndAFailedWriteToADeviceLeavesTheDevice) {
+  const std::string file = path("a.svg");
+  ASSERT_TRUE(writeWholeFile(file, "<svg/>", "SVG").isOk());
+  EXPECT_EQ(read(file), "<svg/>");
+  // A device that refuses every write, as /dev/full does (1, 7), made here so that nothing of the
+  // machine's is at stake if the writer removes it.
+  const std::string full = path("full");
+  if (mknod(full.c_str(), S_IFCHR | 0666, makedev(1, 7)) != 0) GTEST_SKIP() << "mknod is not allowed here";
+  const Status s = writeWholeFile(full, "<svg/>", "SVG");
+  ASSERT_FALSE(s.isOk());
+  EXPECT_EQ(s.message(), "cannot write SVG file \"" + full + "\": No space left on device");
+  EXPECT_TRUE(fs::is_character_file(full)) << "the writer removed the device it could not write";
 }
 
 }  // namespace

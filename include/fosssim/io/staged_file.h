@@ -11,6 +11,7 @@
 
 #include <functional>
 #include <string>
+#include <string_view>
 
 namespace fosssim::io {
 
@@ -62,6 +63,12 @@ class StagedFile {
   std::string renameTo_;   ///< the final path, a symbolic link resolved (the link keeps pointing at it)
   std::string writePath_;
 };
+
+/// Writes `bytes` to `path` (created or truncated), as "cannot write KIND file \"PATH\": why" when
+/// that fails. A regular file cut short (a full disk) is removed: it would pass for a whole one.
+/// Anything else (/dev/null, /dev/full, a named pipe) is only written to, never removed: libpng's
+/// own file writer removes its file whatever it is, which as root deletes a device node.
+Status writeWholeFile(const std::string& path, std::string_view bytes, const char* kind);
 
 /// Writes one whole file at once through `write` (given the path to write to) under the partial
 /// name, then gives it the final name: a reader never finds the file half written under its name
