@@ -64,7 +64,17 @@ bool isFrameName(const std::string& name, const std::string& ending) {
   return true;
 }
 
-/// The frames a run writes into `dir` may already exist there: none of them may be an input.
+/// A frame's partial name, "frame" + digits + ".partial" + ending: each frame is written there and
+/// renamed once whole (io::writeStaged), and a file left there (by a run killed mid-frame) is
+/// removed first.
+bool isFramePartialName(const std::string& name, const std::string& ending) {
+  const std::string partial = ".partial" + ending;
+  return name.size() > partial.size() && name.compare(name.size() - partial.size(), partial.size(), partial) == 0 &&
+         isFrameName(name.substr(0, name.size() - partial.size()) + ending, ending);
+}
+
+/// The frames a run writes into `dir`, and their partial names, may already exist there: none of
+/// them may be an input.
 Status checkFrames(const std::string& option, const std::string& dir, const std::string& ending,
                    const std::vector<Input>& inputs) {
   DIR* d = opendir(dir.empty() ? "." : dir.c_str());
@@ -72,8 +82,10 @@ Status checkFrames(const std::string& option, const std::string& dir, const std:
   Status result = Status::ok();
   while (const dirent* e = readdir(d)) {
     const std::string name = e->d_name;
-    if (!isFrameName(name, ending)) continue;
-    result = checkOne(option, (dir.empty() ? "" : dir + "/") + name, "the frame file ", inputs);
+    const bool frame = isFrameName(name, ending);
+    if (!frame && !isFramePartialName(name, ending)) continue;
+    result = checkOne(option, (dir.empty() ? "" : dir + "/") + name,
+                      frame ? "the frame file " : "the partial file of a frame (written there, then renamed) ", inputs);
     if (!result) break;
   }
   closedir(d);
@@ -128,10 +140,12 @@ bool samePlace(const std::string& a, const std::string& b) {
   return !e1 && !e2 && ca == cb;
 }
 
-/// True when `path` is one of the frames -m or -g writes into `dir` (ending ".svg" or ".png").
+/// True when `path` is one of the frames -m or -g writes into `dir` (ending ".svg" or ".png"), or
+/// a frame's partial name there.
 bool isFrameOf(const std::string& path, const std::string& dir, const std::string& ending) {
   const fs::path p(path);
-  if (!isFrameName(p.filename().string(), ending)) return false;
+  const std::string name = p.filename().string();
+  if (!isFrameName(name, ending) && !isFramePartialName(name, ending)) return false;
   std::error_code e1, e2;
   const fs::path parent = fs::weakly_canonical(p.parent_path().empty() ? fs::path(".") : p.parent_path(), e1);
   const fs::path frames = fs::weakly_canonical(dir.empty() ? fs::path(".") : fs::path(dir), e2);
@@ -157,9 +171,12 @@ Status checkOutputsAgainstEachOther(const Options& options) {
                              folder + "\"): give each output its own name");
     const bool svg = !options.svgDir.empty() && isFrameOf(w.path, options.svgDir, ".svg");
     const bool png = options.pngs && isFrameOf(w.path, options.pngDir, ".png");
-    if (svg || png)
-      return Status::error(describe(w, options) + " is a frame file that " + (svg ? "-m" : "-g") +
-                           " writes: give each output its own name");
+    if (svg || png) {
+      const bool partial = isFramePartialName(fs::path(w.path).filename().string(), svg ? ".svg" : ".png");
+      return Status::error(describe(w, options) + (partial ? " is the partial file of a frame, which " : " is a frame file that ") +
+                           (svg ? "-m" : "-g") + (partial ? " writes before renaming it" : " writes") +
+                           ": give each output its own name");
+    }
   }
   return Status::ok();
 }

@@ -12,6 +12,10 @@
 //   closed properly), and the final name is untouched: an older file of that name is left as it
 //   was. A process killed outright (SIGKILL, power loss) leaves only the partial file
 //   (io::StagedFile, which the Python module's writers share).
+// - Each frame of -m and -g is written under its partial name ("frame00001.partial.png") and
+//   renamed once whole (io::writeStaged): a viewer that takes frames as they appear never reads
+//   one half written. The partial names are checked against the inputs and the other outputs as
+//   the frames' own names are (a stale partial file is removed before a frame is written).
 // - Character devices (-o /dev/null) are written directly: there is nothing to rename. Named pipes,
 //   sockets and block devices are refused (a pipe without a reader would block the open forever).
 #pragma once

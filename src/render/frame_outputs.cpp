@@ -1,5 +1,6 @@
 #include "fosssim/render/frame_outputs.h"
 
+#include "fosssim/io/staged_file.h"
 #include "fosssim/render/svg_writer.h"
 
 #include <algorithm>
@@ -54,7 +55,12 @@ Status SvgFrames::open(const std::string& dir, std::unique_ptr<SvgFrames>& out) 
   return Status::ok();
 }
 
-Status SvgFrames::frame(const Picture& picture, long number) { return writeSvg(svgFrameName(dir_, number), picture); }
+// Under the frame's partial name, then renamed: a viewer or script that takes each frame as it
+// appears never reads one half written, and a frame that fails (a full disk) leaves an earlier
+// run's frame of that number as it was.
+Status SvgFrames::frame(const Picture& picture, long number) {
+  return io::writeStaged(svgFrameName(dir_, number), "SVG frame", [&](const std::string& to) { return writeSvg(to, picture); });
+}
 
 Status FrameOutputs::start(const SceneFile& file, const State& initial) {
   sequence_.start(file, initial);

@@ -1,5 +1,6 @@
 #include "fosssim/render/raster_frames.h"
 
+#include "fosssim/io/staged_file.h"
 #include "fosssim/render/png_writer.h"
 
 #include <algorithm>
@@ -39,8 +40,11 @@ bool RasterFrames::wants(long number) const { return !settings_.pngDir.empty() |
 Status RasterFrames::frame(const Picture& picture, long number) {
   if (!wants(number)) return Status::ok();
   if (Status s = renderer_->render(picture, image_); !s) return s;
-  if (!settings_.pngDir.empty())
-    if (Status s = writePng(pngFrameName(settings_.pngDir, number), image_); !s) return s;
+  if (!settings_.pngDir.empty()) {
+    // Staged as -m's SVG frames are (SvgFrames::frame).
+    const auto write = [&](const std::string& to) { return writePng(to, image_); };
+    if (Status s = io::writeStaged(pngFrameName(settings_.pngDir, number), "PNG frame", write); !s) return s;
+  }
   if (inMovie(number))
     if (Status s = movie_->write(image_); !s) return s;
   return Status::ok();

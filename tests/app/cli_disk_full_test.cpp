@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace fosssim::testing {
 namespace {
@@ -64,6 +66,39 @@ TEST_F(CliDiskFull, NoSvgFrameIsLeftCutShort) {
   EXPECT_TRUE(contains(o.err, "cannot write SVG file")) << o;
   EXPECT_TRUE(contains(o.err, "no frame was written")) << o;
   for (const auto& entry : fs::directory_iterator(path("svg"))) ADD_FAILURE() << "left behind: " << entry.path();
+}
+
+// Frames are written under their partial names and renamed once whole: a frame that fails leaves
+// the earlier run's frame of that number as it was, where a direct write truncated it and then
+// removed what it had cut short.
+TEST_F(CliDiskFull, AFailedFrameLeavesAnEarlierRunsFrameAsItWas) {
+  const std::string small = path("small.xml");
+  fs::rename(scene(1, 3), small);
+  struct Frames {
+    std::vector<std::string> options;
+    std::string first;  // frame 1's name
+  };
+  std::vector<Frames> kinds = {{{"-m", path("svg")}, path("svg/frame00000000000000000001.svg")}};
+  if (FOSSSIM_WITH_RENDER)  // 512 x 512 PNGs of 60 disks are larger than the cap; one disk's is not
+    kinds.push_back({{"-g", "1", "--png-dir", path("png"), "--frame-size", "512x512"}, path("png/frame00001.png")});
+  for (const Frames& kind : kinds) {
+    SCOPED_TRACE(kind.first);
+    auto run = [&](const std::string& scenePath) {
+      std::vector<std::string> args = {"-s", scenePath, "-d", "0", "-q"};
+      args.insert(args.end(), kind.options.begin(), kind.options.end());
+      return args;
+    };
+    const Outcome earlier = runFosssim(run(small), capped(65536));
+    ASSERT_TRUE(exitedWith(earlier, 0)) << earlier;
+    const std::string before = slurp(kind.first);
+    ASSERT_FALSE(before.empty());
+    const Outcome o = runFosssim(run(scene(60, 3)), capped(4096));
+    EXPECT_TRUE(exitedWith(o, 1)) << o;
+    EXPECT_TRUE(contains(o.err, "was not written")) << o;
+    EXPECT_EQ(slurp(kind.first), before) << "the earlier run's frame 1 was changed";
+    for (const auto& entry : fs::directory_iterator(fs::path(kind.first).parent_path()))
+      EXPECT_FALSE(contains(entry.path().filename().string(), "partial")) << "left behind: " << entry.path();
+  }
 }
 
 TEST_F(CliDiskFull, AMovieThatCannotBeFinishedKeepsItsPartialName) {

@@ -76,6 +76,14 @@ TEST_F(CliOutputs, AnOutputThatIsTheSceneIsRefused) {
   fs::create_directories(path("png"));
   fs::create_hard_link(scene, path("png/frame00002.png"));
   expectRefused(with({"-g", "1", "--png-dir", path("png")}), scene, "the frame file");
+  // A frame's partial name: each frame is written there and renamed, and a file left there is
+  // removed first (the scene itself, had it that name).
+  fs::create_directories(path("svg2"));
+  fs::create_hard_link(scene, path("svg2/frame00000000000000000004.partial.svg"));
+  expectRefused(with({"-m", path("svg2")}), scene, "the partial file of a frame");
+  fs::create_directories(path("png2"));
+  fs::create_symlink(scene, path("png2/frame00001.partial.png"));
+  expectRefused(with({"-g", "1", "--png-dir", path("png2")}), scene, "the partial file of a frame");
 }
 
 // --stats is an output like the others: never an input, and never a file another output writes
@@ -119,6 +127,10 @@ TEST_F(CliOutputs, StatsIsNeitherAnInputNorAnotherOutput) {
   const std::string frame = path("svg/frame00000000000000000002.svg");
   expectClash({"-m", path("svg"), "--stats", frame}, {"--stats \"" + frame + "\" is a frame file that -m writes"},
               {frame});
+  const std::string framePartial = path("svg/frame00000000000000000002.partial.svg");
+  expectClash({"-m", path("svg"), "--stats", framePartial},
+              {"--stats \"" + framePartial + "\" is the partial file of a frame, which -m writes before renaming it"},
+              {framePartial});
   // -m's folder under an output's name (or its partial name): the folder was made, then the
   // output's open failed on it.
   expectClash({"-o", o1, "-m", o1}, {"-o \"" + o1 + "\" is the folder that -m writes its frames into"}, {o1, o1Partial});
