@@ -13,7 +13,9 @@ void defineOptions(CLI::App& app, Options& o) {
       ->option_text("N,N,...")
       ->delimiter(',')
       ->check(cli::integerIn(1, 10000000));
-  app.add_option("--scenes", o.scenes, "scenes, comma-separated, of " + cli::listed(allKinds()) + " (default " + cli::listed(sceneKinds()) + ")")
+  app.add_option(
+         "--scenes", o.scenes,
+         "scenes, comma-separated, of " + cli::listed(allKinds()) + " (default " + cli::listed(sceneKinds()) + ")")
       ->option_text("NAME,...")
       ->delimiter(',')
       ->check(cli::oneOf("scene", allKinds()));
@@ -23,8 +25,9 @@ void defineOptions(CLI::App& app, Options& o) {
       ->check(cli::oneOf("collision type", collisionTypes()));
   std::vector<std::string> integrators;
   for (const IntegratorEntry& entry : integratorTable()) integrators.push_back(entry.keyword);
-  app.add_option("--integrator", o.integrator,
-                 "integrator of every scene, one of " + cli::listed(integrators) + " (default: the scenes' symplectic-euler)")
+  app.add_option(
+         "--integrator", o.integrator,
+         "integrator of every scene, one of " + cli::listed(integrators) + " (default: the scenes' symplectic-euler)")
       ->option_text("NAME")
       ->check(cli::oneOf("integrator", integrators));
   app.add_option("--steps", o.steps, "steps per run, 1 to 10^9 (default: each scene's own length)")
@@ -34,7 +37,9 @@ void defineOptions(CLI::App& app, Options& o) {
                  "timed runs per scene and size, 1 to 1000 (default 3 below 10^5 particles, 1 from there)")
       ->option_text("R")
       ->check(cli::integerIn(1, 1000));
-  app.add_option("--threads", o.threads, "threads for the per-particle phases (forces, integration, broad phase, detection, sleeping), 1 to 1024 (default 1)")
+  app.add_option("--threads", o.threads,
+                 "threads for the per-particle phases (forces, integration, broad phase, detection, sleeping), 1 to "
+                 "1024 (default 1)")
       ->option_text("T")
       ->check(cli::integerIn(1, 1024));
   app.add_option("--seed", o.seed, "seed of the scenes' jitter and random velocities, 0 to 2^31 - 1 (default 1)")

@@ -217,8 +217,8 @@ void pileRest(Builder& b, int n, Setup& setup) {
 }  // namespace
 
 const std::vector<std::string>& pileKinds() {
-  static const std::vector<std::string> kinds = {"pile-low-cor0", "pile-low-cor0.5", "pile-high-cor0", "pile-high-cor0.5",
-                                                 "pile-rest"};
+  static const std::vector<std::string> kinds = {"pile-low-cor0", "pile-low-cor0.5", "pile-high-cor0",
+                                                 "pile-high-cor0.5", "pile-rest"};
   return kinds;
 }
 

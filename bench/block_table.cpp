@@ -95,7 +95,9 @@ bool appendBlocksCsv(const std::string& path, const RunLabel& run, const Block* 
   const bool fresh = stat(path.c_str(), &info) != 0 || info.st_size == 0;
   std::ofstream csv(path, std::ios::app);
   if (!csv) return false;
-  if (fresh) csv << "engine,scene,n,seed,first_step,last_step,ms_per_step,failsafe_ms_per_step,zone_share,rest_share,awake_share,touching_pairs\n";
+  if (fresh)
+    csv << "engine,scene,n,seed,first_step,last_step,ms_per_step,failsafe_ms_per_step,zone_share,rest_share,"
+           "awake_share,touching_pairs\n";
   // Figures an engine does not have stay empty.
   const auto optional = [](auto x) { return x < 0 ? std::string() : std::to_string(x); };
   for (int b = 0; b < count; ++b) {

@@ -120,7 +120,8 @@ RunResult run(const BenchScene& s, long steps, double timeLimit = 0) {
   for (long k = 0; k < steps; ++k) {
     world->Step(dt, kVelocityIterations, kPositionIterations);
     if ((k + 1) % kBlockSteps == 0 || k + 1 == steps) {
-      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - blockStart).count();
+      const double ms =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - blockStart).count();
       out.totalMs += ms;
       // Untimed: the velocities for the share at rest, and who is awake.
       Block b;
@@ -200,10 +201,11 @@ int main(int argc, char** argv) {
 
   // The library's b2_version says 2.4.0 in the 2.4.1 release: print the package's version too.
   const std::string engine = std::string("Box2D ") + FOSSSIM_BOX2D_VERSION;
-  std::printf("%s (b2_version %d.%d.%d): FOSSSim's scenes (same starts, seed %u), %d velocity / %d position iterations, "
-              "friction 0, restitution = the scene's COR, sleeping on, one thread; best of %d run%s\n",
-              engine.c_str(), b2_version.major, b2_version.minor, b2_version.revision, seed, kVelocityIterations,
-              kPositionIterations, repeats, repeats == 1 ? "" : "s");
+  std::printf(
+      "%s (b2_version %d.%d.%d): FOSSSim's scenes (same starts, seed %u), %d velocity / %d position iterations, "
+      "friction 0, restitution = the scene's COR, sleeping on, one thread; best of %d run%s\n",
+      engine.c_str(), b2_version.major, b2_version.minor, b2_version.revision, seed, kVelocityIterations,
+      kPositionIterations, repeats, repeats == 1 ? "" : "s");
   for (const std::string& kind : scenes)
     for (int n : sizes) {
       BenchScene s;
@@ -220,10 +222,11 @@ int main(int argc, char** argv) {
         if (r == 0 || trial.totalMs / static_cast<double>(trial.steps) < best.totalMs / static_cast<double>(best.steps))
           best = trial;
       }
-      std::printf("%s N=%-6d %ld steps of %g s: %8.3f ms/step; awake at the end %d of %d; centre of mass height %.3f m "
-                  "(start %.3f m); contacts %d (%d touching)\n",
-                  kind.c_str(), s.scene.numParticles(), best.steps, s.scene.dt, best.totalMs / static_cast<double>(best.steps),
-                  best.awake, s.scene.numParticles(), best.comY, startY, best.contacts, best.touching);
+      std::printf(
+          "%s N=%-6d %ld steps of %g s: %8.3f ms/step; awake at the end %d of %d; centre of mass height %.3f m "
+          "(start %.3f m); contacts %d (%d touching)\n",
+          kind.c_str(), s.scene.numParticles(), best.steps, s.scene.dt, best.totalMs / static_cast<double>(best.steps),
+          best.awake, s.scene.numParticles(), best.comY, startY, best.contacts, best.touching);
       if (best.steps < length) std::printf("  (stopped at --time-limit %g s after %ld steps)\n", timeLimit, best.steps);
       const fosssim::bench::RunLabel label = fosssim::bench::runLabel(engine, s, seed);
       const int count = static_cast<int>(std::min<size_t>(best.blocks.size(), fosssim::bench::kMaxBlocks));

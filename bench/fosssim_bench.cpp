@@ -1,7 +1,8 @@
 // fosssim-bench: milliseconds per step by phase on the scalable scenes (bench_scenes.h), and
 // narrow-phase queries per second, on one core. Prints a table; --csv also writes the figures.
 //
-//   fosssim-bench [--sizes 1000,10000,100000] [--scenes rain,gas,chains,bullets] [--collision hybrid] [--integrator NAME]
+//   fosssim-bench [--sizes 1000,10000,100000] [--scenes rain,gas,chains,bullets] [--collision hybrid]
+//                 [--integrator NAME]
 //                 [--steps K] [--repeats R] [--all-pairs] [--compat] [--threads T] [--csv FILE] [--no-queries]
 //                 [--no-steps] [--alternatives] [--seed S] [--blocks] [--blocks-csv FILE]
 //                                                    (fosssim-bench -h says what each does)
@@ -193,7 +194,8 @@ Figures runScene(const Options& o, const std::string& kind, int n) {
     if (!run(f.steps, trial)) return f;
     if (r == 0) growth = residentBytes() - early;
     // Per step: runs stopped at --time-limit may differ in length.
-    if (r == 0 || trial.total / static_cast<double>(trial.steps) < best.total / static_cast<double>(best.steps)) best = trial;
+    if (r == 0 || trial.total / static_cast<double>(trial.steps) < best.total / static_cast<double>(best.steps))
+      best = trial;
   }
   best.particles = f.particles;
   best.edges = f.edges;
@@ -253,18 +255,20 @@ int main(int argc, char** argv) {
       return 1;
     }
     csv << "section,scene,n,particles,edges,steps,integrate_ms,broad_ms,narrow_ms,response_ms,failsafe_ms,other_ms,"
-           "total_ms,candidates_per_step,queries_per_step,collisions_per_step,passes_per_step,failsafe_steps,rounds_per_failsafe,"
+           "total_ms,candidates_per_step,queries_per_step,collisions_per_step,passes_per_step,failsafe_steps,"
+           "rounds_per_failsafe,"
            "largest_zone,bytes_per_particle,rss_growth_bytes,threads,queries_per_second,hit_rate\n";
   }
   printMachine();
   if (o.stepTable) {
     std::printf("ms per step by phase (%s handling%s%s, %d thread%s%s%s%s%s, seed %u; fastest of the repeated runs)\n",
-                o.collision.c_str(), o.integrator.empty() ? "" : ", ", o.integrator.c_str(), o.threads, o.threads == 1 ? "" : "s", o.allPairs ? ", all pairs" : "",
-                o.compat ? ", --compat" : "", o.noSleep && !o.compat ? ", no sleeping" : "",
-                o.noHold && !o.compat ? ", no holding" : "", o.seed);
-    std::printf("%-16s %7s %6s %9s %7s %7s %7s %7s %8s %8s | %9s %9s %6s %5s %6s %6s %6s %5s %5s %5s %7s %6s %8s\n", "scene", "N",
-                "steps", "integrate", "broad", "narrow", "respond", "failsafe", "other", "total", "cand/step",
-                "coll/step", "passes", "fs%", "rounds", "zone", "inzn%", "rgd%", "jam%", "held%", "B/part", "grow/p", "gs/step");
+                o.collision.c_str(), o.integrator.empty() ? "" : ", ", o.integrator.c_str(), o.threads,
+                o.threads == 1 ? "" : "s", o.allPairs ? ", all pairs" : "", o.compat ? ", --compat" : "",
+                o.noSleep && !o.compat ? ", no sleeping" : "", o.noHold && !o.compat ? ", no holding" : "", o.seed);
+    std::printf("%-16s %7s %6s %9s %7s %7s %7s %7s %8s %8s | %9s %9s %6s %5s %6s %6s %6s %5s %5s %5s %7s %6s %8s\n",
+                "scene", "N", "steps", "integrate", "broad", "narrow", "respond", "failsafe", "other", "total",
+                "cand/step", "coll/step", "passes", "fs%", "rounds", "zone", "inzn%", "rgd%", "jam%", "held%", "B/part",
+                "grow/p", "gs/step");
     for (const std::string& kind : o.scenes) {
       for (int n : o.sizes) {
         const Figures f = inChild(o, kind, n);
@@ -275,15 +279,16 @@ int main(int argc, char** argv) {
         const double per = 1000.0 / static_cast<double>(f.steps);
         const double other = f.total - f.integrate - f.broad - f.narrow - f.response - f.failsafe;
         const double steps = static_cast<double>(f.steps);
-        std::printf("%-16s %7d %6ld %9.3f %7.3f %7.3f %7.3f %8.3f %8.3f %8.3f | %9.0f %9.1f %6.2f %5.1f %6.1f %6d %6.1f "
-                    "%5.1f %5.2f %5.1f %7.0f %6.1f %8.0f\n",
-                    kind.c_str(), f.particles, f.steps, f.integrate * per, f.broad * per, f.narrow * per,
-                    f.response * per, f.failsafe * per, other * per, f.total * per, f.candidates / steps,
-                    f.collisions / steps, f.passes / steps, 100.0 * static_cast<double>(f.failsafeSteps) / steps,
-                    f.failsafeSteps ? f.rounds / static_cast<double>(f.failsafeSteps) : 0.0, f.largestZone,
-                    100.0 * f.zoneParticles / (steps * f.particles), 100.0 * static_cast<double>(f.rigidSteps) / steps,
-                    100.0 * f.jammedParticles / (steps * f.particles), 100.0 * f.heldParticles / (steps * f.particles),
-                    f.bytesPerParticle, f.growthBytes / f.particles, f.zoneUpdates / steps);
+        std::printf(
+            "%-16s %7d %6ld %9.3f %7.3f %7.3f %7.3f %8.3f %8.3f %8.3f | %9.0f %9.1f %6.2f %5.1f %6.1f %6d %6.1f "
+            "%5.1f %5.2f %5.1f %7.0f %6.1f %8.0f\n",
+            kind.c_str(), f.particles, f.steps, f.integrate * per, f.broad * per, f.narrow * per, f.response * per,
+            f.failsafe * per, other * per, f.total * per, f.candidates / steps, f.collisions / steps, f.passes / steps,
+            100.0 * static_cast<double>(f.failsafeSteps) / steps,
+            f.failsafeSteps ? f.rounds / static_cast<double>(f.failsafeSteps) : 0.0, f.largestZone,
+            100.0 * f.zoneParticles / (steps * f.particles), 100.0 * static_cast<double>(f.rigidSteps) / steps,
+            100.0 * f.jammedParticles / (steps * f.particles), 100.0 * f.heldParticles / (steps * f.particles),
+            f.bytesPerParticle, f.growthBytes / f.particles, f.zoneUpdates / steps);
         if (f.stopped) std::printf("  (stopped at --time-limit %g s after %ld steps)\n", o.timeLimit, f.steps);
         std::fflush(stdout);
         if (f.steps >= 1000 || f.stopped || o.blocks || !o.blocksCsv.empty()) {
@@ -299,8 +304,8 @@ int main(int argc, char** argv) {
               << f.integrate * per << "," << f.broad * per << "," << f.narrow * per << "," << f.response * per << ","
               << f.failsafe * per << "," << other * per << "," << f.total * per << "," << f.candidates / steps << ","
               << f.queries / steps << "," << f.collisions / steps << "," << f.passes / steps << "," << f.failsafeSteps
-              << "," << (f.failsafeSteps ? f.rounds / static_cast<double>(f.failsafeSteps) : 0.0) << "," << f.largestZone << ","
-              << f.bytesPerParticle << "," << f.growthBytes << "," << o.threads << ",,\n";
+              << "," << (f.failsafeSteps ? f.rounds / static_cast<double>(f.failsafeSteps) : 0.0) << ","
+              << f.largestZone << "," << f.bytesPerParticle << "," << f.growthBytes << "," << o.threads << ",,\n";
         }
       }
     }
@@ -310,18 +315,21 @@ int main(int argc, char** argv) {
     for (const QueryRate& q : measureQueryRates()) {
       std::printf("  %-62s %7.2f M/s  %6.1f ns  (hits %4.1f%%)\n", q.name.c_str(), q.perSecond / 1e6, 1e9 / q.perSecond,
                   100.0 * q.hitRate);
-      if (csv) csv << "queries," << q.name << ",,,,,,,,,,,,,,,,,,,,,," << o.threads << "," << q.perSecond << "," << q.hitRate << "\n";
+      if (csv)
+        csv << "queries," << q.name << ",,,,,,,,,,,,,,,,,,,,,," << o.threads << "," << q.perSecond << "," << q.hitRate
+            << "\n";
     }
   }
   if (o.alternatives) {
     std::printf("\nbroad-phase designs: ordered candidates of every row from one step's swept boxes (best of 3)\n");
-    std::printf("%-8s %7s %-5s %9s %9s %9s %10s\n", "scene", "N", "method", "build ms", "query ms", "total ms", "pairs");
+    std::printf("%-8s %7s %-5s %9s %9s %9s %10s\n", "scene", "N", "method", "build ms", "query ms", "total ms",
+                "pairs");
     std::vector<std::string> scenes;
     for (const std::string& s : o.scenes)
       if (s != "chains") scenes.push_back(s);  // particle boxes only: chains are mostly edges
     for (const BroadPhaseTiming& t : compareBroadPhases(scenes, o.sizes, 3)) {
-      std::printf("%-8s %7d %-5s %9.3f %9.3f %9.3f %10ld\n", t.scene.c_str(), t.n, t.method.c_str(), t.buildMs, t.queryMs,
-                  t.buildMs + t.queryMs, t.pairs);
+      std::printf("%-8s %7d %-5s %9.3f %9.3f %9.3f %10ld\n", t.scene.c_str(), t.n, t.method.c_str(), t.buildMs,
+                  t.queryMs, t.buildMs + t.queryMs, t.pairs);
       std::fflush(stdout);
       if (csv)
         csv << "broadphase," << t.scene << "," << t.n << ",,,,,,,,,,," << t.pairs << ",,,,,,,,,," << t.method << ","

@@ -130,9 +130,11 @@ Workload nearPairs(PairKind kind, int count) {
 
 std::vector<QueryRate> measureQueryRates() {
   std::vector<QueryRate> rates;
-  rates.push_back(rate("PP candidates, rain pile N=10^4 (step 300)", fromScene("rain", 10000, 300, PairKind::ParticleParticle)));
+  rates.push_back(
+      rate("PP candidates, rain pile N=10^4 (step 300)", fromScene("rain", 10000, 300, PairKind::ParticleParticle)));
   rates.push_back(rate("PP near pairs (within 1.5 reach)", nearPairs(PairKind::ParticleParticle, 4096)));
-  rates.push_back(rate("PE candidates, chains N=10^4 (step 250)", fromScene("chains", 10000, 250, PairKind::ParticleEdge)));
+  rates.push_back(
+      rate("PE candidates, chains N=10^4 (step 250)", fromScene("chains", 10000, 250, PairKind::ParticleEdge)));
   rates.push_back(rate("PE near pairs (within 1.5 reach of the edge)", nearPairs(PairKind::ParticleEdge, 4096)));
   return rates;
 }

@@ -121,8 +121,10 @@ void restWith(const std::string& text, const fosssim::CollisionEntry& entry) {
     if (compared) {
       const fosssim::Status t = awake->step(file.scene, b);
       // A failed step's state is not compared (it may hold what made it fail: NaN != NaN).
-      const bool same = s.isOk() && t.isOk() ? a.x == b.x && a.v == b.v : s.isOk() == t.isOk() && s.message() == t.message();
-      if (!same) broken(std::string("a run in which nothing sleeps is the same with sleeping off (") + entry.keyword + ")");
+      const bool same =
+          s.isOk() && t.isOk() ? a.x == b.x && a.v == b.v : s.isOk() == t.isOk() && s.message() == t.message();
+      if (!same)
+        broken(std::string("a run in which nothing sleeps is the same with sleeping off (") + entry.keyword + ")");
     }
     if (!stepped(s, a, entry, "default mode, long run")) return;
   }

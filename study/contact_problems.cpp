@@ -119,7 +119,8 @@ ContactResult runContactProblem(const ContactProblem& problem, ContactMode mode,
     r.escaped += escapedHere;
     r.shotsEscaped += escapedHere > 0;
     if (problem.isolated) {
-      r.momentumDrift = (momentum(scene, state.v) - momentum(scene, initial.v)).norm() / momentumScale(scene, initial.v);
+      r.momentumDrift =
+          (momentum(scene, state.v) - momentum(scene, initial.v)).norm() / momentumScale(scene, initial.v);
       ContactSample l0, l1;
       measure(scene, initial, l0);
       measure(scene, state, l1);
@@ -166,13 +167,44 @@ Status runContacts(const StudyOptions& options) {
                               "max_overlap", "escaped", "height"});
       !s)
     return s;
-  if (Status s = summary.open(options.outDir + "/contacts_summary.csv",
-                              {"problem", "title", "mode", "collision", "shots", "particles", "dt", "steps", "outcome",
-                               "energy_gain", "energy_end", "momentum_drift", "angular_drift", "escaped", "escapable",
-                               "shots_escaped", "speed_ratio", "speed_label", "others_speed", "stopped_time", "stopped", "frozen",
-                               "zone_fraction_mean", "zone_fraction_max", "failsafe_steps", "rigid_zone_steps",
-                               "height_start", "height_end", "height_frozen", "height_packed", "packing_end", "max_overlap",
-                               "contacts", "wall_s", "stopped_energy", "stopped_share", "loosest_rest", "message"});
+  if (Status s = summary.open(options.outDir + "/contacts_summary.csv", {"problem",
+                                                                         "title",
+                                                                         "mode",
+                                                                         "collision",
+                                                                         "shots",
+                                                                         "particles",
+                                                                         "dt",
+                                                                         "steps",
+                                                                         "outcome",
+                                                                         "energy_gain",
+                                                                         "energy_end",
+                                                                         "momentum_drift",
+                                                                         "angular_drift",
+                                                                         "escaped",
+                                                                         "escapable",
+                                                                         "shots_escaped",
+                                                                         "speed_ratio",
+                                                                         "speed_label",
+                                                                         "others_speed",
+                                                                         "stopped_time",
+                                                                         "stopped",
+                                                                         "frozen",
+                                                                         "zone_fraction_mean",
+                                                                         "zone_fraction_max",
+                                                                         "failsafe_steps",
+                                                                         "rigid_zone_steps",
+                                                                         "height_start",
+                                                                         "height_end",
+                                                                         "height_frozen",
+                                                                         "height_packed",
+                                                                         "packing_end",
+                                                                         "max_overlap",
+                                                                         "contacts",
+                                                                         "wall_s",
+                                                                         "stopped_energy",
+                                                                         "stopped_share",
+                                                                         "loosest_rest",
+                                                                         "message"});
       !s)
     return s;
   for (const ContactProblem& p : contactProblems(options.quick)) {

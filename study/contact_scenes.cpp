@@ -306,7 +306,8 @@ class PileJudge final : public ContactJudge {
     for (int row = 0; placed < n; ++row) {
       const double y = apex + row * rise, half = y - apex;  // centres' room: |x| <= y - r√2
       const double shift = row % 2 ? kPileR : 0;  // sites at shift + 2 r j
-      for (int j = -static_cast<int>(std::ceil(half / (2 * kPileR))) - 1; placed < n && 2 * kPileR * j + shift <= half; ++j)
+      for (int j = -static_cast<int>(std::ceil(half / (2 * kPileR))) - 1; placed < n && 2 * kPileR * j + shift <= half;
+           ++j)
         if (std::abs(2 * kPileR * j + shift) <= half) sum += y, ++placed;
     }
     return sum / n;

@@ -22,13 +22,34 @@ double meanHeight(const State& s) {
 
 Status runHybridCost(const StudyOptions& options) {
   CsvWriter csv;
-  if (Status s = csv.open(options.outDir + "/hybrid.csv",
-                          {"method", "collision", "maxiters", "particles", "dt", "steps", "outcome", "wall_per_sim_s",
-                           "us_per_step", "integrate_us", "narrow_us", "response_us", "failsafe_us",
-                           "failsafe_steps", "failsafe_fraction", "mean_zones", "largest_zone", "mean_failsafe_particles",
-                           "most_failsafe_particles", "mean_passes",
-                           "collisions_per_step", "overlap_steps", "max_overlap", "kinetic_end", "mean_height_start",
-                           "mean_height_end", "cor", "message"});
+  if (Status s = csv.open(options.outDir + "/hybrid.csv", {"method",
+                                                           "collision",
+                                                           "maxiters",
+                                                           "particles",
+                                                           "dt",
+                                                           "steps",
+                                                           "outcome",
+                                                           "wall_per_sim_s",
+                                                           "us_per_step",
+                                                           "integrate_us",
+                                                           "narrow_us",
+                                                           "response_us",
+                                                           "failsafe_us",
+                                                           "failsafe_steps",
+                                                           "failsafe_fraction",
+                                                           "mean_zones",
+                                                           "largest_zone",
+                                                           "mean_failsafe_particles",
+                                                           "most_failsafe_particles",
+                                                           "mean_passes",
+                                                           "collisions_per_step",
+                                                           "overlap_steps",
+                                                           "max_overlap",
+                                                           "kinetic_end",
+                                                           "mean_height_start",
+                                                           "mean_height_end",
+                                                           "cor",
+                                                           "message"});
       !s)
     return s;
   const double dt = 0.002, cor = 0.5;
@@ -67,10 +88,10 @@ Status runHybridCost(const StudyOptions& options) {
         << (r.zoneSum > 0 ? static_cast<double>(r.zoneSum) / r.failsafeSteps : kNotApplicable)
         << (r.largestZone > 0 ? static_cast<double>(r.largestZone) : kNotApplicable)
         << (r.failsafeSteps ? static_cast<double>(r.failsafeParticles) / r.failsafeSteps : kNotApplicable)
-        << static_cast<long>(r.mostFailsafeParticles) << (hybrid && r.impulsePasses > 0 ? r.impulsePasses / steps : kNotApplicable)
-        << r.collisions / steps << r.overlap.stepsWithOverlap << r.overlap.deepest
-        << kineticEnergy(file.scene, r.final.v) << meanHeight(file.initial) << meanHeight(r.final)
-        << file.scene.collision.cor << r.message;
+        << static_cast<long>(r.mostFailsafeParticles)
+        << (hybrid && r.impulsePasses > 0 ? r.impulsePasses / steps : kNotApplicable) << r.collisions / steps
+        << r.overlap.stepsWithOverlap << r.overlap.deepest << kineticEnergy(file.scene, r.final.v)
+        << meanHeight(file.initial) << meanHeight(r.final) << file.scene.collision.cor << r.message;
     if (Status s = csv.endRow(); !s) return s;
     if (options.log) *options.log << "." << std::flush;
   }

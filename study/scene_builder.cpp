@@ -69,7 +69,8 @@ Status SceneBuilder::build(const std::string& name, SceneFile& out) const {
     if (!particleOk(p.i) || !particleOk(p.j))
       return fail("a gravitational force names a particle that does not exist");
   for (const Spring& s : springs_)
-    if (s.edge < 0 || s.edge >= static_cast<int>(edges_.size())) return fail("a spring names an edge that does not exist");
+    if (s.edge < 0 || s.edge >= static_cast<int>(edges_.size()))
+      return fail("a spring names an edge that does not exist");
 
   out = SceneFile{};
   out.path = name;

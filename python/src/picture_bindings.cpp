@@ -99,8 +99,9 @@ void bindPictures(nb::module_& m) {
         noRenderer();
 #endif
       }, nb::arg("path"), nb::arg("width") = 512, nb::arg("height") = 512);
-  cls.def("svg", [](const PySimulator& s, int width, int height) { return render::svgDocument(picture(s, width, height)); },
-          nb::arg("width") = 512, nb::arg("height") = 512, "The current state as an SVG document.");
+  cls.def(
+      "svg", [](const PySimulator& s, int width, int height) { return render::svgDocument(picture(s, width, height)); },
+      nb::arg("width") = 512, nb::arg("height") = 512, "The current state as an SVG document.");
   cls.def("save_svg", [](const PySimulator& s, const std::string& path, int width, int height) {
         StagedOutput out(path, "save_svg", s.scene().file.path);
         const render::Picture p = picture(s, width, height);
@@ -116,7 +117,8 @@ void bindPictures(nb::module_& m) {
         checkArgument(every >= 1, "every must be >= 1, got " + std::to_string(every));
         checkArgument(fps >= render::kMinMovieFps && fps <= render::kMaxMovieFps,
                       "fps must be from " + formatNumber(render::kMinMovieFps) + " to " +
-                          formatNumber(render::kMaxMovieFps) + " (frames a second, as --fps), got " + formatNumber(fps));
+                          formatNumber(render::kMaxMovieFps) + " (frames a second, as --fps), got " +
+                          formatNumber(fps));
         if (steps) checkSteps(*steps);
         checkSize(width, height);
 #ifdef FOSSSIM_HAVE_RENDER

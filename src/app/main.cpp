@@ -115,7 +115,8 @@ int main(int argc, char** argv) {
   try {
     return fosssim::app::run(argc, argv);
   } catch (const std::bad_alloc&) {
-    std::fprintf(stderr, "FOSSSim: error: out of memory (an allocation failed); try a smaller scene or fewer outputs\n");
+    std::fprintf(stderr,
+                 "FOSSSim: error: out of memory (an allocation failed); try a smaller scene or fewer outputs\n");
     return 1;
   }
 }

@@ -17,8 +17,8 @@ Status addPictureOutputs(const Options& options, const SceneFile&, ObserverList&
   if (Status s = render::SvgFrames::open(options.svgDir, svg); !s) return Status::error("-m: " + s.message());
   outputs.add(std::move(svg));
   // The summary names where the frames went, as the renderer's build does.
-  observers.items.push_back(
-      std::make_unique<PictureOutputs>(std::move(outputs), std::vector<std::string>{"SVG in \"" + options.svgDir + "\""}));
+  observers.items.push_back(std::make_unique<PictureOutputs>(
+      std::move(outputs), std::vector<std::string>{"SVG in \"" + options.svgDir + "\""}));
   return Status::ok();
 }
 

@@ -117,7 +117,8 @@ std::string optionTakenAsValue(const CLI::App& app, const std::vector<std::strin
     const std::string name = w.substr(0, equals), value = joined ? w.substr(equals + 1) : words[++k];
     if (!joined && (isOptionWord(value, names) || value == "--"))
       return "option " + name + " needs a value, and the next word \"" + value + "\" is " +
-             (value == "--" ? "the end of the options" : "an option") + " (for a file of that name write ./" + value + ")";
+             (value == "--" ? "the end of the options" : "an option") + " (for a file of that name write ./" + value +
+             ")";
     if (value == "-")
       return "option " + name + " takes a name, and \"-\" (standard input or output elsewhere) is none here: FOSSSim "
              "reads and writes named files only (for a file named - write ./-)";

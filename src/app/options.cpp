@@ -235,7 +235,8 @@ bool parseOptions(int originalArgc, char** originalArgv, Options& o, std::string
   CLI::App app;
   Given g;
   define(app, o, g);
-  if (error = optionTakenAsValue(app, std::vector<std::string>(originalArgv, originalArgv + originalArgc)); !error.empty())
+  if (error = optionTakenAsValue(app, std::vector<std::string>(originalArgv, originalArgv + originalArgc));
+      !error.empty())
     return false;
   std::vector<std::string> words = splitShortValues(app, originalArgc, originalArgv);
   if (error = endOfOptions(app, words); !error.empty()) return false;

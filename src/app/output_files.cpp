@@ -48,9 +48,10 @@ Status checkOne(const std::string& option, const std::string& output, const std:
                          "(it is " + kind + ", not a file): choose a file name");
   for (const Input& in : inputs)
     if (st.st_dev == in.device && st.st_ino == in.inode)
-      return Status::error(option + " \"" + output + "\"" + (role.empty() ? " " : ": " + role) + "is the same file as the " +
-                           (in.option == "-s" ? "scene file" : "trajectory file") + " given to " + in.option + " (\"" +
-                           in.path + "\"): FOSSSim never writes over its input; choose another output name");
+      return Status::error(option + " \"" + output + "\"" + (role.empty() ? " " : ": " + role) +
+                           "is the same file as the " + (in.option == "-s" ? "scene file" : "trajectory file") +
+                           " given to " + in.option + " (\"" + in.path +
+                           "\"): FOSSSim never writes over its input; choose another output name");
   return Status::ok();
 }
 
@@ -100,7 +101,8 @@ struct Written {
 
 std::vector<Written> writtenFiles(const Options& options) {
   std::vector<Written> files;
-  for (const auto& [option, path] : {std::pair<std::string, std::string>{"-o", options.output}, {"--movie", options.movie}}) {
+  for (const auto& [option, path] :
+       {std::pair<std::string, std::string>{"-o", options.output}, {"--movie", options.movie}}) {
     if (path.empty()) continue;
     files.push_back({option, path, false});
     std::string renameTo;
@@ -113,7 +115,8 @@ std::vector<Written> writtenFiles(const Options& options) {
 
 std::string describe(const Written& w, const Options& options) {
   if (!w.partial) return w.option + " \"" + w.path + "\"";
-  return "the partial file \"" + w.path + "\" of " + w.option + " (written there until the run completes, then renamed to \"" +
+  return "the partial file \"" + w.path + "\" of " + w.option +
+         " (written there until the run completes, then renamed to \"" +
          (w.option == "-o" ? options.output : options.movie) + "\")";
 }
 
@@ -167,13 +170,14 @@ Status checkOutputsAgainstEachOther(const Options& options) {
     for (const auto& [folderOption, folder] : {std::pair<std::string, std::string>{"-m", options.svgDir},
                                                {"--png-dir", options.pngs ? options.pngDir : std::string()}})
       if (!folder.empty() && samePlace(w.path, folder))
-        return Status::error(describe(w, options) + " is the folder that " + folderOption + " writes its frames into (\"" +
-                             folder + "\"): give each output its own name");
+        return Status::error(describe(w, options) + " is the folder that " + folderOption +
+                             " writes its frames into (\"" + folder + "\"): give each output its own name");
     const bool svg = !options.svgDir.empty() && isFrameOf(w.path, options.svgDir, ".svg");
     const bool png = options.pngs && isFrameOf(w.path, options.pngDir, ".png");
     if (svg || png) {
       const bool partial = isFramePartialName(fs::path(w.path).filename().string(), svg ? ".svg" : ".png");
-      return Status::error(describe(w, options) + (partial ? " is the partial file of a frame, which " : " is a frame file that ") +
+      return Status::error(describe(w, options) +
+                           (partial ? " is the partial file of a frame, which " : " is a frame file that ") +
                            (svg ? "-m" : "-g") + (partial ? " writes before renaming it" : " writes") +
                            ": give each output its own name");
     }
@@ -185,7 +189,8 @@ Status checkOutputsAgainstEachOther(const Options& options) {
 
 Status checkOutputsAgainstInputs(const Options& options) {
   const std::vector<Input> inputs = inputsOf(options);
-  for (const auto& [option, path] : {std::pair<std::string, std::string>{"-o", options.output}, {"--movie", options.movie}}) {
+  for (const auto& [option, path] :
+       {std::pair<std::string, std::string>{"-o", options.output}, {"--movie", options.movie}}) {
     if (path.empty()) continue;
     if (Status s = checkOne(option, path, "", inputs); !s) return s;
     std::string renameTo;
@@ -234,9 +239,10 @@ std::vector<std::string> earlierFrameWarnings(const Options& options, long frame
     }
     closedir(d);
     if (count > 0)
-      warnings.push_back(option + ": \"" + dir + "\" holds " + std::to_string(count) + " frame" + (count == 1 ? "" : "s") +
-                         " of an earlier run beyond this run's " + std::to_string(frames) + " (" + first +
-                         (count == 1 ? "" : " to " + last) + "); they are left as they are, and the folder mixes the runs");
+      warnings.push_back(option + ": \"" + dir + "\" holds " + std::to_string(count) + " frame" +
+                         (count == 1 ? "" : "s") + " of an earlier run beyond this run's " + std::to_string(frames) +
+                         " (" + first + (count == 1 ? "" : " to " + last) +
+                         "); they are left as they are, and the folder mixes the runs");
   }
   return warnings;
 }
@@ -247,8 +253,9 @@ Status checkFrameEvery(const Options& options, long steps) {
   const std::string k = std::to_string(options.frameEvery);
   return Status::error("--frame-every " + k + " writes a frame after steps " + k + ", " +
                        std::to_string(2L * options.frameEvery) + ", ..., and the scene runs " + std::to_string(steps) +
-                       " step" + (steps == 1 ? "" : "s") + ": -g 1, -m and --movie would write no frame (give at most " +
-                       "--frame-every " + std::to_string(std::max(steps, 1L)) + ")");
+                       " step" + (steps == 1 ? "" : "s") +
+                       ": -g 1, -m and --movie would write no frame (give at most " + "--frame-every " +
+                       std::to_string(std::max(steps, 1L)) + ")");
 }
 
 Status checkGradedFile(const Options& options) {

@@ -100,8 +100,8 @@ Status ProgressOutput::afterStep(const SceneFile&, const State& state, const Col
 Status ProgressOutput::finish() {
   if (!started_) return Status::ok();  // an earlier observer failed to start: there was no run
   const double seconds = std::chrono::duration<double>(now_() - begin_).count();
-  std::fprintf(out_, "%s%s: %ld steps in %.3f s\n", terminal_ ? "\n" : "", end_ == RunEnd::Completed ? "done" : "stopped",
-               steps_, seconds);
+  std::fprintf(out_, "%s%s: %ld steps in %.3f s\n", terminal_ ? "\n" : "",
+               end_ == RunEnd::Completed ? "done" : "stopped", steps_, seconds);
   return Status::ok();
 }
 

@@ -43,7 +43,8 @@ class PictureOutputs final : public RunObserver {
     std::string line = parts.empty() || frames == 0 ? "" : "frames 1 to " + std::to_string(frames) + ": ";
     for (size_t k = 0; k < parts.size(); ++k) line += (k ? "; " : "") + parts[k];
     if (movie_ && !movieMade)
-      line += (line.empty() ? "" : "; ") + std::string("no movie was made (\"") + movie_->writePath() + "\" does not exist)";
+      line += (line.empty() ? "" : "; ") + std::string("no movie was made (\"") + movie_->writePath() +
+              "\" does not exist)";
     if (line.empty() && !places_.empty()) {
       line = "no frame was written (";
       for (size_t k = 0; k < places_.size(); ++k) line += (k ? "; " : "") + places_[k];

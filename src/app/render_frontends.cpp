@@ -107,7 +107,8 @@ Status addPictureOutputs(const Options& options, const SceneFile& file, Observer
     outputs.add(std::move(frames));
   }
   if (!outputs.empty())
-    observers.items.push_back(std::make_unique<PictureOutputs>(std::move(outputs), std::move(places), std::move(movie)));
+    observers.items.push_back(
+        std::make_unique<PictureOutputs>(std::move(outputs), std::move(places), std::move(movie)));
   return Status::ok();
 }
 

@@ -1,6 +1,6 @@
 // What the command line says about a loaded scene: its errors and warnings in line order, or with
-// -q (and a scene that loads) one line counting the warnings; --strict makes warnings errors; --check stops after the load
-// with "scene.xml: ok (...)". Header-only: main.cpp is its one user.
+// -q (and a scene that loads) one line counting the warnings; --strict makes warnings errors; --check stops after the
+// load with "scene.xml: ok (...)". Header-only: main.cpp is its one user.
 #pragma once
 
 #include "options.h"
@@ -22,8 +22,9 @@ inline std::string sceneSummary(const SceneFile& file) {
   const Scene& s = file.scene;
   char dt[32];
   std::snprintf(dt, sizeof dt, "%g", s.dt);
-  return plural(s.numParticles(), "particle", "particles") + ", " + plural(static_cast<long>(s.edges.size()), "edge", "edges") +
-         ", " + plural(static_cast<long>(s.halfplanes.size()), "half-plane", "half-planes") + ", " +
+  return plural(s.numParticles(), "particle", "particles") + ", " +
+         plural(static_cast<long>(s.edges.size()), "edge", "edges") + ", " +
+         plural(static_cast<long>(s.halfplanes.size()), "half-plane", "half-planes") + ", " +
          plural(static_cast<long>(s.forces.size()), "force", "forces") + ", " + plural(s.numSteps(), "step", "steps") +
          " of dt " + dt + ", " + s.integrator + ", collisions: " + collisionKeyword(s.collision.type);
 }

@@ -49,9 +49,10 @@ std::vector<std::string> diagnosticColumns(const Scene& scene) {
       if (c == ' ') c = '_';  // "collision penalty"
     names.push_back("potential_" + std::to_string(k) + "_" + keyword);
   }
-  for (const char* name : {"momentum_x", "momentum_y", "angular_momentum", "contacts", "failsafe_zones",
-                           "zone_particles", "rigid_zones", "candidate_pairs", "newton_iterations", "asleep", "cost_integrate",
-                           "cost_broad_phase", "cost_narrow_phase", "cost_response", "cost_failsafe", "cost_total"})
+  for (const char* name :
+       {"momentum_x", "momentum_y", "angular_momentum", "contacts", "failsafe_zones", "zone_particles", "rigid_zones",
+        "candidate_pairs", "newton_iterations", "asleep", "cost_integrate", "cost_broad_phase", "cost_narrow_phase",
+        "cost_response", "cost_failsafe", "cost_total"})
     names.emplace_back(name);
   return names;
 }

@@ -72,7 +72,8 @@ std::string forceName(const Scene& scene, int index) {
 std::string forceOrdinal(const Scene& scene, int index) {
   const Force& force = *scene.forces[static_cast<size_t>(index)];
   int nth = 1;
-  for (int f = 0; f < index; ++f) nth += std::string(scene.forces[static_cast<size_t>(f)]->keyword()) == force.keyword();
+  for (int f = 0; f < index; ++f)
+    nth += std::string(scene.forces[static_cast<size_t>(f)]->keyword()) == force.keyword();
   return "'" + std::string(force.keyword()) + "' #" + std::to_string(nth);
 }
 

@@ -92,7 +92,8 @@ class EnergyWatch {
   /// Takes the baseline; fails when the start's energy is not finite (see check).
   Status begin(const Scene& scene, const State& start, ForceContext& forces);
   /// Per-force potentials (0 for forces without one) at x, v.
-  void potentials(const Scene& scene, const VecX& x, const VecX& v, ForceContext& forces, std::vector<double>& out) const;
+  void potentials(const Scene& scene, const VecX& x, const VecX& v, ForceContext& forces,
+                  std::vector<double>& out) const;
   std::string explain(const Scene& scene, const State& start, const State& end, ForceContext& forces, double gain,
                       double scale) const;
 

@@ -51,8 +51,9 @@ namespace {
 /// only when evaluating every force separately is cheap enough (forces x particles <= 5e7).
 std::string blameNonFinite(const Scene& scene, const State& start, const State& end, bool predictionFinite,
                            const char* handler) {
-  if (predictionFinite) return std::string("; the integrator's prediction was finite: the collision response (") + handler +
-                               ") made it non-finite";
+  if (predictionFinite)
+    return std::string("; the integrator's prediction was finite: the collision response (") + handler +
+           ") made it non-finite";
   int i = 0;
   while (i < end.numParticles() && at(end.x, i).allFinite() && at(end.v, i).allFinite()) ++i;
   const size_t n = scene.forces.size();

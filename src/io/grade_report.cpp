@@ -74,17 +74,24 @@ void printGrade(const GradeReport& r, const Scene& scene, std::ostream& out, con
     for (int c = 0; c < 4; ++c)
       if (r.categoryFindings[c]) out << sep << kCategoryNames[c] << " " << r.categoryFindings[c], sep = ", ";
     const long shown = std::min<long>(r.findingCount, std::max(0, options.maxFindings));
-    out << ")" << (shown == 0 ? "" : shown == r.findingCount ? ":" : "; the first " + std::to_string(shown) + ":") << "\n";
+    out << ")"
+        << (shown == 0                ? ""
+            : shown == r.findingCount ? ":"
+                                      : "; the first " + std::to_string(shown) + ":")
+        << "\n";
     for (long k = 0; k < shown && k < static_cast<long>(r.findings.size()); ++k)
       out << "  " << place(r.findings[k]) << ": " << body(r.findings[k]) << "\n";
     if (r.findingCount > shown) out << "  (" << r.findingCount - shown << " more not shown)\n";
   }
   out << "Steps graded: " << r.stepsGraded << " of " << r.numSteps << "\n";
-  out << "Positions: residual sum " << r.positionSum << ", max " << r.positionMax << ": " << verdict(posOk, true, r) << "\n"
-      << "Velocities: residual sum " << r.velocitySum << ", max " << r.velocityMax << ": " << verdict(velOk, true, r) << "\n"
+  out << "Positions: residual sum " << r.positionSum << ", max " << r.positionMax << ": " << verdict(posOk, true, r)
+      << "\n"
+      << "Velocities: residual sum " << r.velocitySum << ", max " << r.velocityMax << ": " << verdict(velOk, true, r)
+      << "\n"
       << "Impulses: " << r.impulsesMissed << " missed, " << r.impulsesSuperfluous << " superfluous, "
       << r.impulsesWrongNormal << " wrong normals: " << verdict(impOk, r.layout.impulses, r) << "\n"
-      << "Polynomials: " << r.polynomialMismatches << " mismatches: " << verdict(polyOk, r.layout.polynomials, r) << "\n"
+      << "Polynomials: " << r.polynomialMismatches << " mismatches: " << verdict(polyOk, r.layout.polynomials, r)
+      << "\n"
       << "Overall success: " << (passed ? "Passed." : "Failed.") << "\n";
 }
 
@@ -116,7 +123,8 @@ std::string polynomialOwner(const Scene& scene, long k, long logSize) {
     }
   }
   r -= 4 * (edges - incident[i]);
-  return "the " + std::string(kTwo[r % 2]) + " polynomial of " + p + " and half-plane " + std::to_string(r / 2) + passNote;
+  return "the " + std::string(kTwo[r % 2]) + " polynomial of " + p + " and half-plane " + std::to_string(r / 2) +
+         passNote;
 }
 
 }  // namespace fosssim

@@ -18,7 +18,8 @@ std::string pairName(const Impulse& im) {
   switch (im.kind) {
     case PairKind::ParticleParticle: return "particles " + std::to_string(im.i) + " and " + std::to_string(im.j);
     case PairKind::ParticleEdge: return "particle " + std::to_string(im.i) + " and edge " + std::to_string(im.j);
-    case PairKind::ParticleHalfPlane: return "particle " + std::to_string(im.i) + " and half-plane " + std::to_string(im.j);
+    case PairKind::ParticleHalfPlane:
+      return "particle " + std::to_string(im.i) + " and half-plane " + std::to_string(im.j);
   }
   return "an unknown pair";
 }
@@ -141,7 +142,9 @@ class Grader final : public StepObserver {
 
   void impulses(const CollisionLog& mine, const CollisionLog& ref) {
     std::vector<char> used(mine.impulses.size(), 0);
-    const auto sameKey = [](const Impulse& a, const Impulse& b) { return a.kind == b.kind && a.i == b.i && a.j == b.j; };
+    const auto sameKey = [](const Impulse& a, const Impulse& b) {
+      return a.kind == b.kind && a.i == b.i && a.j == b.j;
+    };
     for (const Impulse& r : ref.impulses) {
       long keyed = -1, matched = -1;
       for (size_t k = 0; k < mine.impulses.size() && matched < 0; ++k) {
@@ -210,8 +213,8 @@ class Grader final : public StepObserver {
 };
 
 /// Record 0 must be the scene's initial state, within the tolerance of a single residual.
-bool startsFromTheScene(const TrajectoryRecord& record, const State& initial, double tol, const TrajectoryReader& reader,
-                        const Scene& scene, RecordLayout layout, std::string& error) {
+bool startsFromTheScene(const TrajectoryRecord& record, const State& initial, double tol,
+                        const TrajectoryReader& reader, const Scene& scene, RecordLayout layout, std::string& error) {
   long positions = 0, velocities = 0;
   const std::string x = firstMismatch(record.x, initial.x, "position", tol, positions);
   const std::string v = firstMismatch(record.v, initial.v, "velocity", tol, velocities);

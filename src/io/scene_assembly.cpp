@@ -19,8 +19,9 @@ namespace {
 bool checkIndex(SceneMessages& messages, const IndexRef& ref, size_t count, const char* what) {
   if (ref.value < 0) return false;
   if (ref.value < static_cast<long>(count)) return true;
-  messages.error(ref.line, ref.where + ": " + what + " " + std::to_string(ref.value) + " does not exist (the scene has " +
-                               std::to_string(count) + " " + what + (count == 1 ? "" : "s") + ")");
+  messages.error(ref.line, ref.where + ": " + what + " " + std::to_string(ref.value) +
+                               " does not exist (the scene has " + std::to_string(count) + " " + what +
+                               (count == 1 ? "" : "s") + ")");
   return false;
 }
 
@@ -36,7 +37,9 @@ void checkRequired(Builder& b, const std::string& file) {
   for (const ElementSpec& e : elementTable()) {
     if (!e.required) continue;
     const std::string name = e.name;
-    const bool present = name == "integrator" ? b.sawIntegrator : name == "duration" ? b.sawDuration : !b.particles.empty();
+    const bool present = name == "integrator" ? b.sawIntegrator
+                         : name == "duration" ? b.sawDuration
+                                              : !b.particles.empty();
     if (present) continue;
     std::string form;
     for (const AttributeSpec& a : e.attributes)
@@ -58,10 +61,11 @@ void checkPaths(Builder& b) {
     p.value.duration = std::min(p.value.duration, runPoints * scene.dt);
     total += std::max(points, 1.0);
     if (total > kMaxTrailPoints) {
-      b.messages.error(p.ref.line, p.ref.where.substr(0, p.ref.where.rfind(" attribute")) +
-                                       " attribute 'duration': the trails would keep more than " + shortNumber(kMaxTrailPoints) +
-                                       " positions in all (ceil(duration / dt) each, at most one per step of the "
-                                       "run: 16 bytes each); shorten the durations or use fewer <particlepath> elements");
+      b.messages.error(p.ref.line,
+                       p.ref.where.substr(0, p.ref.where.rfind(" attribute")) +
+                           " attribute 'duration': the trails would keep more than " + shortNumber(kMaxTrailPoints) +
+                           " positions in all (ceil(duration / dt) each, at most one per step of the "
+                           "run: 16 bytes each); shorten the durations or use fewer <particlepath> elements");
       return;
     }
   }
@@ -153,7 +157,8 @@ void assemble(Builder& b, const std::string& file) {
   for (const auto& [i, j] : b.edgeEnds) checkIndex(messages, i, n, "particle"), checkIndex(messages, j, n, "particle");
   for (const SpringSpec& s : b.springs) checkIndex(messages, s.edge, edges, "edge");
   for (const auto* list : {&b.gravitational, &b.vortex})
-    for (const PairForceSpec& f : *list) checkIndex(messages, f.i, n, "particle"), checkIndex(messages, f.j, n, "particle");
+    for (const PairForceSpec& f : *list)
+      checkIndex(messages, f.i, n, "particle"), checkIndex(messages, f.j, n, "particle");
   for (const auto& c : b.particleColors) checkIndex(messages, c.ref, n, "particle");
   for (const auto& c : b.edgeColors) checkIndex(messages, c.ref, edges, "edge");
   for (const auto& c : b.halfplaneColors) checkIndex(messages, c.ref, planes, "half-plane");

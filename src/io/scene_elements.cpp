@@ -36,8 +36,12 @@ std::string unknownKeyword(const std::string& what, const std::string& value, co
                            bool (*isValid)(const std::string&)) {
   const std::string word = trimXmlSpace(value);
   if (word == value) return "unknown " + what + " \"" + clip(value) + "\" (valid: " + valid + ")";
-  const bool before = value.find_first_not_of(kXmlSpace) != 0, after = value.find_last_not_of(kXmlSpace) + 1 != value.size();
-  return what + " \"" + clip(value) + "\" has white space " + (before && after ? "around it" : before ? "before it" : "after it") +
+  const bool before = value.find_first_not_of(kXmlSpace) != 0,
+             after = value.find_last_not_of(kXmlSpace) + 1 != value.size();
+  return what + " \"" + clip(value) + "\" has white space " +
+         (before && after ? "around it"
+          : before        ? "before it"
+                          : "after it") +
          ": keywords are read as written (only numbers may have spaces around them); " +
          (isValid(word) ? "write \"" + clip(word) + "\"" : "valid: " + valid);
 }
@@ -117,7 +121,8 @@ void readEdge(ElementReader& r, Builder& b) {
 
 void readHalfplane(ElementReader& r, Builder& b) {
   HalfPlane h{readVec(r, "px", "py"), readVec(r, "nx", "ny")};
-  if (r.ok() && h.normal.x() == 0.0 && h.normal.y() == 0.0) r.fail("nx", "the half-plane normal (nx, ny) must not be zero");
+  if (r.ok() && h.normal.x() == 0.0 && h.normal.y() == 0.0)
+    r.fail("nx", "the half-plane normal (nx, ny) must not be zero");
   // The normal need not be a unit vector, and the core takes its length as sqrt(nx^2 + ny^2):
   // beyond about 1e154 the square overflows (every distance became 0 or NaN and particles fell
   // through), below about 1e-154 it is subnormal or 0 (imprecise, or "must not be zero" for a
@@ -144,7 +149,9 @@ void readConstantForce(ElementReader& r, Builder& b) {
   b.constant.push_back(std::make_unique<ConstantForce>(readVec(r, "fx", "fy")));
 }
 
-void readDragDamping(ElementReader& r, Builder& b) { b.drag.push_back(std::make_unique<DragDampingForce>(r.number("b"))); }
+void readDragDamping(ElementReader& r, Builder& b) {
+  b.drag.push_back(std::make_unique<DragDampingForce>(r.number("b")));
+}
 
 PairForceSpec readPairEnds(ElementReader& r) {
   PairForceSpec spec{readIndex(r, "i"), readIndex(r, "j")};
@@ -223,57 +230,98 @@ const AttributeSpec* ElementSpec::attribute(const std::string& attributeName) co
 const std::vector<ElementSpec>& elementTable() {
   static const std::vector<ElementSpec> table = {
       // --- the run -----------------------------------------------------------------------------
-      {"duration", "The run", true, Repeat::FirstCounts, "How long the simulation runs; it takes ceil(time / dt) steps.",
+      {"duration",
+       "The run",
+       true,
+       Repeat::FirstCounts,
+       "How long the simulation runs; it takes ceil(time / dt) steps.",
        {{"time", Kind::NonNegative, "s", nullptr, "simulated time", "2.0"}},
        readDuration},
-      {"integrator", "The run", true, Repeat::FirstCounts, "The time integrator and its time step.",
+      {"integrator",
+       "The run",
+       true,
+       Repeat::FirstCounts,
+       "The time integrator and its time step.",
        {{"type", Kind::Text, "", nullptr, "one of the integrators listed below", "symplectic-euler"},
         {"dt", Kind::Positive, "s", nullptr, "the time step", "0.01"}},
        readIntegrator},
-      {"collision", "The run", false, Repeat::FirstCounts,
-       "How collisions are detected and resolved (without it: none). The settings a type does not use are read and ignored.",
+      {"collision",
+       "The run",
+       false,
+       Repeat::FirstCounts,
+       "How collisions are detected and resolved (without it: none). The settings a type does not use are read and "
+       "ignored.",
        {{"type", Kind::Text, "", nullptr, "one of the collision types listed below", "hybrid"},
-        {"COR", Kind::Fraction, "", "1", "coefficient of restitution: 1 elastic, 0 no bounce; in the default mode's continuous-time and hybrid impulses, below 1, resting contact (closing no faster than twice the step's kicks along its normal, at least a quarter of that closing new in the step) does not bounce", "0.5"},
+        {"COR", Kind::Fraction, "", "1",
+         "coefficient of restitution: 1 elastic, 0 no bounce; in the default mode's continuous-time and hybrid "
+         "impulses, below 1, resting contact (closing no faster than twice the step's kicks along its normal, at least "
+         "a quarter of that closing new in the step) does not bounce",
+         "0.5"},
         {"maxiters", Kind::Number, "", "10",
          "hybrid: impulse passes per step (with --compat) or impulses per particle per step (default mode) "
          "before the failsafe takes over; read as a number and truncated; 0 or less: the failsafe at once",
          "10", kMaxCollisionIterations, kMaxCollisionIterationsReason},
         {"failsafe", Kind::Text, "", "projection",
-         "hybrid and continuous-time, default mode: projection (projection of impact zones, with the COR's restitution for hits) or "
+         "hybrid and continuous-time, default mode: projection (projection of impact zones, with the COR's restitution "
+         "for hits) or "
          "rigid (the course's rigid zones); --compat always uses rigid zones",
          "projection"},
         {"k", Kind::NonNegative, "N/m", "(by type: the table below)", "stiffness of the penalty force", "10"},
         {"thickness", Kind::NonNegative, "m", "(by type: the table below)",
          "the penalty force acts on pairs closer than their radii plus this", "0.1"}},
        readCollision},
-      {"simtype", "The run", false, Repeat::LastCounts, "The kind of simulation; only particle systems exist.",
+      {"simtype",
+       "The run",
+       false,
+       Repeat::LastCounts,
+       "The kind of simulation; only particle systems exist.",
        {{"type", Kind::Text, "", "particle-system", "particle-system", "particle-system"}},
        readSimtype},
-      {"description", "The run", false, Repeat::LastCounts,
+      {"description",
+       "The run",
+       false,
+       Repeat::LastCounts,
        "A sentence about the scene, printed when it starts (not with -q).",
        {{"text", Kind::Text, "", nullptr, "the description", "A ball bounces on a floor."}},
        readDescription},
-      {"scenetag", "The run", false, Repeat::LastCounts, "A name for the scene (kept, not used by FOSSSim).",
+      {"scenetag",
+       "The run",
+       false,
+       Repeat::LastCounts,
+       "A name for the scene (kept, not used by FOSSSim).",
        {{"tag", Kind::Text, "", nullptr, "the name", "bounce"}},
        readSceneTag},
       // --- bodies ------------------------------------------------------------------------------
-      {"particle", "Bodies", true, Repeat::Adds,
+      {"particle",
+       "Bodies",
+       true,
+       Repeat::Adds,
        "A disk. Particles are numbered from 0 in file order; at least one is required.",
        {{"m", Kind::Positive, "kg", nullptr, "mass", "1"},
         {"px", Kind::Number, "m", nullptr, "initial position, x", "0"},
         {"py", Kind::Number, "m", nullptr, "initial position, y", "1"},
         {"vx", Kind::Number, "m/s", nullptr, "initial velocity, x", "0"},
         {"vy", Kind::Number, "m/s", nullptr, "initial velocity, y", "0"},
-        {"fixed", Kind::Flag, "", nullptr, "1: forces and collisions leave it; it keeps its initial velocity (the course simulator moves it at that velocity; the default mode's continuous-time and hybrid handling need it 0)", "0"},
+        {"fixed", Kind::Flag, "", nullptr,
+         "1: forces and collisions leave it; it keeps its initial velocity (the course simulator moves it at that "
+         "velocity; the default mode's continuous-time and hybrid handling need it 0)",
+         "0"},
         {"radius", Kind::Positive, "m", "0.1", "disk radius (collisions and pictures)", "0.1"}},
        readParticle},
-      {"edge", "Bodies", false, Repeat::Adds,
+      {"edge",
+       "Bodies",
+       false,
+       Repeat::Adds,
        "A capsule between two particles (the points within radius of the segment). Edges are numbered from 0 in "
        "file order.",
-       {particleIndex("i", "first particle", "0"), particleIndex("j", "second particle, not i", "1"),
+       {particleIndex("i", "first particle", "0"),
+        particleIndex("j", "second particle, not i", "1"),
         {"radius", Kind::Positive, "m", "0.015", "capsule radius", "0.015"}},
        readEdge},
-      {"halfplane", "Bodies", false, Repeat::Adds,
+      {"halfplane",
+       "Bodies",
+       false,
+       Repeat::Adds,
        "A fixed wall: everything on the side the normal points to is free space. Half-planes are numbered from 0 "
        "in file order.",
        {{"px", Kind::Number, "m", nullptr, "a point on the boundary, x", "0"},
@@ -282,7 +330,10 @@ const std::vector<ElementSpec>& elementTable() {
         {"ny", Kind::Number, "", nullptr, "normal, y", "1"}},
        readHalfplane},
       // --- forces ------------------------------------------------------------------------------
-      {"springforce", "Forces", false, Repeat::Adds,
+      {"springforce",
+       "Forces",
+       false,
+       Repeat::Adds,
        "A spring along an edge: energy k/2 (l - l0)^2, plus damping b along the edge. The edge's two particles "
        "may not start at one point (the spring would have no direction) unless both are fixed.",
        {{"edge", Kind::Index, "", nullptr, "the edge it acts along", "0"},
@@ -290,61 +341,107 @@ const std::vector<ElementSpec>& elementTable() {
         {"l0", Kind::NonNegative, "m", nullptr, "rest length", "1"},
         {"b", Kind::NonNegative, "N s/m", "0", "damping", "0.5"}},
        readSpring},
-      {"simplegravity", "Forces", false, Repeat::Adds, "Uniform gravity: the force m g on every particle.",
+      {"simplegravity",
+       "Forces",
+       false,
+       Repeat::Adds,
+       "Uniform gravity: the force m g on every particle.",
        {{"fx", Kind::Number, "m/s^2", nullptr, "acceleration g, x", "0"},
         {"fy", Kind::Number, "m/s^2", nullptr, "acceleration g, y", "-9.81"}},
        readSimpleGravity},
-      {"constantforce", "Forces", false, Repeat::Adds, "The same force f on every particle, whatever its mass.",
+      {"constantforce",
+       "Forces",
+       false,
+       Repeat::Adds,
+       "The same force f on every particle, whatever its mass.",
        {{"fx", Kind::Number, "N", nullptr, "force, x", "1"}, {"fy", Kind::Number, "N", nullptr, "force, y", "0"}},
        readConstantForce},
-      {"gravitationalforce", "Forces", false, Repeat::Adds,
+      {"gravitationalforce",
+       "Forces",
+       false,
+       Repeat::Adds,
        "Newtonian attraction between two particles: energy -G m_i m_j / r.",
-       {particleIndex("i", "first particle", "0"), particleIndex("j", "second particle, not i", "1"),
+       {particleIndex("i", "first particle", "0"),
+        particleIndex("j", "second particle, not i", "1"),
         {"G", Kind::Number, "N m^2/kg^2", nullptr, "gravitational constant", "1"}},
        readGravitational},
-      {"dragdamping", "Forces", false, Repeat::Adds, "Drag: the force -b v on every particle.",
+      {"dragdamping",
+       "Forces",
+       false,
+       Repeat::Adds,
+       "Drag: the force -b v on every particle.",
        {{"b", Kind::NonNegative, "N s/m", nullptr, "drag coefficient", "0.1"}},
        readDragDamping},
-      {"vortexforce", "Forces", false, Repeat::Adds,
+      {"vortexforce",
+       "Forces",
+       false,
+       Repeat::Adds,
        "A vortex: particle j circles particle i. With r = x_j - x_i: F_j = kvc/|r|^2 (kbs perp(r/|r|) - (v_j - v_i)), "
        "F_i = -F_j. No energy, no Jacobian: implicit integrators treat it explicitly.",
-       {particleIndex("i", "the centre particle", "0"), particleIndex("j", "the circling particle, not i", "1"),
+       {particleIndex("i", "the centre particle", "0"),
+        particleIndex("j", "the circling particle, not i", "1"),
         {"kbs", Kind::Number, "m/s", nullptr, "swirl speed", "1"},
         {"kvc", Kind::Number, "m^2/s", nullptr, "strength (viscous coupling)", "1"}},
        readVortex},
       // --- display -----------------------------------------------------------------------------
-      {"viewport", "Display (the physics never reads these)", false, Repeat::FirstCounts,
+      {"viewport",
+       "Display (the physics never reads these)",
+       false,
+       Repeat::FirstCounts,
        "The camera. Without it the view fits the particles.",
        {{"cx", Kind::Number, "m", nullptr, "centre, x", "0"},
         {"cy", Kind::Number, "m", nullptr, "centre, y", "0"},
         {"size", Kind::Positive, "m", nullptr, "half the height of the visible world", "1.5"}},
        readViewport},
-      {"maxsimfreq", "Display (the physics never reads these)", false, Repeat::LastCounts,
+      {"maxsimfreq",
+       "Display (the physics never reads these)",
+       false,
+       Repeat::LastCounts,
        "The window's speed limit, in steps per wall-clock second (headless runs ignore it).",
        {{"max", Kind::Positive, "1/s", nullptr, "steps per second (without the element: 100)", "100"}},
        readMaxSimFreq},
-      {"backgroundcolor", "Display (the physics never reads these)", false, Repeat::LastCounts,
+      {"backgroundcolor",
+       "Display (the physics never reads these)",
+       false,
+       Repeat::LastCounts,
        "The background colour (without it: white).",
        {channel("r", "1"), channel("g", "1"), channel("b", "1")},
        readBackground},
-      {"particlecolor", "Display (the physics never reads these)", false, Repeat::Adds,
+      {"particlecolor",
+       "Display (the physics never reads these)",
+       false,
+       Repeat::Adds,
        "The colour of one particle (default 0.65 0.29 0, brown); the last one given for a particle counts.",
        {particleIndex("i", "the particle", "0"), channel("r", "0.2"), channel("g", "0.4"), channel("b", "0.8")},
        readColor<&Builder::particleColors>},
-      {"edgecolor", "Display (the physics never reads these)", false, Repeat::Adds,
+      {"edgecolor",
+       "Display (the physics never reads these)",
+       false,
+       Repeat::Adds,
        "The colour of one edge (default 0 0.39 0.39, teal); the last one given for an edge counts.",
        {{"i", Kind::Index, "", nullptr, "the edge", "0"}, channel("r", "0"), channel("g", "0"), channel("b", "0")},
        readColor<&Builder::edgeColors>},
-      {"halfplanecolor", "Display (the physics never reads these)", false, Repeat::Adds,
+      {"halfplanecolor",
+       "Display (the physics never reads these)",
+       false,
+       Repeat::Adds,
        "The colour of one half-plane (default black); the last one given for a half-plane counts.",
-       {{"i", Kind::Index, "", nullptr, "the half-plane", "0"}, channel("r", "0.5"), channel("g", "0.5"),
+       {{"i", Kind::Index, "", nullptr, "the half-plane", "0"},
+        channel("r", "0.5"),
+        channel("g", "0.5"),
         channel("b", "0.5")},
        readColor<&Builder::halfplaneColors>},
-      {"particlepath", "Display (the physics never reads these)", false, Repeat::Adds,
+      {"particlepath",
+       "Display (the physics never reads these)",
+       false,
+       Repeat::Adds,
        "A trail behind a particle: its positions over the last duration seconds (ceil(duration / dt) of them, at "
        "most one per step of the run; 16 bytes each). The rules above bound all trails together.",
-       {particleIndex("i", "the particle", "0"), {"duration", Kind::NonNegative, "s", nullptr, "trail length in time", "1"},
-        channel("r", "0.8"), channel("g", "0.3"), channel("b", "0.2")},
+       {particleIndex("i", "the particle", "0"),
+        {"duration", Kind::NonNegative, "s", nullptr, "trail length in time", "1"},
+        channel("r", "0.8"),
+        channel("g", "0.3"),
+        channel("b", "0.2")},
        readParticlePath},
   };
   return table;

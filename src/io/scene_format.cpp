@@ -39,7 +39,8 @@ std::string defaultText(const AttributeSpec& a) {
 const char* repeatText(const ElementSpec& e) {
   switch (e.repeat) {
     case io::Repeat::Adds: return e.required ? "required, one or more" : "any number";
-    case io::Repeat::FirstCounts: return e.required ? "required; only the first counts" : "optional; only the first counts";
+    case io::Repeat::FirstCounts:
+      return e.required ? "required; only the first counts" : "optional; only the first counts";
     case io::Repeat::LastCounts: return "optional; the last one counts";
   }
   return "";
@@ -104,9 +105,11 @@ std::string sceneFormatMarkdown() {
         "- `FOSSSim -s scene.xml --check` checks a scene without running it.\n"
         "- An element may have at most "
      << io::withThousands(io::kMaxAttributes) << " attributes (the elements below take at most " << io::mostAttributes()
-     << "): parsing\n  more takes time growing with the square of their number, so a file with more is refused unparsed.\n"
+     << "): parsing\n  more takes time growing with the square of their number, so a file with more is refused "
+        "unparsed.\n"
         "- A run may take at most "
-     << io::shortNumber(io::kMaxSteps) << " steps (ceil(duration / dt)); all `<particlepath>` trails together keep at most "
+     << io::shortNumber(io::kMaxSteps)
+     << " steps (ceil(duration / dt)); all `<particlepath>` trails together keep at most "
      << io::withThousands(static_cast<long>(io::kMaxTrailPoints)) << " positions.\n\n";
   const char* section = "";
   for (const ElementSpec& e : io::elementTable()) {
@@ -121,10 +124,12 @@ std::string sceneFormatMarkdown() {
       md << "\n";
     }
     if (std::string(e.name) == "collision") {
-      md << "Collision types (`type`):\n\n| type | what it does | penalty `k` | penalty `thickness` |\n|---|---|---|---|\n";
+      md << "Collision types (`type`):\n\n| type | what it does | penalty `k` | penalty `thickness` |\n"
+            "|---|---|---|---|\n";
       for (const CollisionEntry& c : collisionTable()) {
         md << "| `" << c.keyword << "` | " << c.summary << " | ";
-        if (c.addsPenaltyForce) md << io::shortNumber(c.defaultK) << " | " << io::shortNumber(c.defaultThickness) << " |\n";
+        if (c.addsPenaltyForce)
+          md << io::shortNumber(c.defaultK) << " | " << io::shortNumber(c.defaultThickness) << " |\n";
         else md << "not used | not used |\n";
       }
       md << "\n";

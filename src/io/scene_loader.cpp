@@ -54,10 +54,11 @@ void reportContent(const tinyxml2::XMLElement& e, SceneMessages& m) {
                  "> ignored (elements are read only directly inside <scene>; <" + parent + "> takes attributes only)");
     else if (const tinyxml2::XMLText* text = c->ToText())
       m.warn(line, "text inside <" + parent + ">", "texts inside <" + parent + ">",
-             m.at(line) + (text->CData() ? "CDATA section " : "text ") + shortText(text->Value()) + " inside <" + parent +
-                 "> ignored (<" + parent + "> takes attributes only)");
+             m.at(line) + (text->CData() ? "CDATA section " : "text ") + shortText(text->Value()) + " inside <" +
+                 parent + "> ignored (<" + parent + "> takes attributes only)");
     else
-      m.warn(line, "declaration", "declarations", m.at(line) + "<!" + clipped(c->Value()) + "> inside <" + parent + "> ignored");
+      m.warn(line, "declaration", "declarations",
+             m.at(line) + "<!" + clipped(c->Value()) + "> inside <" + parent + "> ignored");
   }
 }
 
@@ -80,15 +81,21 @@ void reportOther(const tinyxml2::XMLNode& node, SceneMessages& m) {
   const int line = node.GetLineNum();
   if (const tinyxml2::XMLText* text = node.ToText()) {
     if (text->CData())
-      m.warn(line, "CDATA", "CDATA sections", m.at(line) + "CDATA section " + shortText(text->Value()) + " ignored (a scene is read from its elements only)");
+      m.warn(line, "CDATA", "CDATA sections",
+             m.at(line) + "CDATA section " + shortText(text->Value()) +
+                 " ignored (a scene is read from its elements only)");
     else
-      m.warn(line, "stray text", "pieces of stray text", m.at(line) + "stray text " + shortText(text->Value()) + " ignored (a scene is read from its elements only)");
+      m.warn(
+          line, "stray text", "pieces of stray text",
+          m.at(line) + "stray text " + shortText(text->Value()) + " ignored (a scene is read from its elements only)");
   } else if (!node.ToComment()) {
-    m.warn(line, "declaration", "declarations", m.at(line) + "<!" + clipped(node.Value()) + "> ignored (FOSSSim reads no document type declarations)");
+    m.warn(line, "declaration", "declarations",
+           m.at(line) + "<!" + clipped(node.Value()) + "> ignored (FOSSSim reads no document type declarations)");
   }
 }
 
-void readElement(const tinyxml2::XMLElement& e, Builder& b, std::vector<const ElementSpec*>& seen, const std::string& name) {
+void readElement(const tinyxml2::XMLElement& e, Builder& b, std::vector<const ElementSpec*>& seen,
+                 const std::string& name) {
   SceneMessages& m = b.messages;
   const int line = e.GetLineNum();
   const ElementSpec* spec = io::findElement(e.Name());
@@ -134,7 +141,8 @@ Status parseDocument(const std::string& raw, const std::string& name, SceneFile&
   SceneMessages messages(name);
   // A NUL byte ends tinyxml2's reading: whatever follows would be dropped without a word.
   if (const size_t nul = raw.find('\0'); nul != std::string::npos)
-    return Status::error(messages.at(io::lineOf(raw, nul)) + "a NUL byte (at byte " + io::withThousands(static_cast<long>(nul)) +
+    return Status::error(messages.at(io::lineOf(raw, nul)) + "a NUL byte (at byte " +
+                         io::withThousands(static_cast<long>(nul)) +
                          "): a scene file is XML text, and nothing after it could be read");
   // A control character would reach the terminal with the description or a message quoting a
   // value (an escape sequence acts there), and XML does not allow one, even written as &#27;.
@@ -151,11 +159,12 @@ Status parseDocument(const std::string& raw, const std::string& name, SceneFile&
   }
   // Bytes that are no UTF-8 (a file saved as Latin-1): tinyxml2 passed them through as they were.
   if (io::InvalidUtf8 bad; io::findInvalidUtf8(raw, bad))
-    return Status::error(messages.at(io::lineOf(raw, bad.offset)) + "column " + std::to_string(io::columnOf(raw, bad.offset)) +
-                         ": " + bad.why + ", at byte " + io::withThousands(static_cast<long>(bad.offset)) +
-                         (bad.utf8 ? std::string(": a scene file is XML text")
-                                   : std::string(": a scene file is UTF-8 text (a file saved as Latin-1 or Windows-1252 "
-                                                 "has such bytes for accented letters; save it as UTF-8)")));
+    return Status::error(
+        messages.at(io::lineOf(raw, bad.offset)) + "column " + std::to_string(io::columnOf(raw, bad.offset)) + ": " +
+        bad.why + ", at byte " + io::withThousands(static_cast<long>(bad.offset)) +
+        (bad.utf8 ? std::string(": a scene file is XML text")
+                  : std::string(": a scene file is UTF-8 text (a file saved as Latin-1 or Windows-1252 "
+                                "has such bytes for accented letters; save it as UTF-8)")));
   // What tinyxml2 lets through although XML does not (xml_wellformed.h): "&h;" kept as text.
   if (io::MarkupFault fault; io::findMarkupFault(raw, fault))
     return Status::error(messages.at(io::lineOf(raw, fault.offset)) + "column " +
@@ -164,9 +173,10 @@ Status parseDocument(const std::string& raw, const std::string& name, SceneFile&
   // Before tinyxml2, whose check for repeated attributes makes a flood of them on one element
   // take minutes (xml_syntax.h).
   if (io::CrowdedElement crowded; io::findCrowdedElement(text, crowded)) {
-    return Status::error(messages.at(crowded.line) + "<" + io::clip(crowded.name) + ">: " + io::withThousands(crowded.attributes) +
-                         " attributes, more than the " + io::withThousands(io::kMaxAttributes) +
-                         " an element may have (the scene format's take at most " + std::to_string(io::mostAttributes()) + ")");
+    return Status::error(
+        messages.at(crowded.line) + "<" + io::clip(crowded.name) + ">: " + io::withThousands(crowded.attributes) +
+        " attributes, more than the " + io::withThousands(io::kMaxAttributes) +
+        " an element may have (the scene format's take at most " + std::to_string(io::mostAttributes()) + ")");
   }
   tinyxml2::XMLDocument doc;
   const tinyxml2::XMLError parsed = doc.Parse(text.data(), text.size());
@@ -179,9 +189,11 @@ Status parseDocument(const std::string& raw, const std::string& name, SceneFile&
   const tinyxml2::XMLElement* root = doc.RootElement();
   if (!root) return Status::error(name + ": the file holds no XML element (expected <scene>)");
   if (std::string(root->Name()) != "scene")
-    return Status::error(messages.at(root->GetLineNum()) + "the root element is <" + io::clip(root->Name()) + ">, expected <scene>");
+    return Status::error(messages.at(root->GetLineNum()) + "the root element is <" + io::clip(root->Name()) +
+                         ">, expected <scene>");
   if (const tinyxml2::XMLElement* second = root->NextSiblingElement())
-    return Status::error(messages.at(second->GetLineNum()) + "unexpected element <" + io::clip(second->Name()) + "> after </scene>");
+    return Status::error(messages.at(second->GetLineNum()) + "unexpected element <" + io::clip(second->Name()) +
+                         "> after </scene>");
 
   for (const tinyxml2::XMLNode* n = doc.FirstChild(); n; n = n->NextSibling())
     if (n != root && !n->ToDeclaration()) reportOther(*n, messages);
@@ -209,8 +221,8 @@ Status parseScene(const std::string& text, const std::string& name, SceneFile& o
   } catch (const std::bad_alloc&) {
     out = SceneFile{};
     out.path = name;
-    return Status::error(name + ": not enough memory to load the scene (" + io::withThousands(static_cast<long>(text.size())) +
-                         " bytes)");
+    return Status::error(name + ": not enough memory to load the scene (" +
+                         io::withThousands(static_cast<long>(text.size())) + " bytes)");
   }
 }
 

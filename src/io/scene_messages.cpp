@@ -70,10 +70,11 @@ Status SceneMessages::finish(SceneFile& out) {
       restCount += kind.hidden, ++restKinds;
       continue;
     }
-    std::string lines = kind.firstHiddenLine <= 0 ? ""
-                        : kind.firstHiddenLine == kind.lastHiddenLine
-                            ? " (line " + withThousands(kind.firstHiddenLine) + ")"
-                            : " (lines " + withThousands(kind.firstHiddenLine) + "-" + withThousands(kind.lastHiddenLine) + ")";
+    std::string lines =
+        kind.firstHiddenLine <= 0 ? ""
+        : kind.firstHiddenLine == kind.lastHiddenLine
+            ? " (line " + withThousands(kind.firstHiddenLine) + ")"
+            : " (lines " + withThousands(kind.firstHiddenLine) + "-" + withThousands(kind.lastHiddenLine) + ")";
     out.messages.push_back({SceneMessage::Severity::Warning, 0,
                             at(0) + "... and " + withThousands(kind.hidden) + " more " + kind.plural + lines});
   }
@@ -91,7 +92,8 @@ Status SceneMessages::finish(SceneFile& out) {
   out.warningCount = warningCount_;
   out.errorCount = errorCount_;
   if (errorCount_ == 0) return Status::ok();
-  const auto first = std::find_if(out.messages.begin(), out.messages.end(), [](const SceneMessage& m) { return m.isError(); });
+  const auto first =
+      std::find_if(out.messages.begin(), out.messages.end(), [](const SceneMessage& m) { return m.isError(); });
   std::string message = first->text;
   if (errorCount_ > 1) message += " (and " + withThousands(errorCount_ - 1) + " more errors)";
   return Status::error(message);

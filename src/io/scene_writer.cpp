@@ -123,7 +123,11 @@ void writeForce(std::string& out, const Scene& scene, const Force& force, size_t
   } else if (const auto* d = dynamic_cast<const DragDampingForce*>(&force)) {
     Element(out, "dragdamping").number("b", d->damping());
   } else if (const auto* v = dynamic_cast<const VortexForce*>(&force)) {
-    Element(out, "vortexforce").integer("i", v->i()).integer("j", v->j()).number("kbs", v->kbs()).number("kvc", v->kvc());
+    Element(out, "vortexforce")
+        .integer("i", v->i())
+        .integer("j", v->j())
+        .number("kbs", v->kbs())
+        .number("kvc", v->kvc());
   }
   // The penalty force is written as the collision settings (checkForces).
 }
@@ -147,14 +151,15 @@ void checkForces(const Scene& scene) {
       if (!entry.addsPenaltyForce)
         throw WriteError{which + ": collision type \"" + entry.keyword + "\" has no penalty force"};
       if (p->stiffness() != scene.collision.penaltyK || p->thickness() != scene.collision.penaltyThickness)
-        throw WriteError{which + ": k = " + formatNumber(p->stiffness()) + ", thickness = " + formatNumber(p->thickness()) +
+        throw WriteError{which + ": k = " + formatNumber(p->stiffness()) +
+                         ", thickness = " + formatNumber(p->thickness()) +
                          " differ from the collision settings' k = " + formatNumber(scene.collision.penaltyK) +
                          ", thickness = " + formatNumber(scene.collision.penaltyThickness)};
     }
   }
   if (entry.addsPenaltyForce && penalties != 1)
-    throw WriteError{"collision type \"" + std::string(entry.keyword) + "\" needs exactly one penalty force, the scene has " +
-                     std::to_string(penalties)};
+    throw WriteError{"collision type \"" + std::string(entry.keyword) +
+                     "\" needs exactly one penalty force, the scene has " + std::to_string(penalties)};
 }
 
 void writeScene(std::string& out, const SceneFile& file) {
@@ -173,8 +178,12 @@ void writeScene(std::string& out, const SceneFile& file) {
   Element(out, "duration").number("time", scene.duration);
   Element(out, "integrator").text("type", scene.integrator).number("dt", scene.dt);
   const CollisionSettings& c = scene.collision;
-  Element(out, "collision").text("type", collisionKeyword(c.type)).number("COR", c.cor).integer("maxiters", c.maxIterations)
-      .text("failsafe", c.failsafe == Failsafe::Rigid ? "rigid" : "projection").number("k", c.penaltyK)
+  Element(out, "collision")
+      .text("type", collisionKeyword(c.type))
+      .number("COR", c.cor)
+      .integer("maxiters", c.maxIterations)
+      .text("failsafe", c.failsafe == Failsafe::Rigid ? "rigid" : "projection")
+      .number("k", c.penaltyK)
       .number("thickness", c.penaltyThickness);
 
   const Appearance& look = file.look;
@@ -185,8 +194,13 @@ void writeScene(std::string& out, const SceneFile& file) {
   if (!sameRgb(look.background, Appearance{}.background)) Element(out, "backgroundcolor").rgb(look.background);
 
   for (int i = 0; i < n; ++i)
-    Element(out, "particle").number("m", scene.massOf(i)).number("px", initial.x[2 * i]).number("py", initial.x[2 * i + 1])
-        .number("vx", initial.v[2 * i]).number("vy", initial.v[2 * i + 1]).integer("fixed", scene.isFixed(i) ? 1 : 0)
+    Element(out, "particle")
+        .number("m", scene.massOf(i))
+        .number("px", initial.x[2 * i])
+        .number("py", initial.x[2 * i + 1])
+        .number("vx", initial.v[2 * i])
+        .number("vy", initial.v[2 * i + 1])
+        .integer("fixed", scene.isFixed(i) ? 1 : 0)
         .number("radius", scene.radius[i]);
   for (const Edge& e : scene.edges) Element(out, "edge").integer("i", e.i).integer("j", e.j).number("radius", e.radius);
   for (const HalfPlane& h : scene.halfplanes)

@@ -99,7 +99,8 @@ Status TrajectoryReader::next(TrajectoryRecord& record, bool& atEnd) {
       if (!readBytes(head, sizeof head) || !readBytes(tail, sizeof tail))
         return fail("cannot read impulse " + std::to_string(k));
       if (head[0] < 0 || head[0] > 2) return fail("impulse of unknown kind " + std::to_string(head[0]));
-      record.log.impulses.push_back(Impulse{static_cast<PairKind>(head[0]), head[1], head[2], Vec2(tail[0], tail[1]), tail[2]});
+      record.log.impulses.push_back(
+          Impulse{static_cast<PairKind>(head[0]), head[1], head[2], Vec2(tail[0], tail[1]), tail[2]});
     }
   }
   if (layout_.polynomials) {
@@ -114,7 +115,8 @@ Status TrajectoryReader::next(TrajectoryRecord& record, bool& atEnd) {
       if (!readBytes(&length, 4))
         return endsEarly("polynomial " + std::to_string(k) + " of " + std::to_string(count) +
                          ": its length needs 4 bytes, " + remaining());
-      if (length < 0) return fail("impossible length " + std::to_string(length) + " of polynomial " + std::to_string(k));
+      if (length < 0)
+        return fail("impossible length " + std::to_string(length) + " of polynomial " + std::to_string(k));
       const std::uint64_t bytes = 8ull * static_cast<std::uint64_t>(length);
       if (bytes > size_ - offset_)
         return endsEarly("polynomial " + std::to_string(k) + " of " + std::to_string(count) + " (length " +

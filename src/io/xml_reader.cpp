@@ -207,13 +207,15 @@ double ElementReader::number(const char* attributeName, double computedDefault) 
 
 int ElementReader::index(const char* attributeName) {
   if (declared(attributeName, true).kind != Kind::Index)
-    throw std::logic_error(std::string("element table: <") + spec_.name + "> attribute '" + attributeName + "' is no index");
+    throw std::logic_error(std::string("element table: <") + spec_.name + "> attribute '" + attributeName +
+                           "' is no index");
   return static_cast<int>(number(attributeName));
 }
 
 bool ElementReader::flag(const char* attributeName) {
   if (declared(attributeName, true).kind != Kind::Flag)
-    throw std::logic_error(std::string("element table: <") + spec_.name + "> attribute '" + attributeName + "' is no flag");
+    throw std::logic_error(std::string("element table: <") + spec_.name + "> attribute '" + attributeName +
+                           "' is no flag");
   return number(attributeName) == 1;
 }
 

@@ -38,7 +38,10 @@ class Scanner {
     if (stack_.empty()) return false;
     std::string open, missing;
     for (size_t k = stack_.size(); k-- > 0;) {
-      open += (open.empty() ? "" : k == 0 ? " and " : ", ") + ("<" + clip(stack_[k].name) + "> (line " + std::to_string(stack_[k].line) + ")");
+      open += (open.empty() ? ""
+               : k == 0     ? " and "
+                            : ", ") +
+              ("<" + clip(stack_[k].name) + "> (line " + std::to_string(stack_[k].line) + ")");
       missing += "</" + clip(stack_[k].name) + ">";
     }
     int last = line_;
@@ -72,7 +75,8 @@ class Scanner {
       const size_t k = t_.find_first_not_of(kXmlSpace, p_);
       if (k < q) {
         advanceTo(k);
-        return fail("text " + excerpt(t_, k) + (rootClosed_ ? " after the root element's end" : " outside any element"));
+        return fail("text " + excerpt(t_, k) +
+                    (rootClosed_ ? " after the root element's end" : " outside any element"));
       }
     }
     advanceTo(q);
@@ -87,7 +91,9 @@ class Scanner {
   }
 
   bool declaration() {
-    if (!stack_.empty()) return fail("a <?...?> declaration inside <" + clip(stack_.back().name) + ">: declarations may only open the file");
+    if (!stack_.empty())
+      return fail("a <?...?> declaration inside <" + clip(stack_.back().name) +
+                  ">: declarations may only open the file");
     return until("?>", "a declaration (<?)");
   }
 
@@ -101,18 +107,21 @@ class Scanner {
     size_t q = p_ + 2;
     const std::string n = name(q);
     while (q < t_.size() && isXmlSpace(t_[q])) ++q;
-    if (n.empty() || q >= t_.size() || t_[q] != '>') return fail("a closing tag </" + clip(n) + " must be a name followed by '>'");
+    if (n.empty() || q >= t_.size() || t_[q] != '>')
+      return fail("a closing tag </" + clip(n) + " must be a name followed by '>'");
     if (stack_.empty()) return fail("</" + clip(n) + "> closes no open element");
     const Open& top = stack_.back();
     if (top.name != n) {
       // The fix belongs where the unclosed element opens: report it there.
       for (const Open& o : stack_)
         if (o.name == n) {
-          problem_ = {top.line, "not well-formed XML: <" + clip(top.name) + "> is never closed (</" + clip(n) + "> on line " +
-                                    std::to_string(line_) + " comes first): end it with /> or add </" + clip(top.name) + ">"};
+          problem_ = {top.line, "not well-formed XML: <" + clip(top.name) + "> is never closed (</" + clip(n) +
+                                    "> on line " + std::to_string(line_) + " comes first): end it with /> or add </" +
+                                    clip(top.name) + ">"};
           return false;
         }
-      return fail("</" + clip(n) + "> does not match the open <" + clip(top.name) + "> (line " + std::to_string(top.line) + ")");
+      return fail("</" + clip(n) + "> does not match the open <" + clip(top.name) + "> (line " +
+                  std::to_string(top.line) + ")");
     }
     stack_.pop_back();
     if (stack_.empty()) rootClosed_ = true;
@@ -130,9 +139,11 @@ class Scanner {
     for (;;) {
       while (q < t_.size() && isXmlSpace(t_[q])) ++q;
       advanceTo(q);
-      if (q >= t_.size()) return fail("the file ends inside the tag <" + clip(element) + "> (line " + std::to_string(tagLine) + ")");
+      if (q >= t_.size())
+        return fail("the file ends inside the tag <" + clip(element) + "> (line " + std::to_string(tagLine) + ")");
       if (t_[q] == '/') {
-        if (q + 1 >= t_.size() || t_[q + 1] != '>') return fail("'/' in the tag <" + clip(element) + "> must be followed by '>'");
+        if (q + 1 >= t_.size() || t_[q + 1] != '>')
+          return fail("'/' in the tag <" + clip(element) + "> must be followed by '>'");
         advanceTo(q + 2);
         return true;
       }
@@ -152,7 +163,8 @@ class Scanner {
       if (q >= t_.size() || (t_[q] != '"' && t_[q] != '\''))
         return fail(who + ": the value must be in quotes (" + clip(attribute) + "=\"...\")");
       const size_t close = t_.find(t_[q], q + 1);
-      if (close == std::string::npos) return fail(who + ": the value's closing quote (" + std::string(1, t_[q]) + ") is missing");
+      if (close == std::string::npos)
+        return fail(who + ": the value's closing quote (" + std::string(1, t_[q]) + ") is missing");
       if (std::find(attributes.begin(), attributes.end(), attribute) != attributes.end())
         return fail(who + " is given twice (an attribute may appear once)");
       attributes.push_back(attribute);
@@ -171,7 +183,8 @@ class Scanner {
 std::string inWords(int errorId) {
   switch (errorId) {
     case tinyxml2::XML_ERROR_PARSING_ELEMENT: return "an element is malformed";
-    case tinyxml2::XML_ERROR_PARSING_ATTRIBUTE: return "an attribute is malformed (write name=\"value\", each name once)";
+    case tinyxml2::XML_ERROR_PARSING_ATTRIBUTE:
+      return "an attribute is malformed (write name=\"value\", each name once)";
     case tinyxml2::XML_ERROR_PARSING_TEXT: return "text where it cannot be";
     case tinyxml2::XML_ERROR_PARSING_CDATA: return "a CDATA section is malformed";
     case tinyxml2::XML_ERROR_PARSING_COMMENT: return "a comment is malformed";
@@ -273,7 +286,9 @@ bool findControlCharacter(const std::string& text, ControlCharacter& found) {
     }
     if (p < verbatimEnd || (byte != '<' && byte != '&')) continue;
     if (byte == '<') {
-      const char* end = text.compare(p, 4, "<!--") == 0 ? "-->" : text.compare(p, 9, "<![CDATA[") == 0 ? "]]>" : nullptr;
+      const char* end = text.compare(p, 4, "<!--") == 0        ? "-->"
+                        : text.compare(p, 9, "<![CDATA[") == 0 ? "]]>"
+                                                               : nullptr;
       if (end) verbatimEnd = std::min(size, text.find(end, p + 4));  // unclosed: the rest (the parser reports it)
       continue;
     }
@@ -293,8 +308,9 @@ bool findControlCharacter(const std::string& text, ControlCharacter& found) {
     if (q == digitsFrom || q >= size || text[q] != ';') continue;
     // XML's characters besides the controls: no surrogate halves, U+FFFE or U+FFFF, nothing beyond
     // U+10FFFF. tinyxml2 wrote a reference to one as bytes that are no UTF-8, or as nothing.
-    const bool noCharacter = code < 0x20 ? forbidden(static_cast<unsigned>(code))
-                                         : (code >= 0xD800 && code <= 0xDFFF) || code == 0xFFFE || code == 0xFFFF || code > 0x10FFFF;
+    const bool noCharacter =
+        code < 0x20 ? forbidden(static_cast<unsigned>(code))
+                    : (code >= 0xD800 && code <= 0xDFFF) || code == 0xFFFE || code == 0xFFFF || code > 0x10FFFF;
     if (!noCharacter) continue;
     found = {p, static_cast<unsigned>(code), text.substr(p, q + 1 - p)};
     return true;
@@ -324,8 +340,10 @@ bool findInvalidUtf8(const std::string& text, InvalidUtf8& found) {
     size_t length = 0;
     unsigned low = 0x80, high = 0xBF;
     if (lead >= 0xC2 && lead <= 0xDF) length = 2;
-    else if (lead >= 0xE0 && lead <= 0xEF) length = 3, low = lead == 0xE0 ? 0xA0 : 0x80, high = lead == 0xED ? 0x9F : 0xBF;
-    else if (lead >= 0xF0 && lead <= 0xF4) length = 4, low = lead == 0xF0 ? 0x90 : 0x80, high = lead == 0xF4 ? 0x8F : 0xBF;
+    else if (lead >= 0xE0 && lead <= 0xEF)
+      length = 3, low = lead == 0xE0 ? 0xA0 : 0x80, high = lead == 0xED ? 0x9F : 0xBF;
+    else if (lead >= 0xF0 && lead <= 0xF4)
+      length = 4, low = lead == 0xF0 ? 0x90 : 0x80, high = lead == 0xF4 ? 0x8F : 0xBF;
     if (length == 0)
       return notUtf8(p, lead, lead < 0xC0 ? " (a continuation byte, with no character begun before it)"
                                           : " (no UTF-8 character begins with it)");
@@ -337,11 +355,12 @@ bool findInvalidUtf8(const std::string& text, InvalidUtf8& found) {
       if (next < (k == 1 ? low : 0x80) || next > (k == 1 ? high : 0xBF))
         return notUtf8(p, lead, " followed by " + hex(next) + " (not a UTF-8 character)");
     }
-    if (lead == 0xEF && static_cast<unsigned char>(text[p + 1]) == 0xBF && static_cast<unsigned char>(text[p + 2]) >= 0xBE) {
+    if (lead == 0xEF && static_cast<unsigned char>(text[p + 1]) == 0xBF &&
+        static_cast<unsigned char>(text[p + 2]) >= 0xBE) {
       const unsigned code = static_cast<unsigned char>(text[p + 2]) == 0xBE ? 0xFFFE : 0xFFFF;
       found = {p,
-               "the character " + codePointName(code) + " (bytes 0xEF 0xBF " + hex(static_cast<unsigned char>(text[p + 2])) +
-                   "), which XML does not allow",
+               "the character " + codePointName(code) + " (bytes 0xEF 0xBF " +
+                   hex(static_cast<unsigned char>(text[p + 2])) + "), which XML does not allow",
                true};
       return true;
     }

@@ -25,7 +25,8 @@ inline bool isXmlSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c 
 /// Whether c may start an XML name (ASCII letters, '_', ':', and every byte of a multi-byte
 /// UTF-8 character, which the scans take as name characters without decoding them) ...
 inline bool isXmlNameStart(char c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' || c == ':' || static_cast<unsigned char>(c) >= 0x80;
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' || c == ':' ||
+         static_cast<unsigned char>(c) >= 0x80;
 }
 /// ... or continue one (digits, '-' and '.' too).
 inline bool isXmlNameChar(char c) { return isXmlNameStart(c) || (c >= '0' && c <= '9') || c == '-' || c == '.'; }

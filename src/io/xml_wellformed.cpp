@@ -31,7 +31,8 @@ class Scan {
       } else if (starts(p, "<![CDATA[")) {
         p = past(p + 9, "]]>");
       } else if (starts(p, "<?")) {
-        if (p == documentStart && starts(p, "<?xml") && p + 5 < t_.size() && isXmlSpace(t_[p + 5]) && !declaration(p + 5))
+        if (p == documentStart && starts(p, "<?xml") && p + 5 < t_.size() && isXmlSpace(t_[p + 5]) &&
+            !declaration(p + 5))
           return true;
         p = past(p + 2, "?>");
       } else if (starts(p, "<!")) {

@@ -95,7 +95,8 @@ bool ContactProjector::shortenPushes() {
   // Each pushed slot once, with its velocity before the pushes (its first saved one: a stable
   // sort keeps the entries of one slot in the order they were saved).
   pushedFrom_ = restituted_;
-  std::stable_sort(pushedFrom_.begin(), pushedFrom_.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::stable_sort(pushedFrom_.begin(), pushedFrom_.end(),
+                   [](const auto& x, const auto& y) { return x.first < y.first; });
   pushedFrom_.erase(std::unique(pushedFrom_.begin(), pushedFrom_.end(),
                                 [](const auto& x, const auto& y) { return x.first == y.first; }),
                     pushedFrom_.end());

@@ -158,7 +158,8 @@ bool projectByEnumeration(const std::vector<double>& inverseMass, const std::vec
   if (m > kMaxEnumerationRows || n > 2 * kMaxEnumerationBodies) return false;
   impulses.assign(m, 0.0);
   // A_SS has rank at most the movable bodies' dimensions: larger active sets are singular.
-  const int dims = 2 * static_cast<int>(std::count_if(inverseMass.begin(), inverseMass.end(), [](double w) { return w != 0.0; }));
+  const int dims =
+      2 * static_cast<int>(std::count_if(inverseMass.begin(), inverseMass.end(), [](double w) { return w != 0.0; }));
   // Sizes bounded at compile time: the enumeration's 2^m small systems then allocate nothing
   // (malloc and free took a sixth of a rattling box's time, the LU factorisations half).
   constexpr int kRows = kMaxEnumerationRows, kDims = 2 * kMaxEnumerationBodies;

@@ -59,7 +59,8 @@ Status SvgFrames::open(const std::string& dir, std::unique_ptr<SvgFrames>& out) 
 // appears never reads one half written, and a frame that fails (a full disk) leaves an earlier
 // run's frame of that number as it was.
 Status SvgFrames::frame(const Picture& picture, long number) {
-  return io::writeStaged(svgFrameName(dir_, number), "SVG frame", [&](const std::string& to) { return writeSvg(to, picture); });
+  return io::writeStaged(svgFrameName(dir_, number), "SVG frame",
+                         [&](const std::string& to) { return writeSvg(to, picture); });
 }
 
 Status FrameOutputs::start(const SceneFile& file, const State& initial) {

@@ -236,7 +236,8 @@ class Window {
 
   void showNote(const std::string& note) {
     note_ = note;
-    noteUntil_ = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(kNoteSeconds));
+    noteUntil_ =
+        Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(kNoteSeconds));
     glutPostRedisplay();
   }
 
@@ -274,7 +275,8 @@ class Window {
   void saveSvg() {
     const std::string path = savedName("svg");
     const Picture picture = makePicture(file_, state_, trails_, view_);
-    saved(io::writeStaged(path, "the window's SVG", [&](const std::string& to) { return writeSvg(to, picture); }), path);
+    saved(io::writeStaged(path, "the window's SVG", [&](const std::string& to) { return writeSvg(to, picture); }),
+          path);
   }
 
   /// p: the window's pixels as they are about to be shown, as PNG.

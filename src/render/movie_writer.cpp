@@ -93,7 +93,8 @@ MovieWriter::~MovieWriter() {
   if (fd_ >= 0 || pid_ > 0) (void)close();
 }
 
-Status MovieWriter::open(const std::string& path, int width, int height, double fps, std::unique_ptr<MovieWriter>& out) {
+Status MovieWriter::open(const std::string& path, int width, int height, double fps,
+                         std::unique_ptr<MovieWriter>& out) {
   if (!isMovieName(path))
     return Status::error("the movie \"" + path + "\": a movie's name ends in " + movieEndings() +
                          " (ffmpeg writes others as pictures or not at all)");

@@ -122,7 +122,8 @@ inline long wholeFiniteRecords(const std::string& path, int n, RecordLayout layo
     EXPECT_TRUE(s.isOk()) << s.message();
     if (!s || atEnd) return s ? records : -1;
     bool finite = record.x.allFinite() && record.v.allFinite();
-    for (const Impulse& im : record.log.impulses) finite = finite && std::isfinite(im.n.x()) && std::isfinite(im.n.y()) && std::isfinite(im.tau);
+    for (const Impulse& im : record.log.impulses)
+      finite = finite && std::isfinite(im.n.x()) && std::isfinite(im.n.y()) && std::isfinite(im.tau);
     for (int k = 0; k < record.log.polynomials.size(); ++k)
       for (int c = 0; c < record.log.polynomials.length(k); ++c)
         finite = finite && std::isfinite(record.log.polynomials.coefficients(k)[c]);

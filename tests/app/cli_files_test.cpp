@@ -44,7 +44,8 @@ void expectFailure(const Outcome& o, const std::vector<std::string>& fragments) 
 }
 
 TEST_F(CliFiles, UnreadableScenePaths) {
-  expectFailure(runFosssim({"-s", path("missing.xml"), "-d", "0"}), {path("missing.xml") + ": cannot open", "No such file"});
+  expectFailure(runFosssim({"-s", path("missing.xml"), "-d", "0"}),
+                {path("missing.xml") + ": cannot open", "No such file"});
   expectFailure(runFosssim({"-s", dir_.string(), "-d", "0"}), {dir_.string() + ": cannot read", "directory"});
   // An endless device is not read forever.
   expectFailure(runFosssim({"-s", "/dev/zero", "-d", "0"}), {"/dev/zero: ", "larger than"});
@@ -108,7 +109,8 @@ TEST_F(CliFiles, APipeThatIsReadIsAnOutput) {
       const ssize_t n = read(reader, buffer, sizeof buffer);
       if (n > 0) received.append(buffer, static_cast<size_t>(n));
       else if (n == 0 && !received.empty()) break;
-      else if (n == 0 || errno == EINTR || errno == EAGAIN) ++idle, std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      else if (n == 0 || errno == EINTR || errno == EAGAIN)
+        ++idle, std::this_thread::sleep_for(std::chrono::milliseconds(10));
       else break;
     }
   });
@@ -134,7 +136,9 @@ TEST_F(CliFiles, SceneWithoutReadPermission) {
   RunOptions options;
   options.asNobody = geteuid() == 0;
   const Outcome o = runFosssim({"-s", p, "-d", "0"}, options);
-  if (options.asNobody && o.exited && o.code == 125) GTEST_SKIP() << "cannot run FOSSSim as the unprivileged user nobody here (no setuid, or the build is out of its reach)";
+  if (options.asNobody && o.exited && o.code == 125)
+    GTEST_SKIP()
+        << "cannot run FOSSSim as the unprivileged user nobody here (no setuid, or the build is out of its reach)";
   expectFailure(o, {p + ": cannot open", "Permission denied"});
 }
 
@@ -199,16 +203,18 @@ TEST_F(CliFiles, TrajectoriesThatDoNotFit) {
 
 TEST_F(CliFiles, ASimulationThatBlowsUpIsAnError) {
   // Forces beyond the range of doubles: the step reports the particle, nothing is written as if fine.
-  const std::string s = write("boom.xml", "<scene><duration time=\"1\"/><integrator type=\"explicit-euler\" dt=\"0.1\"/>"
-                                          "<particle m=\"1e-300\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>"
-                                          "<simplegravity fx=\"0\" fy=\"0\"/><constantforce fx=\"1e300\" fy=\"0\"/></scene>");
+  const std::string s = write("boom.xml",
+                              "<scene><duration time=\"1\"/><integrator type=\"explicit-euler\" dt=\"0.1\"/>"
+                              "<particle m=\"1e-300\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>"
+                              "<simplegravity fx=\"0\" fy=\"0\"/><constantforce fx=\"1e300\" fy=\"0\"/></scene>");
   expectFailure(runFosssim({"-s", s, "-d", "0", "-q", "-o", path("boom.bin")}), {"step 1", "particle 0", "non-finite"});
 }
 
 TEST_F(CliFiles, WarningsDoNotFailTheRun) {
-  const std::string s = write("warn.xml", "<scene><duration time=\"0.1\"/><integrator type=\"explicit-euler\" dt=\"0.01\"/>\n"
-                                          "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\" spin=\"3\"/>\n"
-                                          "<glue strength=\"1\"/></scene>");
+  const std::string s = write("warn.xml",
+                              "<scene><duration time=\"0.1\"/><integrator type=\"explicit-euler\" dt=\"0.01\"/>\n"
+                              "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\" spin=\"3\"/>\n"
+                              "<glue strength=\"1\"/></scene>");
   // Without -q: -q shows the warnings as one line counting them (cli_scene_check_test.cpp).
   const Outcome o = runFosssim({"-s", s, "-d", "0"});
   EXPECT_TRUE(exitedWith(o, 0)) << o;

@@ -24,10 +24,11 @@ class CliOutputs : public TempDirTest {
   }
   /// Two particles that meet (continuous-time or hybrid: mid-step records, impulses, polynomials).
   std::string meeting(const std::string& name, const std::string& collision, double duration = 2) const {
-    return write(name, "<scene><duration time=\"" + std::to_string(duration) +
-                           "\"/><integrator type=\"explicit-euler\" dt=\"0.01\"/><collision type=\"" + collision +
-                           "\"/><particle m=\"1\" px=\"0\" py=\"0\" vx=\"1\" vy=\"0\" fixed=\"0\" radius=\"0.1\"/>"
-                           "<particle m=\"1\" px=\"3\" py=\"0\" vx=\"-1\" vy=\"0\" fixed=\"0\" radius=\"0.1\"/></scene>\n");
+    return write(name,
+                 "<scene><duration time=\"" + std::to_string(duration) +
+                     "\"/><integrator type=\"explicit-euler\" dt=\"0.01\"/><collision type=\"" + collision +
+                     "\"/><particle m=\"1\" px=\"0\" py=\"0\" vx=\"1\" vy=\"0\" fixed=\"0\" radius=\"0.1\"/>"
+                     "<particle m=\"1\" px=\"3\" py=\"0\" vx=\"-1\" vy=\"0\" fixed=\"0\" radius=\"0.1\"/></scene>\n");
   }
 };
 
@@ -55,7 +56,8 @@ TEST_F(CliOutputs, AnOutputThatIsTheSceneIsRefused) {
   // The same name, another spelling of it, a symbolic link, a hard link.
   fs::create_symlink(scene, path("symlink.bin"));
   fs::create_hard_link(scene, path("hardlink.bin"));
-  for (const std::string& out : {scene, (dir_ / "." / "scene.xml").string(), path("symlink.bin"), path("hardlink.bin")}) {
+  for (const std::string& out :
+       {scene, (dir_ / "." / "scene.xml").string(), path("symlink.bin"), path("hardlink.bin")}) {
     SCOPED_TRACE(out);
     expectRefused(with({"-o", out}), scene, "-o \"" + out + "\" is the same file");
   }
@@ -108,13 +110,14 @@ TEST_F(CliOutputs, StatsIsNeitherAnInputNorAnotherOutput) {
   expectClash({"-o", o1, "--stats", o1}, {"--stats \"" + o1 + "\" and -o \"" + o1 + "\" are the same file"},
               {o1, o1Partial});
   // The trajectory is written under its partial name: a CSV there would be renamed to "o1.bin".
-  expectClash({"-o", o1, "--stats", o1Partial}, {"--stats \"" + o1Partial + "\" and the partial file \"" + o1Partial + "\" of -o"},
-              {o1, o1Partial});
+  expectClash({"-o", o1, "--stats", o1Partial},
+              {"--stats \"" + o1Partial + "\" and the partial file \"" + o1Partial + "\" of -o"}, {o1, o1Partial});
   // Another spelling of the same name, and a hard link to an existing file.
   expectClash({"-o", o1, "--stats", (dir_ / "." / "o1.bin").string()}, {"are the same file"}, {o1, o1Partial});
   write("old.bin", "an older trajectory");
   fs::create_hard_link(path("old.bin"), path("old-link.csv"));
-  expectClash({"-o", path("old.bin"), "--stats", path("old-link.csv")}, {"are the same file"}, {path("old.partial.bin")});
+  expectClash({"-o", path("old.bin"), "--stats", path("old-link.csv")}, {"are the same file"},
+              {path("old.partial.bin")});
   EXPECT_EQ(slurp(path("old.bin")), "an older trajectory");
   // -o through a symbolic link is written next to the file it points at, under that file's
   // partial name.
@@ -133,8 +136,10 @@ TEST_F(CliOutputs, StatsIsNeitherAnInputNorAnotherOutput) {
               {framePartial});
   // -m's folder under an output's name (or its partial name): the folder was made, then the
   // output's open failed on it.
-  expectClash({"-o", o1, "-m", o1}, {"-o \"" + o1 + "\" is the folder that -m writes its frames into"}, {o1, o1Partial});
-  expectClash({"-o", o1, "-m", o1Partial + "/"}, {"the partial file \"" + o1Partial + "\" of -o", "-m"}, {o1, o1Partial});
+  expectClash({"-o", o1, "-m", o1}, {"-o \"" + o1 + "\" is the folder that -m writes its frames into"},
+              {o1, o1Partial});
+  expectClash({"-o", o1, "-m", o1Partial + "/"}, {"the partial file \"" + o1Partial + "\" of -o", "-m"},
+              {o1, o1Partial});
   expectClash({"--stats", o1, "-m", (dir_ / "." / "o1.bin").string()}, {"--stats \"" + o1 + "\" is the folder"}, {o1});
   if (FOSSSIM_WITH_RENDER) {
     expectClash({"--stats", o1, "-g", "1", "--png-dir", o1}, {"is the folder that --png-dir writes"}, {o1});
@@ -159,7 +164,8 @@ TEST_F(CliOutputs, StatsIsNeitherAnInputNorAnotherOutput) {
 // Frames are written over by number: after a 20-step run, a 10-step run into the same folder left
 // frames 11 to 20 of the first, which passed for the second's without a word.
 TEST_F(CliOutputs, FramesOfAnEarlierRunAreWarnedAbout) {
-  const std::string longer = meeting("long.xml", "continuous-time", 0.2), shorter = meeting("short.xml", "continuous-time", 0.1);
+  const std::string longer = meeting("long.xml", "continuous-time", 0.2),
+                    shorter = meeting("short.xml", "continuous-time", 0.1);
   const std::string svg = path("svg");
   ASSERT_TRUE(exitedWith(runFosssim({"-s", longer, "-d", "0", "-q", "-m", svg}), 0));
   const Outcome again = runFosssim({"-s", longer, "-d", "0", "-q", "-m", svg});  // the same frames: nothing to say
@@ -167,8 +173,9 @@ TEST_F(CliOutputs, FramesOfAnEarlierRunAreWarnedAbout) {
   EXPECT_FALSE(contains(again.err, "earlier run")) << again;
   const Outcome o = runFosssim({"-s", shorter, "-d", "0", "-q", "-m", svg});
   EXPECT_TRUE(exitedWith(o, 0)) << o;
-  EXPECT_TRUE(contains(o.err, "FOSSSim: warning: -m: \"" + svg + "\" holds 10 frames of an earlier run beyond this run's 10 "
-                              "(frame00000000000000000011.svg to frame00000000000000000020.svg)"))
+  EXPECT_TRUE(contains(o.err, "FOSSSim: warning: -m: \"" + svg +
+                                  "\" holds 10 frames of an earlier run beyond this run's 10 "
+                                  "(frame00000000000000000011.svg to frame00000000000000000020.svg)"))
       << o;
   // Thinned out: 20 steps, every 4th is 5 frames; frames 6 to 20 are the earlier run's.
   const Outcome thinned = runFosssim({"-s", longer, "-d", "0", "-q", "-m", svg, "--frame-every", "4"});
@@ -184,8 +191,9 @@ TEST_F(CliOutputs, FrameEveryBeyondTheRunIsRefused) {
                                                  std::vector<std::string>{"-g", "1", "--png-dir", png}}) {
     const Outcome o = runFosssim(joined({"-s", scene, "-d", "0", "-q", "--frame-every", "11"}, frames));
     EXPECT_TRUE(exitedWith(o, 2)) << o;
-    EXPECT_TRUE(contains(o.err, "FOSSSim: --frame-every 11 writes a frame after steps 11, 22, ..., and the scene runs 10 "
-                                "steps: -g 1, -m and --movie would write no frame (give at most --frame-every 10)"))
+    EXPECT_TRUE(contains(o.err,
+                         "FOSSSim: --frame-every 11 writes a frame after steps 11, 22, ..., and the scene runs 10 "
+                         "steps: -g 1, -m and --movie would write no frame (give at most --frame-every 10)"))
         << o;
     EXPECT_FALSE(fs::exists(frames[0] == "-m" ? svg : png));
   }

@@ -48,7 +48,8 @@ TEST(CliSceneCheck, CheckLoadsAndSummarisesWithoutRunning) {
   const TempScene scene(kHead + "  <edge i=\"0\" j=\"1\"/>\n  <simplegravity fx=\"0\" fy=\"-9.81\"/>\n</scene>\n");
   const Outcome o = runFosssim({"-s", scene.path, "--check"});
   EXPECT_TRUE(exitedWith(o, 0)) << o;
-  EXPECT_TRUE(contains(o.out, scene.path + ": ok (2 particles, 1 edge, 0 half-planes, 1 force, 5 steps of dt 0.01")) << o;
+  EXPECT_TRUE(contains(o.out, scene.path + ": ok (2 particles, 1 edge, 0 half-planes, 1 force, 5 steps of dt 0.01"))
+      << o;
   EXPECT_EQ(o.err, "");
 }
 
@@ -57,7 +58,8 @@ TEST(CliSceneCheck, CheckLoadsAndSummarisesWithoutRunning) {
 // collision handling (continuous-time and hybrid used to test the pair first and report an
 // overflow of its coordinates instead).
 TEST(CliSceneCheck, CheckRunsNothingAndARunNamesTheForceThatWentNonFinite) {
-  for (const std::string collision : {"", "  <collision type=\"continuous-time\"/>\n", "  <collision type=\"hybrid\"/>\n"}) {
+  for (const std::string collision :
+       {"", "  <collision type=\"continuous-time\"/>\n", "  <collision type=\"hybrid\"/>\n"}) {
     SCOPED_TRACE(collision);
     std::string text = kHead + collision + "  <gravitationalforce i=\"0\" j=\"1\" G=\"1\"/>\n</scene>\n";
     text.replace(text.find("px=\"1\""), 6, "px=\"0\"");
@@ -73,11 +75,12 @@ TEST(CliSceneCheck, CheckRunsNothingAndARunNamesTheForceThatWentNonFinite) {
 }
 
 TEST(CliSceneCheck, CheckReportsEveryErrorInLineOrderWithTheWarningFirst) {
-  const TempScene scene(kHead +
-                        "  <particle m=\"1\" pxx=\"2\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n"  // 6: typo, then missing px
-                        "  <edge i=\"0\" j=\"9\"/>\n"                                              // 7: no particle 9
-                        "  <collision type=\"simple\" COR=\"2\"/>\n"                                // 8
-                        "</scene>\n");
+  const TempScene scene(
+      kHead +
+      "  <particle m=\"1\" pxx=\"2\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n"  // 6: typo, then missing px
+      "  <edge i=\"0\" j=\"9\"/>\n"                                               // 7: no particle 9
+      "  <collision type=\"simple\" COR=\"2\"/>\n"                                // 8
+      "</scene>\n");
   const Outcome o = runFosssim({"-s", scene.path, "--check"});
   EXPECT_TRUE(exitedWith(o, 1)) << o;
   EXPECT_EQ(o.out, "");
@@ -101,7 +104,8 @@ TEST(CliSceneCheck, StrictMakesWarningsErrors) {
   EXPECT_TRUE(exitedWith(lenient, 0)) << lenient;
   const Outcome strict = runFosssim({"-s", scene.path, "-d", "0", "-q", "--strict"});
   EXPECT_TRUE(exitedWith(strict, 1)) << strict;
-  EXPECT_TRUE(contains(strict.err, "error: " + scene.path + ":6: <simplegravty>: unknown element ignored; did you mean <simplegravity>?"))
+  EXPECT_TRUE(contains(strict.err, "error: " + scene.path +
+                                       ":6: <simplegravty>: unknown element ignored; did you mean <simplegravity>?"))
       << strict;
   EXPECT_TRUE(contains(strict.err, "--strict")) << strict;
   const Outcome strictCheck = runFosssim({"-s", scene.path, "--check", "--strict"});
@@ -116,7 +120,8 @@ TEST(CliSceneCheck, QuietPrintsOneLineCountingTheWarnings) {
   const TempScene scene(text);
   const Outcome quiet = runFosssim({"-s", scene.path, "-d", "0", "-q"});
   EXPECT_TRUE(exitedWith(quiet, 0)) << quiet;
-  EXPECT_EQ(quiet.err, "FOSSSim: warning: " + scene.path + ": 8 warnings about the scene (run without -q to see them)\n");
+  EXPECT_EQ(quiet.err,
+            "FOSSSim: warning: " + scene.path + ": 8 warnings about the scene (run without -q to see them)\n");
   const Outcome loud = runFosssim({"-s", scene.path, "--check"});
   EXPECT_TRUE(exitedWith(loud, 0)) << loud;
   EXPECT_EQ(count(loud.err, "unknown element ignored"), 3u) << loud;  // then counted
@@ -206,7 +211,8 @@ TEST(CliSceneCheck, LongParticlePathsAreBounded) {
   const TempScene longRun(longText, "long");
   const Outcome refused = runFosssim({"-s", longRun.path, "--check"});
   EXPECT_TRUE(exitedWith(refused, 1)) << refused;
-  EXPECT_TRUE(contains(refused.err, "<particlepath> attribute 'duration': the trails would keep more than 1e+07 positions"))
+  EXPECT_TRUE(
+      contains(refused.err, "<particlepath> attribute 'duration': the trails would keep more than 1e+07 positions"))
       << refused;
 }
 

@@ -22,7 +22,8 @@ const std::string kBad = std::string(FOSSSIM_TEST_DATA) + "/bad";
 /// A small good scene in a temporary file, for the option tests.
 std::string goodScene() {
   static const std::string path = [] {
-    const std::string p = std::filesystem::temp_directory_path() / ("fosssim-cli-good-" + std::to_string(getpid()) + ".xml");
+    const std::string p =
+        std::filesystem::temp_directory_path() / ("fosssim-cli-good-" + std::to_string(getpid()) + ".xml");
     std::ofstream(p) << "<scene><duration time=\"0.1\"/><integrator type=\"explicit-euler\" dt=\"0.01\"/>"
                         "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"1\" vy=\"0\" fixed=\"0\"/></scene>\n";
     return p;
@@ -126,8 +127,9 @@ TEST(Cli, GradingRefusesWhatItWouldIgnore) {
   for (const auto& extra : refused) {
     std::vector<std::string> args = {"-s", goodScene(), "-i", "b.bin"};
     args.insert(args.end(), extra.begin(), extra.end());
-    expectUsageError(args, extra[0] == "--check" ? "--check runs nothing, so it cannot grade"
-                                                 : extra[0] + (extra[0] == "-g" ? " 1" : "") + " cannot be used with it");
+    expectUsageError(args, extra[0] == "--check"
+                               ? "--check runs nothing, so it cannot grade"
+                               : extra[0] + (extra[0] == "-g" ? " 1" : "") + " cannot be used with it");
   }
   EXPECT_FALSE(std::filesystem::exists(dir));
   // What grading does use is accepted (the grade itself fails: b.bin does not exist).
@@ -168,7 +170,8 @@ TEST(Cli, ValuesAfterAnEqualsSign) {
   const Outcome o = runFosssim({"-s", goodScene(), "-d", "0", "-q", "--threads=2"});
   EXPECT_TRUE(exitedWith(o, 0)) << o;
   // Short options too: "-o=out.bin" wrote a file named "=out.bin", and "-d=0" was refused.
-  const std::string out = std::filesystem::temp_directory_path() / ("fosssim-cli-eq-" + std::to_string(getpid()) + ".bin");
+  const std::string out =
+      std::filesystem::temp_directory_path() / ("fosssim-cli-eq-" + std::to_string(getpid()) + ".bin");
   const Outcome shortForms = runFosssim({"-s=" + goodScene(), "-d=0", "-q", "-o=" + out});
   EXPECT_TRUE(exitedWith(shortForms, 0)) << shortForms;
   EXPECT_TRUE(std::filesystem::exists(out));
@@ -202,7 +205,8 @@ TEST(Cli, AnOptionIsNoOtherOptionsValue) {
     const bool existed = std::filesystem::exists(extra[1]);
     const Outcome o = runFosssim(args);
     EXPECT_TRUE(exitedWith(o, 2)) << o;
-    EXPECT_TRUE(contains(o.err, "option " + extra[0] + " needs a value, and the next word \"" + extra[1] + "\" is an option"))
+    EXPECT_TRUE(
+        contains(o.err, "option " + extra[0] + " needs a value, and the next word \"" + extra[1] + "\" is an option"))
         << o;
     // Without the check a file of the option's name appeared in the working directory.
     if (!existed && std::filesystem::remove_all(extra[1]) > 0) ADD_FAILURE() << "wrote \"" << extra[1] << "\"";
@@ -285,12 +289,13 @@ void runBothModes(const std::string& scene, Check&& check) {
 // A run whose energy blows up (a ball falling into a penalty layer of stiffness 1e200) stops at
 // the step it happens with exit 1 and a message naming step, particle, force and what to change.
 TEST(Cli, AnEnergyBlowUpStopsTheRunWithExitOne) {
-  const std::string scene = tempScene("blowup",
-                                      "<scene><duration time=\"2\"/><integrator type=\"symplectic-euler\" dt=\"0.01\"/>"
-                                      "<collision type=\"penalty\" k=\"1e200\" thickness=\"0.01\"/>"
-                                      "<particle m=\"1\" px=\"0\" py=\"1\" vx=\"0\" vy=\"0\" fixed=\"0\" radius=\"0.1\"/>"
-                                      "<halfplane px=\"0\" py=\"0\" nx=\"0\" ny=\"1\"/>"
-                                      "<simplegravity fx=\"0\" fy=\"-9.81\"/></scene>\n");
+  const std::string scene =
+      tempScene("blowup",
+                "<scene><duration time=\"2\"/><integrator type=\"symplectic-euler\" dt=\"0.01\"/>"
+                "<collision type=\"penalty\" k=\"1e200\" thickness=\"0.01\"/>"
+                "<particle m=\"1\" px=\"0\" py=\"1\" vx=\"0\" vy=\"0\" fixed=\"0\" radius=\"0.1\"/>"
+                "<halfplane px=\"0\" py=\"0\" nx=\"0\" ny=\"1\"/>"
+                "<simplegravity fx=\"0\" fy=\"-9.81\"/></scene>\n");
   runBothModes(scene, [](const Outcome& o, bool) {
     EXPECT_TRUE(exitedWith(o, 1)) << o;
     for (const char* part : {"FOSSSim: error: step 4", "energy blow-up", "particle 0", "collision penalty",

@@ -85,7 +85,8 @@ TEST(ProgressOutput, SlowRunsReportAtLeastEveryTenSeconds) {
   EXPECT_EQ(printed.back(), 1000);
   for (std::size_t k = 1; k < printed.size(); ++k) {
     EXPECT_GT(printed[k], printed[k - 1]);
-    EXPECT_LT((printed[k] - 1 - printed[k - 1]) * 3.0, ProgressOutput::kInterval.count()) << "after step " << printed[k - 1];
+    EXPECT_LT((printed[k] - 1 - printed[k - 1]) * 3.0, ProgressOutput::kInterval.count())
+        << "after step " << printed[k - 1];
   }
   EXPECT_LT(printed.size(), 1000u / 3);
 }
@@ -119,8 +120,9 @@ TEST(DiskBudget, WarnsOnceWhenTheEstimateIsLarge) {
   }
   // 2 MiB a step for 1000 steps: about 2000 MiB = 2.0 GiB, said after the first step.
   ASSERT_EQ(warnings.size(), 1u);
-  EXPECT_NE(warnings[0].find("t.bin: at this rate the trajectory will take about 2.0 GiB (2.0 MiB per step, 1000 steps)"),
-            std::string::npos)
+  EXPECT_NE(
+      warnings[0].find("t.bin: at this rate the trajectory will take about 2.0 GiB (2.0 MiB per step, 1000 steps)"),
+      std::string::npos)
       << warnings[0];
   EXPECT_NE(warnings[0].find("use --compact"), std::string::npos) << warnings[0];
 
@@ -183,7 +185,8 @@ TEST(TrajectoryOutput, StopsWithWholeRecordsBeforeTheDiskIsFull) {
   const std::string path = (dir.path / "t.bin").string();
   // Two particles approaching: continuous-time records with impulses and polynomials.
   const SceneFile file = parsed(
-      "<scene><duration time=\"100\"/><integrator type=\"explicit-euler\" dt=\"0.01\"/><collision type=\"continuous-time\"/>"
+      "<scene><duration time=\"100\"/><integrator type=\"explicit-euler\" dt=\"0.01\"/><collision "
+      "type=\"continuous-time\"/>"
       "<particle m=\"1\" px=\"0\" py=\"0\" vx=\"1\" vy=\"0\" fixed=\"0\"/>"
       "<particle m=\"1\" px=\"3\" py=\"0\" vx=\"-1\" vy=\"0\" fixed=\"0\"/></scene>");
   SimulatorOptions options;

@@ -132,7 +132,8 @@ inline bool contains(const std::string& text, const std::string& fragment) {
 /// True when `o` ended by exit with `code`: false for crashes, time-outs and sanitizer reports
 /// (AddressSanitizer and UBSan may exit with status 1 themselves, so stderr is checked too).
 inline bool exitedWith(const Outcome& o, int code) {
-  return o.exited && !o.timedOut && o.code == code && !contains(o.err, "Sanitizer") && !contains(o.err, "runtime error:");
+  return o.exited && !o.timedOut && o.code == code && !contains(o.err, "Sanitizer") &&
+         !contains(o.err, "runtime error:");
 }
 
 }  // namespace fosssim::testing

@@ -80,7 +80,8 @@ TEST(PileScenes, NamesSayCorAndHeightAndRunsAreLong) {
   }
   // From high: the block lands at speed (lifted by at least a few radii more than from low).
   for (const char* cor : {"cor0", "cor0.5"}) {
-    const bench::BenchScene low = make(std::string("pile-low-") + cor, 400, 1), high = make(std::string("pile-high-") + cor, 400, 1);
+    const bench::BenchScene low = make(std::string("pile-low-") + cor, 400, 1),
+                            high = make(std::string("pile-high-") + cor, 400, 1);
     EXPECT_GT(lowest(high), lowest(low) + 10 * high.scene.radius[0]) << cor;
   }
 }
@@ -116,7 +117,8 @@ TEST(PileScenes, RestingPileComesToRestAndPouredPileDoesNot) {
   for (unsigned seed : {1u, 2u}) {
     for (bool compat : {false, true}) {
       const double rest = restShareAfter("pile-rest", 120, seed, 200, compat);
-      std::printf("pile-rest N=120 seed %u%s: %.1f%% at rest after 200 steps\n", seed, compat ? " --compat" : "", 100 * rest);
+      std::printf("pile-rest N=120 seed %u%s: %.1f%% at rest after 200 steps\n", seed, compat ? " --compat" : "",
+                  100 * rest);
       EXPECT_GE(rest, 0.95) << "seed " << seed << (compat ? " --compat" : "");
     }
     // The measure can say no: a bouncy pile poured from high is still falling after 100 steps.

@@ -81,7 +81,8 @@ TEST(SceneFile, EveryNumberIsTheShortestThatReadsBack) {
       for (int shorter = 1; shorter < digits; ++shorter) {
         std::ostringstream candidate;
         candidate << std::setprecision(shorter) << value;  // %g with `shorter` significant digits
-        EXPECT_NE(std::strtod(candidate.str().c_str(), nullptr), value) << text << " could be written " << candidate.str();
+        EXPECT_NE(std::strtod(candidate.str().c_str(), nullptr), value)
+            << text << " could be written " << candidate.str();
       }
       ++numbers;
     }

@@ -60,10 +60,12 @@ TEST_P(Stress, HybridLeavesNoCollisionAfterAnyStep) {
                     << ") still collides at " << v.tau << " of the step";
     if (violations > 10) break;
   }
-  std::printf("stress %-8s N=%d COR=%g maxiters=%-2d budget=%ld: %ld steps, %ld collisions, %ld failsafe steps, largest zone %d, "
-              "%ld violations\n",
-              c.kind, s.scene.numParticles(), c.cor, c.maxIterations, c.zoneUpdatesPerRow, c.steps, collisions, failsafeSteps, largestZone,
-              violations);
+  std::printf(
+      "stress %-8s N=%d COR=%g maxiters=%-2d budget=%ld: %ld steps, %ld collisions, %ld failsafe steps, largest zone "
+      "%d, "
+      "%ld violations\n",
+      c.kind, s.scene.numParticles(), c.cor, c.maxIterations, c.zoneUpdatesPerRow, c.steps, collisions, failsafeSteps,
+      largestZone, violations);
   EXPECT_EQ(violations, 0);
 }
 

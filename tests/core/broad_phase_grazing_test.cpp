@@ -97,7 +97,8 @@ TEST(BroadPhase, GrazingPairsNeedTheMargins) {
       m.scene.edges.push_back(Edge{1, 2, r2});
     }
     // Ground truth: every pair the narrow phase reports.
-    for (const math::DetectionRules& rules : {math::DetectionRules{}, math::DetectionRules{math::QuinticForm::Reference}}) {
+    for (const math::DetectionRules& rules :
+         {math::DetectionRules{}, math::DetectionRules{math::QuinticForm::Reference}}) {
       const std::vector<Collision> found = allPairs(m.scene, m.qs, m.qe, rules);
       PairCandidates candidates;
       candidates.build(m.scene, m.qs, m.qe);
@@ -123,7 +124,8 @@ TEST(BroadPhase, GrazingPairsNeedTheMargins) {
         } else {
           Box edge = bare(1);
           const Box b2 = bare(2);
-          edge = Box{std::min(edge.x0, b2.x0), std::min(edge.y0, b2.y0), std::max(edge.x1, b2.x1), std::max(edge.y1, b2.y1)};
+          edge = Box{std::min(edge.x0, b2.x0), std::min(edge.y0, b2.y0), std::max(edge.x1, b2.x1),
+                     std::max(edge.y1, b2.y1)};
           separated = !overlap(bare(0), edge);
         }
         missedWithoutMargins += separated;
@@ -132,7 +134,8 @@ TEST(BroadPhase, GrazingPairsNeedTheMargins) {
   }
   EXPECT_GT(hits, 1000);
   EXPECT_GT(missedWithoutMargins, 0) << "no grazing pair needed the margins: the test would not notice their absence";
-  std::printf("grazing pairs: %ld collisions, %ld of them missed by boxes without margins\n", hits, missedWithoutMargins);
+  std::printf("grazing pairs: %ld collisions, %ld of them missed by boxes without margins\n", hits,
+              missedWithoutMargins);
 }
 
 }  // namespace

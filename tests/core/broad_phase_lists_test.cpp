@@ -27,7 +27,8 @@ using testing::randomMotion;
 void keepAllFromRows(PairCandidates& c, int n) {
   std::vector<int> row;
   c.keepAll([&](auto&& visit) {
-    for (int i = 0; i < n; ++i) c.forEachInRow(i, row, [&](PairKind kind, int other) { visit(pairKey(i, kind, other)); });
+    for (int i = 0; i < n; ++i)
+      c.forEachInRow(i, row, [&](PairKind kind, int other) { visit(pairKey(i, kind, other)); });
   });
 }
 

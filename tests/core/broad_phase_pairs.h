@@ -42,7 +42,8 @@ inline std::set<uint64_t> candidateKeys(const Scene& scene, const PairCandidates
 }
 
 /// Every collision, checking every pair (the reference's sweep).
-inline std::vector<Collision> allPairs(const Scene& scene, const VecX& qs, const VecX& qe, const math::DetectionRules& rules) {
+inline std::vector<Collision> allPairs(const Scene& scene, const VecX& qs, const VecX& qe,
+                                       const math::DetectionRules& rules) {
   std::vector<Collision> out;
   ContinuousDetector(rules).forEachCollision(scene, qs, qe, nullptr, [&](const Collision& c) { out.push_back(c); });
   return out;
@@ -72,7 +73,8 @@ inline Motion randomMotion(std::mt19937& rng, int n, double offset) {
       const int q = static_cast<int>(u(0, p));
       const double reach = r + m.scene.radius[q];
       const double angle = u(0, 6.283185307179586);
-      const double gap = style == 1 ? u(-1e-6, 1e-6) * reach : (style == 2 ? u(0.9, 1.1) * reach : u(1.0, 1.0 + 1e-9) * reach);
+      const double gap =
+          style == 1 ? u(-1e-6, 1e-6) * reach : (style == 2 ? u(0.9, 1.1) * reach : u(1.0, 1.0 + 1e-9) * reach);
       x = at(m.qs, q) + gap * Vec2(std::cos(angle), std::sin(angle));
       if (style == 3) x = at(m.qs, q) + (reach + std::pow(10.0, u(-9, -3))) * Vec2(std::cos(angle), std::sin(angle));
     }

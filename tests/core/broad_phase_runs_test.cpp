@@ -113,7 +113,8 @@ void expectIdenticalRuns(const std::string& type, int maxIterations, unsigned se
     EXPECT_EQ(sf.failsafeUsed, sr.failsafeUsed);
     EXPECT_EQ(sf.zones, sr.zones);
     EXPECT_EQ(sf.largestZone, sr.largestZone);
-    for (int p = 0; p < fast.s.state.numParticles(); ++p) ASSERT_EQ(fast.sim->zoneOf(p) >= 0, reference.sim->zoneOf(p) >= 0);
+    for (int p = 0; p < fast.s.state.numParticles(); ++p)
+      ASSERT_EQ(fast.sim->zoneOf(p) >= 0, reference.sim->zoneOf(p) >= 0);
     // The broad phase queries fewer pairs (or as many, when everything is close).
     if (type != "penalty") {
       EXPECT_LE(sf.candidatePairs, sr.candidatePairs);

@@ -49,7 +49,8 @@ TEST(BroadPhase, EveryCollidingPairIsACandidate) {
     // reads signs at r -+ 1, which for roots beyond ~1e8 steps cancels catastrophically and can
     // report far pairs at t = 0 (as the reference itself does); the broad phase does not
     // reproduce those, see collision_search.h.
-    for (const math::DetectionRules& rules : {math::DetectionRules{}, math::DetectionRules{math::QuinticForm::Reference}}) {
+    for (const math::DetectionRules& rules :
+         {math::DetectionRules{}, math::DetectionRules{math::QuinticForm::Reference}}) {
       for (const Collision& c : allPairs(m.scene, m.qs, m.qe, rules)) {
         ++collisions;
         EXPECT_TRUE(keys.count(pairKey(c))) << "scene " << s << ": " << pairKindName(c.kind) << " (" << c.i << ", "
@@ -156,7 +157,8 @@ TEST(BroadPhase, SequentialSweepEqualsReferenceSweep) {
     VecX qeReference = m.qe, qeSweep = m.qe;
     std::vector<uint64_t> reference, swept;
     ContinuousDetector(math::DetectionRules{})
-        .forEachCollision(m.scene, m.qs, qeReference, nullptr, [&](const Collision& c) { respond(c, qeReference, reference); });
+        .forEachCollision(m.scene, m.qs, qeReference, nullptr,
+                          [&](const Collision& c) { respond(c, qeReference, reference); });
     CollisionSearch search(math::DetectionRules{});
     search.setBlockSize(16 + s);
     StepStats stats;

@@ -88,8 +88,8 @@ inline std::vector<double> overlaps(const Scene& scene, const VecX& x, std::vect
     }
     for (size_t k = 0; k < scene.edges.size(); ++k) {
       const Edge& e = scene.edges[k];
-      d.push_back(e.i == i || e.j == i ? -1.0
-                                       : scene.radius[i] + e.radius - segmentDistance(at(x, i), at(x, e.i), at(x, e.j)));
+      d.push_back(
+          e.i == i || e.j == i ? -1.0 : scene.radius[i] + e.radius - segmentDistance(at(x, i), at(x, e.i), at(x, e.j)));
       name("particle-edge", i, static_cast<int>(k));
     }
     for (size_t k = 0; k < scene.halfplanes.size(); ++k) {

@@ -45,7 +45,8 @@ PileResult pourPile(const char* type, Failsafe failsafe, int steps) {
   // Frozen at first contact: the whole column dropped rigidly until its first disk meets a wall.
   double drop = 1e300;
   for (int i = 0; i < n; ++i)
-    for (const Vec2& w : normals) drop = std::min(drop, (w.normalized().dot(at(s.state.x, i)) - r) / w.normalized().y());
+    for (const Vec2& w : normals)
+      drop = std::min(drop, (w.normalized().dot(at(s.state.x, i)) - r) / w.normalized().y());
   out.frozenCom = com() - drop;
   std::vector<char> landed(n, 0);
   for (int k = 0; k < steps; ++k) {
@@ -78,7 +79,8 @@ PileResult pourPile(const char* type, Failsafe failsafe, int steps) {
     };
     for (int i = 0; i < n; ++i) {
       landed[i] = landed[i] || sim->zoneOf(i) >= 0 || touching(i);
-      for (const Vec2& w : normals) EXPECT_GE(w.normalized().dot(at(s.state.x, i)), r - 1e-9) << "disk " << i << " step " << k + 1;
+      for (const Vec2& w : normals)
+        EXPECT_GE(w.normalized().dot(at(s.state.x, i)), r - 1e-9) << "disk " << i << " step " << k + 1;
     }
     int count = 0, moving = 0;
     for (int i = 0; i < n; ++i)
@@ -92,11 +94,11 @@ PileResult pourPile(const char* type, Failsafe failsafe, int steps) {
 
 // "Flows" is measured three ways: (1) at every step from when half of the disks have landed (taken
 // an impulse or joined a rigid zone) until the last one lands, some landed disks still move faster
-// than 0.05 m/s (a failsafe that freezes zones touching a wall stops them); (2) the centre of mass keeps descending (lower at step 300
-// than at step 100); (3) it ends below a geometric bound: the 60 disks (area 60 pi r^2) filling
-// the V (area H^2 up to height H) at a packing fraction of only 0.5 have centres no higher than
-// r sqrt(2) + 2H/3 on average, far below 'frozenCom', the column stopped rigidly at its first
-// contact (the old failsafe's rigid block standing above the V).
+// than 0.05 m/s (a failsafe that freezes zones touching a wall stops them); (2) the centre of mass keeps descending
+// (lower at step 300 than at step 100); (3) it ends below a geometric bound: the 60 disks (area 60 pi r^2) filling the
+// V (area H^2 up to height H) at a packing fraction of only 0.5 have centres no higher than r sqrt(2) + 2H/3 on
+// average, far below 'frozenCom', the column stopped rigidly at its first contact (the old failsafe's rigid block
+// standing above the V).
 TEST(ContactPhysicsPile, PileFlowsIntoTheV) {
   const double H = std::sqrt(60 * std::acos(-1.0) * 0.05 * 0.05 / 0.5), packedBound = 0.05 * std::sqrt(2.0) + 2 * H / 3;
   for (const char* type : {"hybrid"}) {
@@ -107,8 +109,10 @@ TEST(ContactPhysicsPile, PileFlowsIntoTheV) {
     EXPECT_LT(p.finalCom, p.comAt100);
     EXPECT_LT(packedBound, p.frozenCom);
     EXPECT_LT(p.finalCom, packedBound) << "frozen-at-contact height " << p.frozenCom;
-    std::printf("[ pile     ] %s: failsafe in %d steps, rigid zones in %d, landed moving %.2f, COM %.3f (step 100 %.3f, bound %.3f, frozen %.3f)\n",
-                type, p.failsafeSteps, p.rigidZoneSteps, p.movingLanded, p.finalCom, p.comAt100, packedBound, p.frozenCom);
+    std::printf(
+        "[ pile     ] %s: failsafe in %d steps, rigid zones in %d, landed moving %.2f, COM %.3f (step 100 %.3f, bound "
+        "%.3f, frozen %.3f)\n",
+        type, p.failsafeSteps, p.rigidZoneSteps, p.movingLanded, p.finalCom, p.comAt100, packedBound, p.frozenCom);
   }
 }
 

@@ -72,7 +72,8 @@ TEST(ContactPhysics, RestingColumnStartsFromItsWholeImpulsesAndJamsOnlyOnce) {
     ASSERT_TRUE(stepClean(*sim, s));
     if (k == 1) EXPECT_GT(sim->stats().jammedParticles, 0) << "the cold first step should jam (the control)";
     else ASSERT_EQ(sim->stats().jammedParticles, 0) << "step " << k;
-    for (int i = 0; i < 10; ++i) ASSERT_NEAR(s.state.x[2 * i + 1], 0.05 + 0.1 * i, 1e-9) << "disk " << i << ", step " << k;
+    for (int i = 0; i < 10; ++i)
+      ASSERT_NEAR(s.state.x[2 * i + 1], 0.05 + 0.1 * i, 1e-9) << "disk " << i << ", step " << k;
   }
 }
 
@@ -89,7 +90,8 @@ TEST(ContactPhysics, ABudgetEndedSolveHoldsARestingColumnInsteadOfJamming) {
     ASSERT_TRUE(stepClean(*sim, s));
     ASSERT_EQ(sim->stats().jammedParticles, 0) << "step " << k;
     held += sim->stats().heldParticles;
-    for (int i = 0; i < 10; ++i) ASSERT_NEAR(s.state.x[2 * i + 1], 0.05 + 0.1 * i, 1e-9) << "disk " << i << ", step " << k;
+    for (int i = 0; i < 10; ++i)
+      ASSERT_NEAR(s.state.x[2 * i + 1], 0.05 + 0.1 * i, 1e-9) << "disk " << i << ", step " << k;
   }
   EXPECT_GT(held, 0);
 }
@@ -131,7 +133,8 @@ TEST(ContactPhysics, HoldingLeavesADiskSlidingFasterThanAQuarterKick) {
 TEST(ContactPhysics, ARigidZoneThatMeetsTheFloorKeepsItsSlide) {
   for (const Failsafe failsafe : {Failsafe::Projection, Failsafe::Rigid}) {
     for (const bool floor : {true, false}) {
-      SCOPED_TRACE(std::string(failsafe == Failsafe::Rigid ? "rigid" : "projection") + (floor ? ", floor" : ", no floor"));
+      SCOPED_TRACE(std::string(failsafe == Failsafe::Rigid ? "rigid" : "projection") +
+                   (floor ? ", floor" : ", no floor"));
       TestScene s = contactScene("hybrid", 0.0, 0.01, failsafe, /*maxIterations=*/1);
       for (int k = 0; k < 30; ++k)
         addBody(s, 1.0, Vec2(0.1 * k, 0.062), Vec2(2.0 + 0.05 * (14.5 - k), k < 15 ? 1.0 : -1.0), 0.05);
@@ -209,7 +212,8 @@ TEST(ContactPhysics, ContactsABudgetEndedSolveLeavesAreSolvedAtItsInstantOnce) {
 
   const int zone = zones.absorb(s.scene, motion, candidates, left, T, h);
   ASSERT_GE(zone, 0);
-  for (int k = 1; k < n; ++k) EXPECT_EQ(zones.zoneOf(k), zones.zoneOf(0)) << "disk " << k << " is near: it joins the zone";
+  for (int k = 1; k < n; ++k)
+    EXPECT_EQ(zones.zoneOf(k), zones.zoneOf(0)) << "disk " << k << " is near: it joins the zone";
   EXPECT_FALSE(zones.solvesNow(left)) << "no solve has failed yet";
   VecX v = s.state.v;
   std::vector<int> changed;
@@ -240,14 +244,13 @@ State kickedFromHalf(const TestScene& s) {
 // 8i. With holding on, a zone against an obstacle halves its budget per row at each of its first
 // two counts toward the jam limit (kRepeatBudgetHalvings). Five unit disks (radius 0.05) stacked
 // exactly on the floor, all moving down at g h = 0.0981 m/s, half of it their kick
-// (kickedFromHalf: nothing is held or rescued, only the budgets are looked at), 40 updates per row. The column's rows need about
-// 1,150 updates to settle from cold (8c), so every solve below ends on its budget, spending it
-// whole: the first solve of the step has a fifth of the budget per row (kFirstSolveBudgetDivisor)
-// over its 5 rows, at least 8: 8 x 8 = 64. After each failure the contacts still closing come
-// back at once (as the event loop brings them back; queried again for the failure, they do not
-// count), at most 5 fresh rows, so at least 8: 40 / 2 x 8 = 160 after one failure, 40 / 4 x 8 =
-// 80 after two and after three. With holding off (the control) every solve has the whole budget,
-// 40 x 8 = 320 (three solves: the fourth would settle the column).
+// (kickedFromHalf: nothing is held or rescued, only the budgets are looked at), 40 updates per row. The column's rows
+// need about 1,150 updates to settle from cold (8c), so every solve below ends on its budget, spending it whole: the
+// first solve of the step has a fifth of the budget per row (kFirstSolveBudgetDivisor) over its 5 rows, at least 8: 8 x
+// 8 = 64. After each failure the contacts still closing come back at once (as the event loop brings them back; queried
+// again for the failure, they do not count), at most 5 fresh rows, so at least 8: 40 / 2 x 8 = 160 after one failure,
+// 40 / 4 x 8 = 80 after two and after three. With holding off (the control) every solve has the whole budget, 40 x 8 =
+// 320 (three solves: the fourth would settle the column).
 TEST(ContactPhysics, AZoneAgainstAnObstacleHalvesItsBudgetAfterEachOfItsFirstTwoFailures) {
   for (const bool hold : {true, false}) {
     SCOPED_TRACE(hold ? "holding on" : "holding off (control)");
@@ -274,7 +277,8 @@ TEST(ContactPhysics, AZoneAgainstAnObstacleHalvesItsBudgetAfterEachOfItsFirstTwo
     const int solves = hold ? 4 : 3;
     for (int solve = 0; solve < solves; ++solve) {
       const double T = 0.1 * solve;
-      const std::vector<uint64_t> back = solve == 0 ? std::vector<uint64_t>{pairKey(0, PairKind::ParticleHalfPlane, 0)} : closing();
+      const std::vector<uint64_t> back =
+          solve == 0 ? std::vector<uint64_t>{pairKey(0, PairKind::ParticleHalfPlane, 0)} : closing();
       ASSERT_FALSE(back.empty()) << "solve " << solve << ": the column should still be closing";
       int zone = -1;
       for (uint64_t key : back) zone = zones.absorb(s.scene, motion, candidates, key, T, h);

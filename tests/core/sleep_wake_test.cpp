@@ -80,7 +80,8 @@ TEST(Sleep, ASleeperHitByADiskThatWasStillWakesAtTheImpact) {
   for (const char* type : kEventTypes) {
     SCOPED_TRACE(type);
     TestScene s = contactScene(type, 1.0);
-    EXPECT_EQ(runCradleIntoSleepers(s, {0.0, -2 * kR - 1e-3}, kR), 2) << "disks 0 and 1 should have slept before the hit";
+    EXPECT_EQ(runCradleIntoSleepers(s, {0.0, -2 * kR - 1e-3}, kR), 2)
+        << "disks 0 and 1 should have slept before the hit";
     expectOnlyTheFarDiskMoves(s, 0.5);
   }
 }
@@ -94,7 +95,8 @@ TEST(Sleep, AHitRunsThroughARowOfTouchingSleepersInTheSameStep) {
   for (const char* type : kEventTypes) {
     SCOPED_TRACE(type);
     TestScene s = contactScene(type, 1.0);
-    EXPECT_EQ(runCradleIntoSleepers(s, {0.0, -0.25, -0.5, -0.75}, 0.125), 4) << "the row should have slept before the hit";
+    EXPECT_EQ(runCradleIntoSleepers(s, {0.0, -0.25, -0.5, -0.75}, 0.125), 4)
+        << "the row should have slept before the hit";
     expectOnlyTheFarDiskMoves(s, 0.5);
   }
 }
@@ -181,7 +183,8 @@ TEST(Sleep, AHitWakesASleeperAtASmallStepToo) {
     SCOPED_TRACE(type);
     TestScene s = contactScene(type, 1.0, 2e-4);
     // The mover arrives 0.5 into step 251.
-    EXPECT_EQ(runCradleIntoSleepers(s, {0.0, -0.25}, 0.125, 1.0, 0.0501, 300), 2) << "both should have slept before the hit";
+    EXPECT_EQ(runCradleIntoSleepers(s, {0.0, -0.25}, 0.125, 1.0, 0.0501, 300), 2)
+        << "both should have slept before the hit";
     expectOnlyTheFarDiskMoves(s, 1.0);
   }
 }

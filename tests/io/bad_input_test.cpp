@@ -175,7 +175,8 @@ TEST(BadInput, ColourChannelsOutsideZeroOneAreRejected) {
       for (const char* bad : {"1.0001", "-0.01", "255", "2"}) {
         std::string text = std::string("  <") + element + (element[0] == 'b' ? "" : " i=\"0\"") +
                            (element == std::string("particlepath") ? " duration=\"1\"" : "");
-        for (const char* c : {"r", "g", "b"}) text += std::string(" ") + c + "=\"" + (c == channel ? bad : "0.5") + "\"";
+        for (const char* c : {"r", "g", "b"})
+          text += std::string(" ") + c + "=\"" + (c == channel ? bad : "0.5") + "\"";
         SCOPED_TRACE(text);
         expectError(extra(text + "/>"), {located(kExtraLine, element, channel), "[0, 1]", bad});
       }
@@ -189,8 +190,10 @@ TEST(BadInput, AnIndexBeyondAnyCountIsTooLarge) {
     for (const std::string& text : {"  <particlecolor i=" + v + " r=\"0\" g=\"0\" b=\"0\"/>",
                                     "  <springforce edge=" + v + " k=\"1\" l0=\"1\"/>"}) {
       const std::string message = loadError(extra(text));
-      EXPECT_NE(message.find(located(kExtraLine, text[3] == 'p' ? "particlecolor" : "springforce", text[3] == 'p' ? "i" : "edge")),
-                std::string::npos) << message;
+      EXPECT_NE(message.find(located(kExtraLine, text[3] == 'p' ? "particlecolor" : "springforce",
+                                     text[3] == 'p' ? "i" : "edge")),
+                std::string::npos)
+          << message;
       EXPECT_EQ(message.find("expected an integer"), std::string::npos) << message;
       EXPECT_TRUE(message.find("too large") != std::string::npos || message.find("does not exist") != std::string::npos)
           << message;
@@ -203,9 +206,12 @@ TEST(BadInput, IndicesMustBeNonNegativeIntegers) {
     SCOPED_TRACE(bad);
     const std::string v = std::string("\"") + bad + "\"";
     expectError(replaced(6, "  <edge i=" + v + " j=\"1\"/>"), {located(6, "edge", "i")});
-    expectError(extra("  <springforce edge=" + v + " k=\"1\" l0=\"1\"/>"), {located(kExtraLine, "springforce", "edge")});
-    expectError(extra("  <particlecolor i=" + v + " r=\"0\" g=\"0\" b=\"0\"/>"), {located(kExtraLine, "particlecolor", "i")});
-    expectError(extra("  <vortexforce i=\"0\" j=" + v + " kbs=\"1\" kvc=\"1\"/>"), {located(kExtraLine, "vortexforce", "j")});
+    expectError(extra("  <springforce edge=" + v + " k=\"1\" l0=\"1\"/>"),
+                {located(kExtraLine, "springforce", "edge")});
+    expectError(extra("  <particlecolor i=" + v + " r=\"0\" g=\"0\" b=\"0\"/>"),
+                {located(kExtraLine, "particlecolor", "i")});
+    expectError(extra("  <vortexforce i=\"0\" j=" + v + " kbs=\"1\" kvc=\"1\"/>"),
+                {located(kExtraLine, "vortexforce", "j")});
   }
 }
 

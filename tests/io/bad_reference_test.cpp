@@ -24,7 +24,8 @@ TEST(BadReference, IndicesOutOfRangeNameTheElementAndTheCount) {
   const std::vector<IndexCase> cases = {
       {"  <edge i=\"2\" j=\"0\"/>", "edge", "i", "particle 2 does not exist (the scene has 2 particles)"},
       {"  <edge i=\"0\" j=\"7\"/>", "edge", "j", "particle 7 does not exist (the scene has 2 particles)"},
-      {"  <springforce edge=\"1\" k=\"1\" l0=\"1\"/>", "springforce", "edge", "edge 1 does not exist (the scene has 1 edge)"},
+      {"  <springforce edge=\"1\" k=\"1\" l0=\"1\"/>", "springforce", "edge",
+       "edge 1 does not exist (the scene has 1 edge)"},
       {"  <particlecolor i=\"2\" r=\"0\" g=\"0\" b=\"0\"/>", "particlecolor", "i", "particle 2 does not exist"},
       {"  <edgecolor i=\"1\" r=\"0\" g=\"0\" b=\"0\"/>", "edgecolor", "i", "edge 1 does not exist"},
       {"  <halfplanecolor i=\"1\" r=\"0\" g=\"0\" b=\"0\"/>", "halfplanecolor", "i", "half-plane 1 does not exist"},
@@ -32,8 +33,10 @@ TEST(BadReference, IndicesOutOfRangeNameTheElementAndTheCount) {
       {"  <gravitationalforce i=\"5\" j=\"1\" G=\"1\"/>", "gravitationalforce", "i", "particle 5 does not exist"},
       {"  <vortexforce i=\"3\" j=\"0\" kbs=\"1\" kvc=\"1\"/>", "vortexforce", "i", "particle 3 does not exist"},
       {"  <vortexforce i=\"0\" j=\"2\" kbs=\"1\" kvc=\"1\"/>", "vortexforce", "j", "particle 2 does not exist"},
-      {"  <particlepath i=\"2\" duration=\"1\" r=\"0\" g=\"0\" b=\"0\"/>", "particlepath", "i", "particle 2 does not exist"},
-      {"  <particlepath i=\"2000000000\" duration=\"1\" r=\"0\" g=\"0\" b=\"0\"/>", "particlepath", "i", "particle 2000000000"},
+      {"  <particlepath i=\"2\" duration=\"1\" r=\"0\" g=\"0\" b=\"0\"/>", "particlepath", "i",
+       "particle 2 does not exist"},
+      {"  <particlepath i=\"2000000000\" duration=\"1\" r=\"0\" g=\"0\" b=\"0\"/>", "particlepath", "i",
+       "particle 2000000000"},
   };
   for (const IndexCase& c : cases) {
     SCOPED_TRACE(c.text);
@@ -53,7 +56,8 @@ TEST(BadReference, AnIndexIsCheckedAgainstTheWholeFile) {
 
 TEST(BadReference, AnEdgeFromAParticleToItselfIsRejected) {
   expectError(replaced(6, "  <edge i=\"1\" j=\"1\"/>"), {located(6, "edge", "j"), "two different particles"});
-  expectError(extra("  <gravitationalforce i=\"0\" j=\"0\" G=\"1\"/>"), {located(kExtraLine, "gravitationalforce", "j")});
+  expectError(extra("  <gravitationalforce i=\"0\" j=\"0\" G=\"1\"/>"),
+              {located(kExtraLine, "gravitationalforce", "j")});
   expectError(extra("  <vortexforce i=\"1\" j=\"1\" kbs=\"1\" kvc=\"1\"/>"), {located(kExtraLine, "vortexforce", "j")});
 }
 
@@ -100,7 +104,8 @@ TEST(BadReference, MissingRequiredElementsAreNamed) {
 
 bool hasWarning(const SceneFile& file, const std::vector<std::string>& fragments) {
   return std::any_of(file.warnings.begin(), file.warnings.end(), [&](const std::string& w) {
-    return std::all_of(fragments.begin(), fragments.end(), [&](const std::string& f) { return w.find(f) != std::string::npos; });
+    return std::all_of(fragments.begin(), fragments.end(),
+                       [&](const std::string& f) { return w.find(f) != std::string::npos; });
   });
 }
 

@@ -44,7 +44,8 @@ TEST(BadXml, WrongOrMissingRoot) {
   expectError("<?xml version=\"1.0\"?>\n<scenes>\n  <duration time=\"1\"/>\n</scenes>\n",
               {kFile + ":2:", "root element is <scenes>", "expected <scene>"});
   expectError("<Scene>\n</Scene>\n", {kFile + ":1:", "<Scene>", "expected <scene>"});
-  expectError("<particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n", {kFile + ":1:", "expected <scene>"});
+  expectError("<particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>\n",
+              {kFile + ":1:", "expected <scene>"});
   // Two roots: the second one is not silently ignored.
   expectError(join(baseLines()) + "<scene>\n</scene>\n", {kFile + ":9:", "after </scene>"});
 }
@@ -107,7 +108,8 @@ TEST(BadXml, ControlCharactersAreRefusedWhereverTheyAre) {
     expectError(extra(element), {kFile + ":" + std::to_string(kExtraLine) + ":", "control character, " + code});
   }
   // References to what is no character at all: tinyxml2 wrote bytes that are no UTF-8, or nothing.
-  for (const char* reference : {"&#xD800;", "&#57343;", "&#xFFFE;", "&#xffff;", "&#x110000;", "&#99999999999999999999;"}) {
+  for (const char* reference :
+       {"&#xD800;", "&#57343;", "&#xFFFE;", "&#xffff;", "&#x110000;", "&#99999999999999999999;"}) {
     SCOPED_TRACE(reference);
     expectError(extra(std::string("  <description text=\"a ") + reference + " b\"/>"),
                 {kFile + ":" + std::to_string(kExtraLine) + ":", std::string("the reference ") + reference +
@@ -123,12 +125,14 @@ TEST(BadXml, ControlCharactersAreRefusedWhereverTheyAre) {
 // reached the window and the terminal as garbage: refused with line, column and the byte.
 TEST(BadXml, BytesThatAreNotUtf8AreRefusedWithLineAndColumn) {
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"  <description text=\"caf\xE9 au lait\"/>", ":" + std::to_string(kExtraLine) + ": column 25: bytes that are not UTF-8, 0xE9 followed by 0x20"},
+      {"  <description text=\"caf\xE9 au lait\"/>",
+       ":" + std::to_string(kExtraLine) + ": column 25: bytes that are not UTF-8, 0xE9 followed by 0x20"},
       {"  <description text=\"\xC3\xA9 \x80\"/>", "column 24: bytes that are not UTF-8, 0x80 (a continuation byte"},
-      {"  <description text=\"\xC0\xAF\"/>", "0xC0 (no UTF-8 character begins with it)"},         // overlong '/'
-      {"  <description text=\"\xED\xA0\x80\"/>", "0xED followed by 0xA0"},                         // a surrogate half
-      {"  <description text=\"\xF4\x90\x80\x80\"/>", "0xF4 followed by 0x90"},                   // beyond U+10FFFF
-      {"  <description text=\"\xEF\xBF\xBF\"/>", "the character U+FFFF (bytes 0xEF 0xBF 0xBF), which XML does not allow"},
+      {"  <description text=\"\xC0\xAF\"/>", "0xC0 (no UTF-8 character begins with it)"},  // overlong '/'
+      {"  <description text=\"\xED\xA0\x80\"/>", "0xED followed by 0xA0"},                 // a surrogate half
+      {"  <description text=\"\xF4\x90\x80\x80\"/>", "0xF4 followed by 0x90"},             // beyond U+10FFFF
+      {"  <description text=\"\xEF\xBF\xBF\"/>",
+       "the character U+FFFF (bytes 0xEF 0xBF 0xBF), which XML does not allow"},
       {"  <!-- \xFF in a comment -->", "0xFF (no UTF-8 character begins with it)"},
   };
   for (const auto& [element, fragment] : cases) {
@@ -136,10 +140,13 @@ TEST(BadXml, BytesThatAreNotUtf8AreRefusedWithLineAndColumn) {
     expectError(extra(element), {kFile + ":" + std::to_string(kExtraLine) + ": column ", fragment});
   }
   const std::string cut = join(baseLines()) + "\xE2\x82";
-  EXPECT_NE(loadError(cut).find("0xE2 at the end of the file (a UTF-8 character of 3 bytes, cut short)"), std::string::npos)
+  EXPECT_NE(loadError(cut).find("0xE2 at the end of the file (a UTF-8 character of 3 bytes, cut short)"),
+            std::string::npos)
       << loadError(cut);
   // Every well-formed character is fine: 2, 3 and 4 bytes, the last below the surrogates and U+10FFFF.
-  EXPECT_EQ(loadError(extra("  <description text=\"\xC3\xA9 \xE2\x82\xAC \xED\x9F\xBF \xF0\x9F\x98\x80 \xF4\x8F\xBF\xBF\"/>")), "");
+  EXPECT_EQ(loadError(extra(
+                "  <description text=\"\xC3\xA9 \xE2\x82\xAC \xED\x9F\xBF \xF0\x9F\x98\x80 \xF4\x8F\xBF\xBF\"/>")),
+            "");
 }
 
 // Faults tinyxml2 lets through although XML does not (src/io/xml_wellformed.h): each is refused

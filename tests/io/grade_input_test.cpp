@@ -21,8 +21,8 @@ namespace {
 std::string sceneOf(int particles, const char* collision) {
   std::string text = "<scene>\n<duration time=\"0.05\"/>\n<integrator type=\"symplectic-euler\" dt=\"0.01\"/>\n";
   for (int k = 0; k < particles; ++k)
-    text += "<particle m=\"1\" px=\"" + std::to_string(0.15 * k) + "\" py=\"0\" vx=\"" + std::to_string(k % 2 ? -1 : 1) +
-            "\" vy=\"0\" fixed=\"0\"/>\n";
+    text += "<particle m=\"1\" px=\"" + std::to_string(0.15 * k) + "\" py=\"0\" vx=\"" +
+            std::to_string(k % 2 ? -1 : 1) + "\" vy=\"0\" fixed=\"0\"/>\n";
   text += "<halfplane px=\"0\" py=\"-0.05\" nx=\"0\" ny=\"1\"/>\n<simplegravity fx=\"0\" fy=\"-10\"/>\n";
   return text + "<collision type=\"" + collision + "\"/>\n</scene>\n";
 }
@@ -148,7 +148,8 @@ TEST(GradeInput, MissingFileOrDirectory) {
   // Nothing read, nothing to say about categories: the caller reports the error (-i: one line).
   TempDir dir("grade");
   Fixture run = prepare(2, "none");
-  for (const auto& [path, fragment] : {std::pair{dir.file("missing.bin"), "cannot open"}, std::pair{dir.file(""), "directory"}}) {
+  for (const auto& [path, fragment] :
+       {std::pair{dir.file("missing.bin"), "cannot open"}, std::pair{dir.file(""), "directory"}}) {
     const Graded g = grade(run, path);
     EXPECT_FALSE(g.passed);
     EXPECT_TRUE(g.report.unreadable);
@@ -193,10 +194,12 @@ TEST(GradeInput, NothingGradedIsNeverPassed) {
   const Graded zeros = grade(run, dir.write("zeros.bin", std::string(bytes.size(), '\0')));
   EXPECT_EQ(zeros.text.find("passed"), std::string::npos) << zeros.text;
   EXPECT_NE(zeros.text.find("Positions: residual sum 0, max 0: not graded"), std::string::npos) << zeros.text;
-  EXPECT_NE(zeros.text.find("Polynomials: 0 mismatches: none in this scene's records"), std::string::npos) << zeros.text;
+  EXPECT_NE(zeros.text.find("Polynomials: 0 mismatches: none in this scene's records"), std::string::npos)
+      << zeros.text;
   EXPECT_EQ(zeros.text.rfind("Overall success: Failed.\n"), zeros.text.size() - 25) << zeros.text;
   const Graded own = grade(run, dir.file("own.bin"));
-  EXPECT_NE(own.text.find("Impulses: 0 missed, 0 superfluous, 0 wrong normals: passed\n"), std::string::npos) << own.text;
+  EXPECT_NE(own.text.find("Impulses: 0 missed, 0 superfluous, 0 wrong normals: passed\n"), std::string::npos)
+      << own.text;
 }
 
 // The polynomial log of a step holds, per detection pass, every pair in the reference's order

@@ -39,7 +39,8 @@ TEST_F(LargeInput, TwoHundredThousandParticlesWithEdgesAndSprings) {
   SceneFile file;
   ASSERT_TRUE(parseScene(text, kFile, file).isOk());
   const double seconds = secondsSince(start);
-  std::printf("%d particles, %d edges and springs (%.1f MB) loaded in %.2f s\n", kN, kN - 1, text.size() / 1e6, seconds);
+  std::printf("%d particles, %d edges and springs (%.1f MB) loaded in %.2f s\n", kN, kN - 1, text.size() / 1e6,
+              seconds);
   EXPECT_EQ(file.scene.numParticles(), kN);
   EXPECT_EQ(file.scene.edges.size(), static_cast<size_t>(kN - 1));
   EXPECT_EQ(file.scene.forces.size(), static_cast<size_t>(kN - 1));
@@ -155,7 +156,8 @@ TEST(LargeInputText, HugeValuesAndCounts) {
   EXPECT_EQ(file.look.maxSimFreq, 1.0);
   // Step counts beyond any run are refused, with the integrator's location.
   expectError(replaced(2, "  <duration time=\"1e300\"/>"), {kFile + ":3: <integrator>", "steps"});
-  expectError(replaced(3, "  <integrator type=\"explicit-euler\" dt=\"1e-300\"/>"), {kFile + ":3: <integrator>", "steps"});
+  expectError(replaced(3, "  <integrator type=\"explicit-euler\" dt=\"1e-300\"/>"),
+              {kFile + ":3: <integrator>", "steps"});
   // A description of a megabyte is kept whole.
   const std::string words(1 << 20, 'w');
   ASSERT_TRUE(parseScene(extra("<description text=\"" + words + "\"/>"), kFile, file).isOk());

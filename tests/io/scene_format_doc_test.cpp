@@ -27,7 +27,8 @@ TEST(SceneFormatDoc, TheCommittedPageIsTheGeneratedOne) {
   if (generated == committed) return;
   size_t at = 0;
   while (at < generated.size() && at < committed.size() && generated[at] == committed[at]) ++at;
-  const size_t line = static_cast<size_t>(std::count(generated.begin(), generated.begin() + static_cast<long>(at), '\n')) + 1;
+  const size_t line =
+      static_cast<size_t>(std::count(generated.begin(), generated.begin() + static_cast<long>(at), '\n')) + 1;
   ADD_FAILURE() << "docs/scene-format.md differs from the loader's element table from line " << line
                 << ". Regenerate it:\n  cmake --build <build> --target fosssim-scene-format && "
                    "<build>/tests/io/fosssim-scene-format docs/scene-format.md";
@@ -40,7 +41,8 @@ TEST(SceneFormatDoc, EveryElementAndAttributeIsOnThePage) {
     EXPECT_GT(std::string(e.meaning).size(), 10u) << e.name;
     for (const io::AttributeSpec& a : e.attributes) {
       EXPECT_GT(std::string(a.meaning).size(), 2u) << e.name << " " << a.name;
-      EXPECT_TRUE(a.max == 0 || (a.maxReason && *a.maxReason)) << e.name << " " << a.name << ": a bound needs its reason";
+      EXPECT_TRUE(a.max == 0 || (a.maxReason && *a.maxReason))
+          << e.name << " " << a.name << ": a bound needs its reason";
     }
   }
   // The elements no page listed before.

@@ -106,7 +106,8 @@ TEST(SceneLoader, CollisionFailsafe) {
 
 TEST(SceneLoader, LenientAttributeSyntaxOfTheCourseScenes) {
   // No whitespace between attributes, spaces around '=', leading and trailing spaces in numbers.
-  const SceneFile f = load(replaced(4, "  <particle m = \"3\" px=\" 1.0\" py=\"2.5 \"vx=\"0\"vy=\"-1\" fixed= \"1\" radius =\"0.2\"/>"));
+  const SceneFile f = load(
+      replaced(4, "  <particle m = \"3\" px=\" 1.0\" py=\"2.5 \"vx=\"0\"vy=\"-1\" fixed= \"1\" radius =\"0.2\"/>"));
   EXPECT_EQ(f.scene.massOf(0), 3.0);
   EXPECT_EQ(f.initial.x[0], 1.0);
   EXPECT_EQ(f.initial.x[1], 2.5);
@@ -119,7 +120,8 @@ TEST(SceneLoader, LenientAttributeSyntaxOfTheCourseScenes) {
 }
 
 TEST(SceneLoader, NumberSpellings) {
-  const SceneFile f = load(replaced(4, "  <particle m=\"1E0\" px=\"-.5\" py=\"+2\" vx=\"1e-3\" vy=\"1e-400\" fixed=\"0.0\" radius=\"5.\"/>"));
+  const SceneFile f = load(replaced(
+      4, "  <particle m=\"1E0\" px=\"-.5\" py=\"+2\" vx=\"1e-3\" vy=\"1e-400\" fixed=\"0.0\" radius=\"5.\"/>"));
   EXPECT_EQ(f.initial.x[0], -0.5);
   EXPECT_EQ(f.initial.x[1], 2.0);
   EXPECT_EQ(f.initial.v[0], 1e-3);
@@ -157,12 +159,12 @@ TEST(SceneLoader, ElementsAreNumberedInDocumentOrder) {
 }
 
 TEST(SceneLoader, OnlyTheFirstOfSomeElementsCounts) {
-  const SceneFile f = load(join({"<scene>", "  <duration time=\"1\"/>",
-                                 "  <integrator type=\"explicit-euler\" dt=\"0.01\"/>",
-                                 "  <viewport cx=\"1\" cy=\"2\" size=\"3\"/>", "  <collision type=\"simple\" COR=\"0.25\"/>",
-                                 "  <particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>",
-                                 "  <duration time=\"5\"/>", "  <integrator type=\"implicit-euler\" dt=\"0.5\"/>",
-                                 "  <viewport cx=\"9\" cy=\"9\" size=\"9\"/>", "  <collision type=\"penalty\"/>", "</scene>"}));
+  const SceneFile f =
+      load(join({"<scene>", "  <duration time=\"1\"/>", "  <integrator type=\"explicit-euler\" dt=\"0.01\"/>",
+                 "  <viewport cx=\"1\" cy=\"2\" size=\"3\"/>", "  <collision type=\"simple\" COR=\"0.25\"/>",
+                 "  <particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>", "  <duration time=\"5\"/>",
+                 "  <integrator type=\"implicit-euler\" dt=\"0.5\"/>", "  <viewport cx=\"9\" cy=\"9\" size=\"9\"/>",
+                 "  <collision type=\"penalty\"/>", "</scene>"}));
   EXPECT_EQ(f.scene.duration, 1.0);
   EXPECT_EQ(f.scene.integrator, "explicit-euler");
   EXPECT_EQ(f.scene.dt, 0.01);
@@ -186,8 +188,8 @@ TEST(SceneLoader, CommentsAroundParticles) {
                                  "  <integrator type=\"explicit-euler\" dt=\"0.01\"/>",
                                  "  <!--<particle m=\"1\" px=\"5\" py=\"5\" vx=\"0\" vy=\"0\" fixed=\"0\"/>-->",
                                  "  <particle m=\"1\" px=\"1\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/> <!-- first -->",
-                                 "  <!--", "  <particle m=\"1\" px=\"6\" py=\"6\" vx=\"0\" vy=\"0\" fixed=\"0\"/>", "  -->",
-                                 "  <particle m=\"1\" px=\"2\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>",
+                                 "  <!--", "  <particle m=\"1\" px=\"6\" py=\"6\" vx=\"0\" vy=\"0\" fixed=\"0\"/>",
+                                 "  -->", "  <particle m=\"1\" px=\"2\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>",
                                  "  <edge i=\"0\" j=\"1\"/>", "</scene>", "<!-- trailing -->"}));
   ASSERT_EQ(f.scene.numParticles(), 2);
   EXPECT_EQ(f.initial.x, (VecX(4) << 1, 0, 2, 0).finished());
@@ -231,14 +233,17 @@ TEST(SceneLoader, AMovingFixedParticleIsWarnedAbout) {
             std::string::npos)
       << moving.warnings[0];
   EXPECT_NE(moving.warnings[0].find("--compat"), std::string::npos) << moving.warnings[0];
-  EXPECT_TRUE(load(replaced(5, "  <particle m=\"2\" px=\"1\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"1\"/>")).warnings.empty());
-  EXPECT_TRUE(load(replaced(5, "  <particle m=\"2\" px=\"1\" py=\"0\" vx=\"5\" vy=\"0\" fixed=\"0\"/>")).warnings.empty());
+  EXPECT_TRUE(
+      load(replaced(5, "  <particle m=\"2\" px=\"1\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"1\"/>")).warnings.empty());
+  EXPECT_TRUE(
+      load(replaced(5, "  <particle m=\"2\" px=\"1\" py=\"0\" vx=\"5\" vy=\"0\" fixed=\"0\"/>")).warnings.empty());
 }
 
 TEST(SceneLoader, EverythingElse) {
-  const SceneFile f = load(extra("<description text=\"A &amp; B\"/><scenetag tag=\"t\"/><simtype type=\"particle-system\"/>"
-                                 "<maxsimfreq max=\"250\"/><backgroundcolor r=\"0\" g=\"0.5\" b=\"1\"/>"
-                                 "<particlepath i=\"1\" duration=\"0.5\" r=\"1\" g=\"1\" b=\"0\"/>"));
+  const SceneFile f =
+      load(extra("<description text=\"A &amp; B\"/><scenetag tag=\"t\"/><simtype type=\"particle-system\"/>"
+                 "<maxsimfreq max=\"250\"/><backgroundcolor r=\"0\" g=\"0.5\" b=\"1\"/>"
+                 "<particlepath i=\"1\" duration=\"0.5\" r=\"1\" g=\"1\" b=\"0\"/>"));
   EXPECT_EQ(f.description, "A & B");
   EXPECT_EQ(f.tag, "t");
   EXPECT_EQ(f.look.maxSimFreq, 250);

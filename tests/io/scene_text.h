@@ -78,7 +78,8 @@ inline void expectContains(const std::string& text, const std::vector<std::strin
 inline void expectError(const std::string& text, const std::vector<std::string>& fragments) {
   const std::string message = loadError(text);
   ASSERT_FALSE(message.empty()) << "loaded, but should have failed:\n" << text;
-  for (const auto& f : fragments) EXPECT_NE(message.find(f), std::string::npos) << "missing \"" << f << "\" in: " << message;
+  for (const auto& f : fragments)
+    EXPECT_NE(message.find(f), std::string::npos) << "missing \"" << f << "\" in: " << message;
 }
 
 }  // namespace fosssim::testing

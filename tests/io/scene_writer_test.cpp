@@ -25,7 +25,8 @@ bool same(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 void expectSameVector(const VecX& a, const VecX& b, const char* what) {
   ASSERT_EQ(a.size(), b.size()) << what;
-  for (Eigen::Index k = 0; k < a.size(); ++k) EXPECT_TRUE(same(a[k], b[k])) << what << "[" << k << "]: " << a[k] << " vs " << b[k];
+  for (Eigen::Index k = 0; k < a.size(); ++k)
+    EXPECT_TRUE(same(a[k], b[k])) << what << "[" << k << "]: " << a[k] << " vs " << b[k];
 }
 
 void expectSameRgb(const Rgb& a, const Rgb& b) {
@@ -296,7 +297,8 @@ TEST(SceneWriter, RefusesWhatTheFormatCannotSay) {
   {
     SceneFile f = twoParticles();  // numbers the loader would refuse
     f.initial.v[3] = std::numeric_limits<double>::infinity();
-    EXPECT_EQ(message(f), "cannot write the scene: <particle> attribute 'vy' is inf (a scene file holds finite numbers only)");
+    EXPECT_EQ(message(f),
+              "cannot write the scene: <particle> attribute 'vy' is inf (a scene file holds finite numbers only)");
   }
   {
     SceneFile f = twoParticles();  // text the loader refuses: XML has no control characters

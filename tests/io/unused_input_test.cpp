@@ -46,7 +46,9 @@ TEST(UnusedInput, ElementsInsideAnUnknownElementAreReported) {
   EXPECT_TRUE(has(kFile + ":9: <simplegravity> inside <forces> ignored"));
   EXPECT_TRUE(has(kFile + ":10: <dragdamping> inside <group> ignored"));
   // A second <scene> inside the first, too.
-  EXPECT_EQ(loaded(extra("  <scene><particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/></scene>")).warningCount, 2);
+  EXPECT_EQ(loaded(extra("  <scene><particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/></scene>"))
+                .warningCount,
+            2);
 }
 
 TEST(UnusedInput, TextCdataAndDeclarationsAreReported) {
@@ -78,8 +80,9 @@ TEST(UnusedInput, MisspellingsGetASuggestion) {
                  {kFile + ":8: <simplegravty>: unknown element ignored; did you mean <simplegravity>?"});
   expectContains(onlyWarning(extra("  <Particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\"/>")),
                  {"did you mean <particle>?"});
-  expectContains(onlyWarning(replaced(4, "  <particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\" raduis=\"1\"/>")),
-                 {located(4, "particle", "raduis"), "did you mean 'radius'?"});
+  expectContains(
+      onlyWarning(replaced(4, "  <particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\" raduis=\"1\"/>")),
+      {located(4, "particle", "raduis"), "did you mean 'radius'?"});
   expectContains(onlyWarning(extra("  <collision type=\"simple\" cor=\"0.5\"/>")), {"did you mean 'COR'?"});
   // Far from every name: the valid names instead (elements: the first unknown one only).
   expectContains(onlyWarning(extra("  <wobble/>")), {"unknown element ignored (valid: ", "particlepath"});
@@ -126,8 +129,9 @@ TEST(UnusedInput, EveryErrorOfAFileInOnePassInLineOrder) {
 }
 
 TEST(UnusedInput, AMisspeltRequiredElementIsNamedInTheError) {
-  expectError(replaced(2, "  <durration time=\"1\"/>"),
-              {kFile + ": the scene has no <duration time=...> element (required)", "<durration> on line 2 is ignored"});
+  expectError(
+      replaced(2, "  <durration time=\"1\"/>"),
+      {kFile + ": the scene has no <duration time=...> element (required)", "<durration> on line 2 is ignored"});
 }
 
 TEST(UnusedInput, RepeatedWarningsAreCountedAfterAFew) {
@@ -170,15 +174,18 @@ TEST(UnusedInput, LineEndsOfEveryKindAreCounted) {
 TEST(UnusedInput, XmlSyntaxErrorsSayWhatIsWrongAndWhere) {
   std::vector<std::string> lines = baseLines();
   lines.pop_back();  // no </scene>
-  expectError(join(lines), {kFile + ":7: not well-formed XML: the file ends with <scene> (line 1) still open: </scene> is missing"});
+  expectError(join(lines),
+              {kFile + ":7: not well-formed XML: the file ends with <scene> (line 1) still open: </scene> is missing"});
   const std::string message = loadError(join(lines));
   EXPECT_EQ(message.find("XML_ERROR"), std::string::npos) << message;
   expectError(replaced(4, "  <particle m=\"1\" px=\"0\" py=\"0\" vx=\"0\" vy=\"0\" fixed=\"0\" px=\"2\"/>"),
               {kFile + ":4: not well-formed XML: <particle> attribute 'px' is given twice"});
   expectError(replaced(3, "  <integrator type=explicit-euler dt=\"0.01\"/>"),
               {kFile + ":3: not well-formed XML: <integrator> attribute 'type': the value must be in quotes"});
-  expectError(replaced(8, "</scen>"), {kFile + ":8: not well-formed XML: </scen> does not match the open <scene> (line 1)"});
-  expectError(replaced(5, "  <!-- a comment"), {kFile + ":5: not well-formed XML: a comment (<!--) opened here never ends"});
+  expectError(replaced(8, "</scen>"),
+              {kFile + ":8: not well-formed XML: </scen> does not match the open <scene> (line 1)"});
+  expectError(replaced(5, "  <!-- a comment"),
+              {kFile + ":5: not well-formed XML: a comment (<!--) opened here never ends"});
 }
 
 TEST(UnusedInput, MessagesWriteNumbersShort) {
@@ -200,7 +207,8 @@ TEST(UnusedInput, ParticlePathsAreCutToTheRunAndBoundedInAll) {
   std::string ten;
   for (int k = 0; k < 11; ++k) ten += "  <particlepath i=\"1\" duration=\"1e4\" r=\"0\" g=\"0\" b=\"0\"/>\n";
   longRun.insert(longRun.find("</scene>"), ten);
-  expectError(longRun, {kFile + ":18: <particlepath> attribute 'duration': the trails would keep more than 1e+07 positions"});
+  expectError(longRun,
+              {kFile + ":18: <particlepath> attribute 'duration': the trails would keep more than 1e+07 positions"});
 }
 
 }  // namespace

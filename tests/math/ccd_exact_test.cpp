@@ -100,7 +100,9 @@ Answer exact(const PHInput& in) {
   return {o == CcdOutcome::Hit, c.tau, c.normal, c.alpha};
 }
 // The reference's answers, its contact vector normalised.
-Answer fromContact(bool hit, const Contact& c) { return {hit, c.tau, hit ? Vec2(c.n.normalized()) : Vec2::Zero(), 0.0}; }
+Answer fromContact(bool hit, const Contact& c) {
+  return {hit, c.tau, hit ? Vec2(c.n.normalized()) : Vec2::Zero(), 0.0};
+}
 Answer reference(const PPInput& in) {
   Contact c;
   return fromContact(detectPP(in, &c), c);
@@ -327,16 +329,16 @@ TEST(ExactCcdCost, QueryTimesAgainstReference) {
   int refHits = 0, exactHits = 0;
   const auto record = [](const char* key, double ns) { ::testing::Test::RecordProperty(key, std::to_string(ns)); };
   record("pp_reference_ns", nanosecondsPerQuery(pps, [](const PPInput& x) { return detectPP(x, nullptr); }, &refHits));
-  record("pp_exact_ns", nanosecondsPerQuery(pps, [](const PPInput& x) { return exactPP(x, nullptr) == CcdOutcome::Hit; },
-                                            &exactHits));
+  record("pp_exact_ns", nanosecondsPerQuery(
+                            pps, [](const PPInput& x) { return exactPP(x, nullptr) == CcdOutcome::Hit; }, &exactHits));
   EXPECT_NEAR(refHits, exactHits, 20);
   record("pe_reference_ns", nanosecondsPerQuery(pes, [](const PEInput& x) { return detectPE(x, nullptr); }, &refHits));
-  record("pe_exact_ns", nanosecondsPerQuery(pes, [](const PEInput& x) { return exactPE(x, nullptr) == CcdOutcome::Hit; },
-                                            &exactHits));
+  record("pe_exact_ns", nanosecondsPerQuery(
+                            pes, [](const PEInput& x) { return exactPE(x, nullptr) == CcdOutcome::Hit; }, &exactHits));
   EXPECT_GE(exactHits, refHits);  // the capsule holds the reference's region
   record("ph_reference_ns", nanosecondsPerQuery(phs, [](const PHInput& x) { return detectPH(x, nullptr); }, &refHits));
-  record("ph_exact_ns", nanosecondsPerQuery(phs, [](const PHInput& x) { return exactPH(x, nullptr) == CcdOutcome::Hit; },
-                                            &exactHits));
+  record("ph_exact_ns", nanosecondsPerQuery(
+                            phs, [](const PHInput& x) { return exactPH(x, nullptr) == CcdOutcome::Hit; }, &exactHits));
   EXPECT_NEAR(refHits, exactHits, 20);
 }
 

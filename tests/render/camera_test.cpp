@@ -91,7 +91,8 @@ TEST(FollowCamera, NoSideMovesMuchFasterThanTheParticles) {
       for (int i = 0; i < s.numParticles(); ++i) fastest = std::max(fastest, (at(s.x, i) - at(previous.x, i)).norm());
       const Box now = visibleBox(camera.update(file.scene, s, w, h), w, h);
       const double allowed = fastest + 0.02 * (before.hi.y() - before.lo.y());
-      const double moved = std::max((now.lo - before.lo).cwiseAbs().maxCoeff(), (now.hi - before.hi).cwiseAbs().maxCoeff());
+      const double moved =
+          std::max((now.lo - before.lo).cwiseAbs().maxCoeff(), (now.hi - before.hi).cwiseAbs().maxCoeff());
       ASSERT_LE(moved, allowed) << "frame " << k << " (" << w << "x" << h << ")";
       before = now;
       previous = s;

@@ -89,7 +89,9 @@ TEST_F(Offscreen, TimeIsShownInTheTopLeftCornerInTheInverseColour) {
   for (int y = 0; y < 20; ++y)
     for (int x = 0; x < 60; ++x) {
       const std::uint8_t* p = image_.pixel(x, y);
-      auto d2 = [&](int r, int g, int b) { return (p[0] - r) * (p[0] - r) + (p[1] - g) * (p[1] - g) + (p[2] - b) * (p[2] - b); };
+      auto d2 = [&](int r, int g, int b) {
+        return (p[0] - r) * (p[0] - r) + (p[1] - g) * (p[1] - g) + (p[2] - b) * (p[2] - b);
+      };
       if (d2(204, 153, 102) < d2(51, 102, 153)) ++ink;
       if (d2(204, 153, 102) < 3 * 8 * 8) ++fullInk;
     }
@@ -264,8 +266,8 @@ TEST(CommandLine, MovieAtRealTimeOpensWithTheInitialState) {
   // dt = 0.1: real time is 10 frames a second, and the run says so.
   EXPECT_NE(r.output.find("10 fps"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("real time"), std::string::npos) << r.output;
-  const auto probe = testing::run("ffprobe -v error -select_streams v:0 -show_entries stream=r_frame_rate -of csv=p=0 " +
-                                  (tmp / "m.mp4"));
+  const auto probe = testing::run(
+      "ffprobe -v error -select_streams v:0 -show_entries stream=r_frame_rate -of csv=p=0 " + (tmp / "m.mp4"));
   EXPECT_EQ(probe.output, "10/1\n");
   const std::vector<Image> frames = decodeMovie(tmp / "m.mp4", tmp.path);
   ASSERT_EQ(frames.size(), 5u) << "t = 0 and the 4 steps";

@@ -59,8 +59,8 @@ TEST(StudyEnergyOrder, SymplecticEulerOnTheOrbitIsFirstOrderInTheLargestError) {
 // fallen inside the true periapsis a (1 - e): the closest approach is recorded for failed runs too.
 TEST(StudyEnergyOrder, ImplicitEulersOrbitCollapsesBeforeNewtonFails) {
   const Problem& orbit = problem("orbit");
-  const AccuracyCell c =
-      measureAccuracy(orbit, Method{"implicit-euler", "implicit-euler", CollisionChoice{}}, 0.05, StudyOptions{}, false);
+  const AccuracyCell c = measureAccuracy(orbit, Method{"implicit-euler", "implicit-euler", CollisionChoice{}}, 0.05,
+                                         StudyOptions{}, false);
   ASSERT_EQ(c.run.outcome, Outcome::SolverFailure) << c.run.message;
   EXPECT_LT(c.metrics.minSeparation, orbit.exactMinSeparation);
   // The periapsis from vis-viva: a = 0.770, e = 0.41 (closed_forms_test checks KeplerOrbit).
@@ -70,8 +70,8 @@ TEST(StudyEnergyOrder, ImplicitEulersOrbitCollapsesBeforeNewtonFails) {
 // Explicit Euler on the undamped spring at dt = 0.1 grows so much that the bob passes through the
 // anchor (the spring's law -k (|x| - l0) x/|x| is not linear there).
 TEST(StudyEnergyOrder, ExplicitEulersSpringPassesThroughTheAnchor) {
-  const AccuracyCell c = measureAccuracy(problem("spring"), Method{"explicit-euler", "explicit-euler", CollisionChoice{}},
-                                         0.1, StudyOptions{}, false);
+  const AccuracyCell c = measureAccuracy(
+      problem("spring"), Method{"explicit-euler", "explicit-euler", CollisionChoice{}}, 0.1, StudyOptions{}, false);
   ASSERT_TRUE(c.run.ok()) << c.run.message;
   EXPECT_LT(c.metrics.minSeparation, 0);
 }

@@ -26,9 +26,10 @@ struct StepStats {
   int zoneParticles = 0;     ///< particles in failsafe zones at the end of the step
   int asleep = 0;            ///< default mode: particles asleep at the end of the step (resting, not moved)
   int woken = 0;             ///< default mode: sleepers woken in the step (by a contact or a moving neighbour)
-  int rigidZones = 0;        ///< zones that moved rigidly (or stopped): all of --compat's, the default mode's last resort
+  int rigidZones = 0;  ///< zones that moved rigidly (or stopped): all of --compat's, the default mode's last resort
   int jammedParticles = 0;   ///< default mode: particles a jam against an obstacle stopped for the rest of the step
-  int heldParticles = 0;     ///< default mode: particles held at rest by a budget-ended solve (stopped for the rest of the step)
+  int heldParticles =
+      0;  ///< default mode: particles held at rest by a budget-ended solve (stopped for the rest of the step)
   long zoneUpdates = 0;      ///< default mode: Gauss-Seidel updates of the failsafe's projection (the zones' solves)
   /// default mode: zone solves and rigid moves at which the rows' changes since the last one, warm
   /// starts included, were scaled back for adding kinetic energy (ContactProjector::capEnergy)

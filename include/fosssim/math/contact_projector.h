@@ -301,7 +301,8 @@ class ContactProjector : public ExactSolveLimits {
   /// at an earlier instant are made again first from `source` (if any). Only for bodies of
   /// masses kClusterMassRatio apart, unless `anyMasses` (a solve about to end on its budget).
   bool solveCluster(int k, RowSource* source, bool anyMasses = false);
-  std::vector<int> clusterRows_, clusterStale_, clusterSlots_;  ///< solveCluster's scratch: its rows, those to make again, bodies then obstacles
+  std::vector<int> clusterRows_, clusterStale_,
+      clusterSlots_;  ///< solveCluster's scratch: its rows, those to make again, bodies then obstacles
   std::vector<double> clusterMass_, clusterImpulses_;  ///< ... their inverse masses, the rows' multipliers
   std::vector<Vec2> clusterVelocity_;                  ///< ... their velocities
   std::vector<ConstraintRow> clusterLocal_;            ///< ... the rows on local indices
@@ -364,7 +365,8 @@ class ContactProjector : public ExactSolveLimits {
   Push pushAgain(const Coefficient& e, bool shorten);
   bool shortenPushes();
   std::vector<std::pair<int, Vec2>> restituted_;  ///< restitute's scratch: slots and their velocities before it
-  std::vector<std::pair<int, Vec2>> pushedFrom_;  ///< shortenPushes' scratch: each pushed slot once, its velocity before
+  std::vector<std::pair<int, Vec2>>
+      pushedFrom_;            ///< shortenPushes' scratch: each pushed slot once, its velocity before
   std::vector<int> work_;     ///< FIFO of row indices: work_[head_, tail_) (the rest is room)
   size_t head_ = 0, tail_ = 0;  ///< the queue: the first queued row and one past the last, in work_
   std::vector<int> changed_;  ///< body slots changed since the last takeChanged

@@ -21,8 +21,10 @@ namespace fosssim::math {
 }  // namespace fosssim::math
 
 #if defined(__GNUC__) || defined(__clang__)
-#define FOSSSIM_ASSERT(condition) \
-  (__builtin_expect(static_cast<bool>(condition), 1) ? (void)0 : ::fosssim::math::contractFailed(#condition, __FILE__, __LINE__))
+#define FOSSSIM_ASSERT(condition)                    \
+  (__builtin_expect(static_cast<bool>(condition), 1) \
+       ? (void)0                                     \
+       : ::fosssim::math::contractFailed(#condition, __FILE__, __LINE__))
 #else
 #define FOSSSIM_ASSERT(condition) \
   (static_cast<bool>(condition) ? (void)0 : ::fosssim::math::contractFailed(#condition, __FILE__, __LINE__))

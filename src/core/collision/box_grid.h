@@ -122,7 +122,8 @@ void BoxGrid::forEachOverlapFrom(const Box& query, int firstId, Visit&& visit) c
   // one only while it is its id's latest.
   const bool refiled = !dynamic_.empty();
   for (size_t k = 0; k < largeIds_.size(); ++k)
-    if (largeIds_[k] >= firstId && overlap(b, largeBoxes_[k]) && (!refiled || live[largeIds_[k]] < 0)) visit(largeIds_[k]);
+    if (largeIds_[k] >= firstId && overlap(b, largeBoxes_[k]) && (!refiled || live[largeIds_[k]] < 0))
+      visit(largeIds_[k]);
   const int x0 = column(b.x0 - cell_), x1 = column(b.x1), y0 = row(b.y0 - cell_), y1 = row(b.y1);
   if (!boxes_.empty()) {
     const int* start = start_.data();

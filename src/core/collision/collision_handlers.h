@@ -42,7 +42,9 @@ class ContinuousTimeHandler final : public CollisionHandler {
 class HybridHandler final : public CollisionHandler {
  public:
   HybridHandler(const CollisionSettings& settings, const HandlerOptions& options)
-      : cor_(settings.cor), maxIterations_(settings.maxIterations), search_(detectionRules(options), options.allPairs, options.threads) {}
+      : cor_(settings.cor),
+        maxIterations_(settings.maxIterations),
+        search_(detectionRules(options), options.allPairs, options.threads) {}
   Status handle(const Scene& scene, const State& start, State& state, StepContext& ctx) override;
   int zoneOf(int particle) const override { return zones_.zoneOf(particle); }
   /// Pairs inside one rigid zone are exempt: the zone moved them together, as the method means.

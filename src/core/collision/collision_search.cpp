@@ -200,7 +200,8 @@ void CollisionSearch::sweep(const Scene& scene, const VecX& qs, VecX& qe, StepCo
       for (size_t m = first; m < extra_.size(); ++m)
         if (extra_[m] > key) extra_[kept++] = extra_[m];
       extra_.resize(kept);
-      for (size_t m = first; m < kept; ++m) std::push_heap(extra_.begin(), extra_.begin() + static_cast<long>(m) + 1, later);
+      for (size_t m = first; m < kept; ++m)
+        std::push_heap(extra_.begin(), extra_.begin() + static_cast<long>(m) + 1, later);
     }
     if (ctx.timing) rebroad += seconds(rebroadStart, std::chrono::steady_clock::now());
   }
@@ -216,7 +217,8 @@ size_t CollisionSearch::memoryBytes() const {
   size_t bytes = candidates_.memoryBytes() + (keys_.capacity() + extra_.capacity()) * sizeof(uint64_t) +
                  row_.capacity() * sizeof(int) + mark_.capacity();
   for (const Worker& w : workers_)
-    bytes += w.keys.capacity() * sizeof(uint64_t) + w.row.capacity() * sizeof(int) + w.out.capacity() * sizeof(Collision);
+    bytes +=
+        w.keys.capacity() * sizeof(uint64_t) + w.row.capacity() * sizeof(int) + w.out.capacity() * sizeof(Collision);
   return bytes;
 }
 

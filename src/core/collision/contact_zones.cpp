@@ -88,7 +88,8 @@ int ContactZones::unite(int a, int b) {
   za.bounces = std::max(za.bounces, zb.bounces);
   za.lightest = std::min(za.lightest, zb.lightest);
   za.heaviest = std::max(za.heaviest, zb.heaviest);
-  if (zb.firstBounce >= 0.0 && (za.firstBounce < 0.0 || zb.firstBounce < za.firstBounce)) za.firstBounce = zb.firstBounce;
+  if (zb.firstBounce >= 0.0 && (za.firstBounce < 0.0 || zb.firstBounce < za.firstBounce))
+    za.firstBounce = zb.firstBounce;
   za.lastBounce = std::max(za.lastBounce, zb.lastBounce);
   za.stalledBounces = std::max(za.stalledBounces, zb.stalledBounces);
   za.bounced = za.bounced && zb.bounced;

@@ -62,7 +62,8 @@ Status EventHandler::detectAll(const Scene& scene, StepContext& ctx) {
         const StepTimer timer(ctx.timing, w.stats.broadPhase);
         for (; i < end && w.keys.size() - from < CollisionSearch::kKeysPerBlock; ++i) {
           if (fromMovers && sleepers_.asleep(i)) continue;
-          candidates_.forEachInRow(i, w.row, [&](PairKind kind, int other) { w.keys.push_back(pairKey(i, kind, other)); });
+          candidates_.forEachInRow(i, w.row,
+                                   [&](PairKind kind, int other) { w.keys.push_back(pairKey(i, kind, other)); });
           if (!fromMovers || scene.isFixed(i)) continue;
           w.row.clear();
           candidates_.particlesBefore(i, w.row);

@@ -56,7 +56,8 @@ Status EventHandler::handle(const Scene& scene, const State& start, State& state
   // rigidly, which also happens at most once per particle (a rigid zone that meets an obstacle
   // goes back to the projection, with a fresh count or that of the zone it merged with, and can
   // then only jam). So the loop ends; the budget below only guards that reasoning.
-  const long budget = static_cast<long>(eventsPerParticle_ + kMaxZoneProjections + kMaxZoneBouncesCap + 2) * (n + 1) * 4 + 1000;
+  const long budget =
+      static_cast<long>(eventsPerParticle_ + kMaxZoneProjections + kMaxZoneBouncesCap + 2) * (n + 1) * 4 + 1000;
   long processed = 0;
   changed_.clear();
   while (!heap_.empty()) {
@@ -280,7 +281,8 @@ void EventHandler::respond(const Scene& scene, const Event& e, State& state, Ste
     // Its quota counts its first event and those close on its last, in time or in the distance it
     // travelled since (kContinuousEventsPerParticle, kQuotaFreeTravel).
     const double since = now.t < 0.0 ? 0.0 : e.t - now.t;
-    if (now.t < 0.0 || since < 1.0 / eventsPerParticle_ || since * motion_.rate(p).norm() < kQuotaFreeTravel * scene.radius[p])
+    if (now.t < 0.0 || since < 1.0 / eventsPerParticle_ ||
+        since * motion_.rate(p).norm() < kQuotaFreeTravel * scene.radius[p])
       ++events_[p];
     at(state.v, p) += change.dv[k];
     motion_.setRate(p, e.t, motion_.rate(p) + h * change.dv[k]);

@@ -47,7 +47,8 @@ bool HybridHandler::impulsePasses(const Scene& scene, const State& start, State&
 
 void HybridHandler::respond(const Scene& scene, const State& start, State& state, StepContext& ctx) {
   changes_.clear();
-  for (const Collision& c : collisions_) changes_.push_back(collisionResponse(scene, c, cor_, start.x, state.x, ctx.dt));
+  for (const Collision& c : collisions_)
+    changes_.push_back(collisionResponse(scene, c, cor_, start.x, state.x, ctx.dt));
   touched_.clear();
   for (const VelocityChange& change : changes_) {
     applyWithDisplacement(change, ctx.dt, state.x, state.v);
@@ -72,7 +73,8 @@ void HybridHandler::failsafe(const Scene& scene, const State& start, State& stat
   };
   // The first detection is on the end positions the impulse passes left: only the last pass's
   // moved particles need new queries (no pass at all, or a replaced state: every pair).
-  if (maxIterations_ > 0 && !replaced) search_.detectChanged(scene, start.x, state.x, ctx, previous_, touched_, collisions_);
+  if (maxIterations_ > 0 && !replaced)
+    search_.detectChanged(scene, start.x, state.x, ctx, previous_, touched_, collisions_);
   else search_.detectAll(scene, start.x, state.x, ctx, collisions_);
   grow();
   // Move the zones, look again, until no new collision joins a zone. The reference checks at

@@ -323,7 +323,8 @@ void PairCandidates::setKept(int q, int p, bool member) {
 void PairCandidates::forgetPairsNear(const Box& b) {
   particleGrid_.forEachOverlap(b, [&](int q) { kept_[q].generation = 0; });
   if (!scene_->edges.empty())
-    edgeGrid_.forEachOverlap(b, [&](int e) { kept_[scene_->edges[e].i].generation = kept_[scene_->edges[e].j].generation = 0; });
+    edgeGrid_.forEachOverlap(
+        b, [&](int e) { kept_[scene_->edges[e].i].generation = kept_[scene_->edges[e].j].generation = 0; });
 }
 
 void PairCandidates::forgetEdgePairsNear(int e, const Box& b) {
@@ -338,7 +339,8 @@ size_t PairCandidates::memoryBytes() const {
   kept += keptKeys_.capacity() * sizeof(std::vector<uint64_t>);
   for (const std::vector<uint64_t>& keys : keptKeys_) kept += keys.capacity() * sizeof(uint64_t);
   return kept + particleBoxes_.capacity() * sizeof(Box) + edgeBoxes_.capacity() * sizeof(Box) +
-         particleGrid_.memoryBytes() + edgeGrid_.memoryBytes() + (incidentStart_.capacity() + incident_.capacity()) * sizeof(int);
+         particleGrid_.memoryBytes() + edgeGrid_.memoryBytes() +
+         (incidentStart_.capacity() + incident_.capacity()) * sizeof(int);
 }
 
 }  // namespace fosssim

@@ -42,7 +42,8 @@ bool ContactZones::near(const Scene& scene, const StepMotion& motion, uint64_t k
       const Edge& e = scene.edges[other];
       const double rs = (scene.radius[i] + e.radius) * (1.0 + kTouchingSlack);
       const double reach =
-          rs + std::min(left * (motion.rate(i).norm() + motion.rate(e.i).norm() + motion.rate(e.j).norm()), kZoneReach * rs);
+          rs +
+          std::min(left * (motion.rate(i).norm() + motion.rate(e.i).norm() + motion.rate(e.j).norm()), kZoneReach * rs);
       const Box a = box(e.i, 0.0), b = box(e.j, 0.0);
       const Box edge{std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
       return overlap(box(i, rs), edge) &&
@@ -53,7 +54,8 @@ bool ContactZones::near(const Scene& scene, const StepMotion& motion, uint64_t k
       const HalfPlane& h = scene.halfplanes[other];
       const Vec2 n = unit(h.normal);
       const double r = scene.radius[i] * (1.0 + kTouchingSlack);
-      const double s0 = (x - h.point).dot(n), s1 = s0 + std::clamp(left * motion.rate(i).dot(n), -kZoneReach * r, kZoneReach * r);
+      const double s0 = (x - h.point).dot(n),
+                   s1 = s0 + std::clamp(left * motion.rate(i).dot(n), -kZoneReach * r, kZoneReach * r);
       return std::min(s0, s1) <= r && std::max(s0, s1) >= -r;
     }
   }

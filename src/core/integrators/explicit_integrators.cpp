@@ -15,7 +15,8 @@ void ExplicitForces::compute(const Scene& scene, const VecX& x, const VecX& v, F
   accumulateGradient(scene, x, v, acceleration, context);
   forRowRanges(scene.numParticles(), context.threads(), [&](int, int first, int end) {
     for (int i = first; i < end; ++i)
-      at(acceleration, i) = scene.isFixed(i) ? Vec2(Vec2::Zero()) : Vec2(-at(acceleration, i).cwiseQuotient(at(scene.mass, i)));
+      at(acceleration, i) =
+          scene.isFixed(i) ? Vec2(Vec2::Zero()) : Vec2(-at(acceleration, i).cwiseQuotient(at(scene.mass, i)));
   });
 }
 
