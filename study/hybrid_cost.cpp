@@ -22,34 +22,12 @@ double meanHeight(const State& s) {
 
 Status runHybridCost(const StudyOptions& options) {
   CsvWriter csv;
-  if (Status s = csv.open(options.outDir + "/hybrid.csv", {"method",
-                                                           "collision",
-                                                           "maxiters",
-                                                           "particles",
-                                                           "dt",
-                                                           "steps",
-                                                           "outcome",
-                                                           "wall_per_sim_s",
-                                                           "us_per_step",
-                                                           "integrate_us",
-                                                           "narrow_us",
-                                                           "response_us",
-                                                           "failsafe_us",
-                                                           "failsafe_steps",
-                                                           "failsafe_fraction",
-                                                           "mean_zones",
-                                                           "largest_zone",
-                                                           "mean_failsafe_particles",
-                                                           "most_failsafe_particles",
-                                                           "mean_passes",
-                                                           "collisions_per_step",
-                                                           "overlap_steps",
-                                                           "max_overlap",
-                                                           "kinetic_end",
-                                                           "mean_height_start",
-                                                           "mean_height_end",
-                                                           "cor",
-                                                           "message"});
+  if (Status s = csv.open(options.outDir + "/hybrid.csv",
+                          {"method", "collision", "maxiters", "particles", "dt", "steps", "outcome", "wall_per_sim_s",
+                           "us_per_step", "integrate_us", "narrow_us", "response_us", "failsafe_us", "failsafe_steps",
+                           "failsafe_fraction", "mean_zones", "largest_zone", "mean_failsafe_particles",
+                           "most_failsafe_particles", "mean_passes", "collisions_per_step", "overlap_steps",
+                           "max_overlap", "kinetic_end", "mean_height_start", "mean_height_end", "cor", "message"});
       !s)
     return s;
   const double dt = 0.002, cor = 0.5;

@@ -61,29 +61,11 @@ EdgeThrow throwAtEdge(const Method& method, double speed, double dt) {
 
 Status runRobustness(const StudyOptions& options) {
   CsvWriter csv;
-  if (Status s = csv.open(options.outDir + "/robustness.csv", {"method",
-                                                               "collision",
-                                                               "k",
-                                                               "speed",
-                                                               "dt",
-                                                               "speed_dt",
-                                                               "outcome",
-                                                               "steps",
-                                                               "exit_speed_ratio",
-                                                               "max_overlap",
-                                                               "max_overlap_rel",
-                                                               "overlap_steps",
-                                                               "collisions",
-                                                               "run_outcome",
-                                                               "disk_radius",
-                                                               "edge_radius",
-                                                               "disk_mass",
-                                                               "penalty_k",
-                                                               "thickness",
-                                                               "maxiters",
-                                                               "default_k",
-                                                               "cor",
-                                                               "message"});
+  if (Status s = csv.open(options.outDir + "/robustness.csv",
+                          {"method", "collision", "k", "speed", "dt", "speed_dt", "outcome", "steps",
+                           "exit_speed_ratio", "max_overlap", "max_overlap_rel", "overlap_steps", "collisions",
+                           "run_outcome", "disk_radius", "edge_radius", "disk_mass", "penalty_k", "thickness",
+                           "maxiters", "default_k", "cor", "message"});
       !s)
     return s;
   std::vector<double> speeds, dts;
