@@ -48,6 +48,15 @@ nb::dict forceDict(const Force& f) {
   return d;
 }
 
+/// Sets an initial state vector (2N: positions or velocities) from an (N, 2) array, refusing
+/// non-finite values before anything is changed.
+void setFinitePairs(VecX& target, const Input& a, const char* what) {
+  const double* p = pairsOf(a, target.size() / 2, what);
+  for (long k = 0; k < target.size(); ++k)
+    if (!std::isfinite(p[k])) throw SceneError(std::string(what) + ": non-finite value");
+  std::copy(p, p + target.size(), target.data());
+}
+
 }  // namespace
 
 void bindScene(nb::module_& m) {
@@ -120,22 +129,12 @@ void bindScene(nb::module_& m) {
       .def_prop_rw(
           "positions",
           [](const PyScene& s) { return copyArray(s.file.initial.x.data(), s.file.scene.numParticles(), 2); },
-          [](PyScene& s, const Input& a) {
-            const double* p = pairsOf(a, s.file.scene.numParticles(), "positions");
-            for (long k = 0; k < s.file.initial.x.size(); ++k)
-              if (!std::isfinite(p[k])) throw SceneError("positions: non-finite value");
-            std::copy(p, p + s.file.initial.x.size(), s.file.initial.x.data());
-          },
+          [](PyScene& s, const Input& a) { setFinitePairs(s.file.initial.x, a, "positions"); },
           "Initial positions, (N, 2) (a copy; assign an array to change them).")
       .def_prop_rw(
           "velocities",
           [](const PyScene& s) { return copyArray(s.file.initial.v.data(), s.file.scene.numParticles(), 2); },
-          [](PyScene& s, const Input& a) {
-            const double* p = pairsOf(a, s.file.scene.numParticles(), "velocities");
-            for (long k = 0; k < s.file.initial.v.size(); ++k)
-              if (!std::isfinite(p[k])) throw SceneError("velocities: non-finite value");
-            std::copy(p, p + s.file.initial.v.size(), s.file.initial.v.data());
-          },
+          [](PyScene& s, const Input& a) { setFinitePairs(s.file.initial.v, a, "velocities"); },
           "Initial velocities, (N, 2).")
       .def_prop_rw(
           "masses",

@@ -71,21 +71,27 @@ TEST_F(CliOutputs, AnOutputThatIsTheSceneIsRefused) {
   // -o's partial name: "x.bin" is written as "x.partial.bin" until the run completes.
   fs::create_hard_link(scene, path("x.partial.bin"));
   expectRefused(with({"-o", path("x.bin")}), scene, "its partial file \"" + path("x.partial.bin") + "\"");
-  // A frame that -m or -g would write over.
-  fs::create_directories(path("svg"));
-  fs::create_symlink(scene, path("svg/frame00000000000000000001.svg"));
-  expectRefused(with({"-m", path("svg")}), scene, "the frame file");
-  fs::create_directories(path("png"));
-  fs::create_hard_link(scene, path("png/frame00002.png"));
-  expectRefused(with({"-g", "1", "--png-dir", path("png")}), scene, "the frame file");
-  // A frame's partial name: each frame is written there and renamed, and a file left there is
-  // removed first (the scene itself, had it that name).
-  fs::create_directories(path("svg2"));
-  fs::create_hard_link(scene, path("svg2/frame00000000000000000004.partial.svg"));
-  expectRefused(with({"-m", path("svg2")}), scene, "the partial file of a frame");
-  fs::create_directories(path("png2"));
-  fs::create_symlink(scene, path("png2/frame00001.partial.png"));
-  expectRefused(with({"-g", "1", "--png-dir", path("png2")}), scene, "the partial file of a frame");
+  // A frame that -m or -g would write over, and a frame's partial name: each frame is written
+  // there and renamed, and a file left there is removed first (the scene itself, had it that name).
+  struct FrameCase {
+    std::string folder, name;
+    bool symbolic;  // a symbolic link to the scene, else a hard link
+    std::vector<std::string> options;
+    std::string fragment;
+  };
+  const std::vector<FrameCase> frames = {
+      {"svg", "frame00000000000000000001.svg", true, {"-m"}, "the frame file"},
+      {"png", "frame00002.png", false, {"-g", "1", "--png-dir"}, "the frame file"},
+      {"svg2", "frame00000000000000000004.partial.svg", false, {"-m"}, "the partial file of a frame"},
+      {"png2", "frame00001.partial.png", true, {"-g", "1", "--png-dir"}, "the partial file of a frame"}};
+  for (const FrameCase& f : frames) {
+    SCOPED_TRACE(f.folder + "/" + f.name);
+    fs::create_directories(path(f.folder));
+    const std::string frame = path(f.folder + "/" + f.name);
+    if (f.symbolic) fs::create_symlink(scene, frame);
+    else fs::create_hard_link(scene, frame);
+    expectRefused(with(joined(f.options, {path(f.folder)})), scene, f.fragment);
+  }
 }
 
 // --stats is an output like the others: never an input, and never a file another output writes
