@@ -215,11 +215,9 @@ std::vector<std::string> earlierFrameWarnings(const Options& options, long frame
     if (dir.empty()) continue;
     DIR* d = opendir(dir.c_str());
     if (!d) continue;  // made by the run
-    const std::string ending = option == "-m" ? ".svg" : ".png";
-    long count = 0;
-    std::string first, last;  // the earliest and latest names beyond this run's frames
-    auto number = [&](const std::string& name) {  // the digits without leading zeros, compared as numbers
-      const std::string digits = name.substr(5, name.size() - 5 - ending.size());
+    const std::string ending = option == "-m" ? ".svg" : ".png", partialEnding = ".partial" + ending;
+    auto number = [&](const std::string& frame) {  // the digits without leading zeros, compared as numbers
+      const std::string digits = frame.substr(5, frame.size() - 5 - ending.size());
       const size_t from = digits.find_first_not_of('0');
       return from == std::string::npos ? std::string() : digits.substr(from);
     };
@@ -227,22 +225,44 @@ std::vector<std::string> earlierFrameWarnings(const Options& options, long frame
       const std::string x = number(a), y = number(b);
       return x.size() != y.size() ? x.size() < y.size() : x < y;
     };
+    // Files beyond this run's frames: frames, and the partial files of frames that a run stopped
+    // mid-frame (SIGKILL, power loss) left. A run removes the partial file of each frame it writes,
+    // so one beyond its frames would stay, unseen among the frames, for ever.
+    struct Beyond {
+      long count = 0;
+      std::string first, last;  // by frame number, as the file names read
+    } beyondFrames, beyondPartials;
+    auto frameOf = [&](const std::string& file) {  // a partial file's frame name; a frame's own
+      return isFramePartialName(file, ending) ? file.substr(0, file.size() - partialEnding.size()) + ending : file;
+    };
     const std::string limit = std::to_string(frames);
     while (const dirent* e = readdir(d)) {
       const std::string name = e->d_name;
-      if (!isFrameName(name, ending)) continue;
-      const std::string n = number(name);
+      const bool partial = isFramePartialName(name, ending);
+      if (!partial && !isFrameName(name, ending)) continue;
+      const std::string n = number(frameOf(name));
       if (n.size() < limit.size() || (n.size() == limit.size() && n <= limit)) continue;  // this run writes it
-      ++count;
-      if (first.empty() || less(name, first)) first = name;
-      if (last.empty() || less(last, name)) last = name;
+      Beyond& b = partial ? beyondPartials : beyondFrames;
+      ++b.count;
+      if (b.first.empty() || less(frameOf(name), frameOf(b.first))) b.first = name;
+      if (b.last.empty() || less(frameOf(b.last), frameOf(name))) b.last = name;
     }
     closedir(d);
-    if (count > 0)
-      warnings.push_back(option + ": \"" + dir + "\" holds " + std::to_string(count) + " frame" +
-                         (count == 1 ? "" : "s") + " of an earlier run beyond this run's " + std::to_string(frames) +
-                         " (" + first + (count == 1 ? "" : " to " + last) +
-                         "); they are left as they are, and the folder mixes the runs");
+    auto found = [&](const Beyond& b, const std::string& what, const std::string& frameWord) {
+      return option + ": \"" + dir + "\" holds " + std::to_string(b.count) + " " + what + (b.count == 1 ? "" : "s") +
+             " of an earlier run beyond this run's " + std::to_string(frames) + frameWord + " (" + b.first +
+             (b.count == 1 ? "" : " to " + b.last) + ")";
+    };
+    if (beyondFrames.count > 0)
+      warnings.push_back(found(beyondFrames, "frame", "") +
+                         "; they are left as they are, and the folder mixes the runs");
+    if (beyondPartials.count > 0)
+      warnings.push_back(found(beyondPartials, "partial file", " frames") +
+                         (beyondPartials.count == 1
+                              ? ": a run stopped while writing that frame left it; it is not a frame, and no run of "
+                                "fewer frames removes it"
+                              : ": runs stopped while writing those frames left them; they are not frames, and no run "
+                                "of fewer frames removes them"));
   }
   return warnings;
 }

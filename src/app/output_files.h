@@ -35,7 +35,9 @@ namespace fosssim::app {
 Status checkOutputsAgainstInputs(const Options& options);
 
 /// Warnings about frames already in the folders of -m and -g that a run of `frames` frames does
-/// not write over (a longer earlier run's): left as they are, they would pass for this run's.
+/// not write over (a longer earlier run's): left as they are, they would pass for this run's. And
+/// about the partial files of frames beyond this run's (frameN.partial.svg, left by a run killed
+/// while writing frame N): a run removes only the partial files of the frames it writes.
 std::vector<std::string> earlierFrameWarnings(const Options& options, long frames);
 
 /// Fails when --frame-every K asks for frames after steps K, 2K, ... and the run of `steps` steps

@@ -186,6 +186,26 @@ TEST_F(CliOutputs, FramesOfAnEarlierRunAreWarnedAbout) {
   // Thinned out: 20 steps, every 4th is 5 frames; frames 6 to 20 are the earlier run's.
   const Outcome thinned = runFosssim({"-s", longer, "-d", "0", "-q", "-m", svg, "--frame-every", "4"});
   EXPECT_TRUE(contains(thinned.err, "holds 15 frames of an earlier run beyond this run's 5")) << thinned;
+  // A run killed while writing frames 14 and 30 (SIGKILL: no clean-up) left their partial files.
+  // The 10-frame run removes neither; they are named apart from the frames. A 20-frame run replaces
+  // frame 14 (and its partial file) and leaves frame 30's.
+  for (const char* left : {"frame00000000000000000014.partial.svg", "frame00000000000000000030.partial.svg"})
+    std::ofstream(svg + "/" + left) << "<svg";
+  const Outcome killed = runFosssim({"-s", shorter, "-d", "0", "-q", "-m", svg});
+  EXPECT_TRUE(exitedWith(killed, 0)) << killed;
+  EXPECT_TRUE(contains(killed.err, "holds 10 frames of an earlier run beyond this run's 10 (")) << killed;
+  EXPECT_TRUE(contains(killed.err, "\" holds 2 partial files of an earlier run beyond this run's 10 frames "
+                                   "(frame00000000000000000014.partial.svg to frame00000000000000000030.partial.svg)"
+                                   ": runs stopped while writing those frames left them"))
+      << killed;
+  const Outcome whole = runFosssim({"-s", longer, "-d", "0", "-q", "-m", svg});
+  EXPECT_TRUE(exitedWith(whole, 0)) << whole;
+  EXPECT_FALSE(fs::exists(svg + "/frame00000000000000000014.partial.svg"));
+  EXPECT_FALSE(contains(whole.err, "holds 1 frame")) << whole;
+  EXPECT_TRUE(contains(whole.err, "holds 1 partial file of an earlier run beyond this run's 20 frames "
+                                  "(frame00000000000000000030.partial.svg): a run stopped while writing that "
+                                  "frame left it; it is not a frame"))
+      << whole;
 }
 
 // --frame-every beyond the run's steps wrote no frame at all, without a word: refused as a usage
