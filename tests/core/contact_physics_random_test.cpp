@@ -234,6 +234,33 @@ TestScene pileUnderForces(int seed, const char* type, double cor, const char* in
   return s;
 }
 
+// Steps pileUnderForces(seed, ...) for `steps` steps against its twin without collision handling
+// (1g below): every step ends collision-free, and the kinetic energy after it does not exceed
+// the twin's. Returns the collisions and the failsafe's energy caps over the run.
+struct PileRun {
+  long contacts = 0, energyCaps = 0;
+};
+PileRun runAgainstTwin(int seed, const char* type, double cor, const char* integrator, double spread, int steps) {
+  TestScene s = pileUnderForces(seed, type, cor, integrator, spread);
+  TestScene twin = pileUnderForces(seed, type, cor, integrator, spread);
+  twin.scene.collision.type = test::collisionType("none");
+  auto sim = defaultModeSimulator(s, /*sleep=*/false), free = defaultModeSimulator(twin, false);
+  PileRun run;
+  for (int k = 0; k < steps; ++k) {
+    twin.state = s.state;
+    const Status twinStep = free->step(twin.scene, twin.state);
+    EXPECT_TRUE(twinStep.isOk()) << "step " << k + 1 << ": " << twinStep.message();
+    const ::testing::AssertionResult clean = stepClean(*sim, s);
+    EXPECT_TRUE(clean);
+    if (!twinStep.isOk() || !clean) break;
+    run.contacts += sim->stats().collisions;
+    run.energyCaps += sim->stats().energyCaps;
+    EXPECT_LE(kinetic(s), kinetic(twin) * (1 + 1e-10)) << "step " << k + 1;
+    if (kinetic(s) > kinetic(twin) * (1 + 1e-10)) break;
+  }
+  return run;
+}
+
 // 1g. Responses under forces: piles of disks and sprung edges falling into a box under gravity,
 // masses spread over e^-14 .. e^14 (or all 1), with the symplectic and both implicit integrators,
 // COR 0, 0.5 and 1, both types, 150 steps (they land, pile up and mostly come to rest). With
@@ -252,20 +279,21 @@ TEST(ContactPhysicsRandom, PilesUnderForcesGainNoKineticEnergyFromTheirContacts)
           const int seed = 7 + static_cast<int>(spread) + static_cast<int>(10 * cor);
           SCOPED_TRACE(std::string(type) + " " + integrator + " mass spread e^" + std::to_string(spread) + " COR " +
                        std::to_string(cor) + " seed " + std::to_string(seed));
-          TestScene s = pileUnderForces(seed, type, cor, integrator, spread);
-          TestScene twin = pileUnderForces(seed, type, cor, integrator, spread);
-          twin.scene.collision.type = test::collisionType("none");
-          auto sim = defaultModeSimulator(s, /*sleep=*/false), free = defaultModeSimulator(twin, false);
-          long contacts = 0;
-          for (int k = 0; k < 150; ++k) {
-            twin.state = s.state;
-            ASSERT_TRUE(free->step(twin.scene, twin.state).isOk());
-            ASSERT_TRUE(stepClean(*sim, s));
-            contacts += sim->stats().collisions;
-            ASSERT_LE(kinetic(s), kinetic(twin) * (1 + 1e-10)) << "step " << k + 1;
-          }
-          EXPECT_GT(contacts, 200) << "the pile should have landed";
+          EXPECT_GT(runAgainstTwin(seed, type, cor, integrator, spread, 150).contacts, 200)
+              << "the pile should have landed";
         }
+}
+
+// 1h. Such a pile (seed 15021: hybrid, symplectic Euler, masses e^-14 .. e^14, COR 0), found by
+// running 1g's piles from 40 more seeds each: in its step 117 the energy guard took a zone's
+// solve back whole at one instant, again and again. Its contacts came back marked as back for that
+// solve (not counted as met again), and the cap itself did not count toward the jam limit either,
+// so they were solved and capped again without end, until the event budget's internal error.
+// Every step must end, and 1g's checks hold; the guard must have capped solves here, or the pile
+// no longer tests what it is for.
+TEST(ContactPhysicsRandom, ZoneSolvesTakenBackWholeStillEndTheStep) {
+  const PileRun run = runAgainstTwin(15021, "hybrid", 0.0, "symplectic-euler", 14.0, 150);
+  EXPECT_GT(run.energyCaps, 0);
 }
 
 // 5d. Units with forces and sleeping: those piles (masses e^-7 .. e^7) with every length, speed

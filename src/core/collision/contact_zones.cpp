@@ -278,10 +278,13 @@ void ContactZones::resolve(const Scene& scene, StepMotion& motion, PairCandidate
         requeried_[*rowOf_.find(key)] = 1;
       };
       if (!solved || capped) {
-        if (!solved) {
-          if (z.immovable) holdResting(scene, zone);
-          ++z.metAgain;
-        }
+        // Counted once, as met again: the contacts it leaves closing come back marked as back
+        // for this solve, so nothing else counts them. A cap too: the guard may take a solve
+        // back whole, and uncounted, its contacts came back to be solved and capped again at one
+        // instant without end (a pile of masses 10^11 apart, until the event budget's internal
+        // error: ContactPhysicsRandom.ZoneSolvesTakenBackWholeStillEndTheStep).
+        if (!solved && z.immovable) holdResting(scene, zone);
+        ++z.metAgain;
         // A failure is its zone's alone (and so is a cap). This zone's rows still queued are
         // dropped; those of other zones waiting for their solves at this instant are set aside
         // for those solves (the worklist is shared: dropping them too sent their contacts back as
