@@ -125,5 +125,35 @@ TEST(ImplicitSystem, WithEveryParticleHeldNothingIsEvaluatedAndNothingMoves) {
   }
 }
 
+// Masses far apart do not make a system singular. Three particles of masses 1e-9, 1 and 1e9 under
+// gravity and drag (F = m g - b v, linear: one Newton step is exact), the densely solved system
+// M + h b I: full-pivoting LU called it singular (its smallest pivot is 1e-18 of its largest,
+// below n eps) and the step failed, although it is diagonal. Each particle's implicit step is the closed form
+// m (v1 - v0) = h (m g - b v1), that is v1 = (m v0 + h m g) / (m + h b), and x1 = x0 + h v1.
+TEST(ImplicitSystem, MassesFarApartAreNotASingularSystem) {
+  const double h = 0.01, b = 1e-9;  // the drag matters to the lightest only
+  const Vec2 g(0.0, -9.81);
+  for (const char* keyword : kImplicit) {
+    SCOPED_TRACE(keyword);
+    TestScene s;
+    addBody(s, 1e-9, Vec2(0, 0), Vec2(1, 2), 0.05);
+    addBody(s, 1.0, Vec2(1, 0), Vec2(-2, 0.5), 0.05);
+    addBody(s, 1e9, Vec2(2, 0), Vec2(-3, 0.5), 0.05);
+    s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(g));
+    s.scene.forces.push_back(std::make_unique<DragDampingForce>(b));
+    s.scene.integrator = keyword;
+    s.scene.dt = h;
+    const State got = stepOnce(s, nullptr);
+    for (int i = 0; i < 3; ++i) {
+      const double m = s.scene.massOf(i);
+      const Vec2 v1 = (m * at(s.state.v, i) + h * m * g) / (m + h * b), x1 = at(s.state.x, i) + h * v1;
+      // The step adds a change to v0 (v1 = v0 + delta): rounding of the size of |v0| + |v1|.
+      const double speed = at(s.state.v, i).norm() + v1.norm();
+      EXPECT_LT((at(got.v, i) - v1).norm(), 1e-12 * speed) << "particle " << i;
+      EXPECT_LT((at(got.x, i) - x1).norm(), 1e-12 * (at(s.state.x, i).norm() + h * speed)) << "particle " << i;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace fosssim::testing

@@ -58,6 +58,11 @@ class ImplicitSystem {
   VecX solvedRhs_;
   Eigen::MatrixXd denseMatrix_, denseDamping_;  ///< dense: the system matrix and the summed -dF/dv (2N x 2N)
   Eigen::FullPivLU<Eigen::MatrixXd> denseLu_;   ///< dense: the factorisation of denseMatrix_
+  /// Dense, when denseLu_ calls the matrix singular only because its masses are far apart
+  /// (assembleDense): the system scaled by M^-1/2 on both sides, its factorisation, and the
+  /// scale (2N: 1/sqrt(m), 1 for fixed particles). Empty scale: denseLu_ solves.
+  Eigen::FullPivLU<Eigen::MatrixXd> denseScaledLu_;
+  VecX denseScale_;
   SparseMat matrix_;                            ///< sparse: the solved particles' system (2S x 2S, S solved particles)
   Eigen::SparseLU<SparseMat> lu_;               ///< sparse: the factorisation of matrix_
   VecX rhs_, delta_;                            ///< 2N: the right-hand side h F - M dvCurrent, and solve()'s delta
