@@ -111,6 +111,56 @@ TEST(Integrators, ImplicitEulerSolvesItsEquation) {
   EXPECT_LT((s.state.x - before.x - 0.05 * s.state.v).norm(), 1e-14);
 }
 
+/// A particle pulled toward x = 0 by F = -k L atan(x / L) (a spring that softens with its
+/// stretch): potential k L (x atan(x/L) - L/2 ln(1 + x^2/L^2)), stiffness k / (1 + x^2/L^2).
+class AtanSpring final : public Force {
+ public:
+  AtanSpring(double k, double length) : k_(k), length_(length) {}
+  const char* keyword() const override { return "atan spring"; }
+  void addGradient(const Scene&, const VecX& x, const VecX&, VecX& gradE) const override {
+    gradE[0] += k_ * length_ * std::atan(x[0] / length_);
+  }
+  void addJacobianX(const Scene&, const VecX& x, const VecX&, Triplets& out) const override {
+    const double r = x[0] / length_;
+    out.emplace_back(0, 0, k_ / (1 + r * r));
+  }
+
+ private:
+  double k_, length_;
+};
+
+// Implicit Euler on that spring from x = 10 L at rest, with h^2 k / m = 1000: the step's end u
+// solves u - x + (h^2 k / m) atan(u / L) = 0, a root near 0.01 L where the function is steep and
+// flat far from it. Newton's full steps from u = x overshoot to about -125 L and on outwards (the
+// --compat iteration, the reference's, fails); the default mode's line search converges. Expected
+// u from bisection of that equation, independent of the integrator.
+TEST(Integrators, ImplicitEulerConvergesWhereFullNewtonStepsOvershoot) {
+  const double m = 1.0, h = 0.1, k = 1e5, length = 1.0, x0 = 10.0;
+  TestScene s;
+  testing::addBody(s, m, Vec2(x0, 0), Vec2::Zero(), 0.1);
+  s.scene.forces.push_back(std::make_unique<AtanSpring>(k, length));
+  s.scene.integrator = "implicit-euler";
+  s.scene.dt = h;
+  double lo = -x0, hi = x0;  // g(lo) < 0 < g(hi), g increasing
+  const auto g = [&](double u) { return u - x0 + h * h * k / m * std::atan(u / length); };
+  for (int i = 0; i < 200; ++i) (g(0.5 * (lo + hi)) < 0 ? lo : hi) = 0.5 * (lo + hi);
+  const double u = 0.5 * (lo + hi);
+  for (bool course : {false, true}) {
+    std::unique_ptr<Integrator> integrator = findIntegrator("implicit-euler")->make();
+    integrator->setCourseTolerances(course);
+    State state = s.state;
+    ForceContext context;
+    const Status status = integrator->step(s.scene, state, h, context);
+    if (course) {
+      EXPECT_FALSE(status.isOk() && std::abs(state.x[0] - u) < 1e-9) << "plain Newton should not find the root";
+      continue;
+    }
+    ASSERT_TRUE(status.isOk()) << status.message();
+    EXPECT_NEAR(state.x[0], u, 1e-9 * x0);
+    EXPECT_NEAR(state.v[0], (u - x0) / h, 1e-9 * x0 / h);
+  }
+}
+
 TEST(Simulator, NonFiniteStateIsReportedWithStepAndParticle) {
   TestScene s = testing::spring("explicit-euler", 0.01, 1.0);
   s.state.x[2] = s.state.x[0];  // coincident spring ends: the direction is 0/0

@@ -136,26 +136,43 @@ const VecX& ImplicitSystem::solve() {
   return delta_;
 }
 
+double ImplicitSystem::residualEnergy(const Scene& scene) const {
+  double energy = 0;
+  for (int i = 0; i < scene.numParticles(); ++i) {
+    if (dense_ ? scene.isFixed(i) : slot_[i] < 0) continue;
+    energy += at(rhs_, i).squaredNorm() / scene.massOf(i);
+  }
+  return 0.5 * energy;
+}
+
 Status ImplicitEuler::step(const Scene& scene, State& state, double dt, ForceContext& forces) {
   iterations_ = 0;
   if (state.x.size() == 0) return Status::ok();  // nothing to solve (and no empty factorisation)
   dv_.setZero(state.v.size());
   dx_ = dt * state.v;
   const double restingScale = kNewtonRestingFraction * state.x.norm() / dt;
+  bool assembled = false;  // at dv_ already, by the last iteration's line search
   for (int iteration = 1;; ++iteration) {
     iterations_ = iteration;
-    xTrial_ = state.x + dx_;
-    vTrial_ = state.v + dv_;
-    if (Status s = system_.assemble(scene, xTrial_, vTrial_, dt, dv_, forces); !s) return s;
-    const VecX& delta = system_.solve();
-    dv_ += delta;
-    dx_ = dt * (state.v + dv_);
-    const double size = delta.norm();
+    if (!assembled)
+      if (Status s = assembleAtGuess(scene, state, dt, forces); !s) return s;
+    assembled = false;
+    delta_ = system_.solve();
+    const double size = delta_.norm();
     if (!std::isfinite(size))
       return Status::error("implicit Euler: the Newton update became non-finite");
+    next_ = dv_ + delta_;  // the full Newton step
     const double tolerance =
-        course_ ? kNewtonTolerance : kNewtonRelativeTolerance * std::max((state.v + dv_).norm(), restingScale);
-    if (course_ ? size < tolerance : size <= tolerance) break;
+        course_ ? kNewtonTolerance : kNewtonRelativeTolerance * std::max((state.v + next_).norm(), restingScale);
+    const bool converged = course_ ? size < tolerance : size <= tolerance;
+    if (course_ || converged) {  // the reference's full steps, and the last one
+      dv_ = next_;
+      dx_ = dt * (state.v + dv_);
+    } else {
+      if (Status s = lineSearch(scene, state, dt, forces); !s) return s;
+      assembled = true;
+    }
+    if (converged) break;
     if (iteration == kMaxNewtonIterations)
       return Status::error("implicit Euler: Newton's method did not converge in " +
                            std::to_string(kMaxNewtonIterations) + " iterations (last update " + shortNumber(size) +
@@ -164,6 +181,36 @@ Status ImplicitEuler::step(const Scene& scene, State& state, double dt, ForceCon
   state.x += dx_;
   state.v += dv_;
   return Status::ok();
+}
+
+// Newton's full step can overshoot where the forces bend sharply (springs compressed far below
+// their length, masses 10^12 apart: the updates cycled at a size of 5 for 100 iterations, "did
+// not converge"), so the default mode backtracks on the residual's energy (residualEnergy), on
+// which the Newton direction descends at the rate -2 E: the step alpha delta is taken when E falls
+// by at least kArmijo 2 alpha E, else alpha is halved. The full step is tried first and, taken,
+// costs nothing more (its assembly is the next iteration's); where every full step is taken the
+// iterates are those of plain Newton, bit for bit. After kMaxHalvings the shortest step is taken
+// anyway: the iteration limit then reports the failure as before.
+Status ImplicitEuler::lineSearch(const Scene& scene, const State& state, double dt, ForceContext& forces) {
+  constexpr double kArmijo = 1e-4;
+  constexpr int kMaxHalvings = 30;
+  const double energy = system_.residualEnergy(scene);
+  from_ = dv_;
+  double alpha = 1.0;
+  for (int halving = 0;; ++halving) {
+    dv_ = from_ + alpha * delta_;  // alpha = 1: bit for bit the full step, next_
+    dx_ = dt * (state.v + dv_);
+    if (Status s = assembleAtGuess(scene, state, dt, forces); !s) return s;
+    const double trial = system_.residualEnergy(scene);
+    if (trial <= (1.0 - 2.0 * kArmijo * alpha) * energy || halving == kMaxHalvings) return Status::ok();
+    alpha *= 0.5;
+  }
+}
+
+Status ImplicitEuler::assembleAtGuess(const Scene& scene, const State& state, double dt, ForceContext& forces) {
+  xTrial_ = state.x + dx_;
+  vTrial_ = state.v + dv_;
+  return system_.assemble(scene, xTrial_, vTrial_, dt, dv_, forces);
 }
 
 Status LinearizedImplicitEuler::step(const Scene& scene, State& state, double dt, ForceContext& forces) {

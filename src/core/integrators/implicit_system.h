@@ -40,6 +40,10 @@ class ImplicitSystem {
                   ForceContext& forces);
   /// Solves for delta (size 2N; 0 for fixed and held particles) with the last assembled system.
   const VecX& solve();
+  /// The last assembly's residual r = M dvCurrent - h F as an energy, r^T M^-1 r / 2 over the
+  /// solved particles: implicit Euler's merit function (0 at the step's answer; the Newton update
+  /// descends on it). Unit-free in the sense that matters: in J whatever the masses' spread.
+  double residualEnergy(const Scene& scene) const;
 
   /// Systems with at most this many degrees of freedom (2 per particle) are solved densely.
   static constexpr Eigen::Index kMaxDenseDofs = 256;
@@ -76,9 +80,17 @@ class ImplicitEuler final : public Integrator {
   void setCourseTolerances(bool course) override { course_ = course; }
 
  private:
+  /// Assembles the system at the current guess: x + dx_, v + dv_.
+  Status assembleAtGuess(const Scene& scene, const State& state, double dt, ForceContext& forces);
+  /// The default mode's step along delta_ from dv_ (see the .cpp); leaves the system assembled at
+  /// the new dv_.
+  Status lineSearch(const Scene& scene, const State& state, double dt, ForceContext& forces);
+
   ImplicitSystem system_;  ///< each Newton iteration's linear system
   /// 2N: the step's position and velocity changes so far, and the trial point x + dx, v + dv.
   VecX dx_, dv_, xTrial_, vTrial_;
+  /// 2N: the Newton update, dv_ plus all of it, and dv_ where the line search started.
+  VecX delta_, next_, from_;
   int iterations_ = 0;  ///< Newton iterations of the last step (newtonIterations())
   bool course_ = true;  ///< kNewtonTolerance (absolute) or kNewtonRelativeTolerance
 };
