@@ -161,6 +161,39 @@ TEST(Integrators, ImplicitEulerConvergesWhereFullNewtonStepsOvershoot) {
   }
 }
 
+// Three disks (m = 1, r = 0.1) resting on a floor in a penalty layer (k = 1e4, thickness 0.01)
+// under gravity, implicit Euler at dt = 0.01. The penalty force has no Jacobian (it is treated
+// explicitly), so Newton's direction is only approximate, and its full steps cycled from the first
+// step on ("did not converge"; the reference's iteration, --compat, still does). The default
+// mode's line search settles them where the layer carries their weight: k (r + thickness - y) =
+// m g, y = 0.10902, at rest.
+TEST(Integrators, ImplicitEulerSettlesDisksOnAPenaltyFloor) {
+  const double h = 0.01, k = 1e4, thickness = 0.01, r = 0.1, g = 9.81;
+  TestScene s;
+  for (double x : {-0.3, 0.0, 0.3}) testing::addBody(s, 1.0, Vec2(x, r), Vec2::Zero(), r);
+  s.scene.halfplanes.push_back(HalfPlane{Vec2(0, 0), Vec2(0, 1)});
+  s.scene.forces.push_back(std::make_unique<SimpleGravityForce>(Vec2(0, -g)));
+  s.scene.forces.push_back(std::make_unique<PenaltyForce>(k, thickness));
+  s.scene.dt = h;
+  for (bool course : {false, true}) {
+    std::unique_ptr<Integrator> integrator = findIntegrator("implicit-euler")->make();
+    integrator->setCourseTolerances(course);
+    State state = s.state;
+    ForceContext context;
+    Status status = Status::ok();
+    for (int step = 0; step < 300 && status.isOk(); ++step) status = integrator->step(s.scene, state, h, context);
+    if (course) {
+      EXPECT_FALSE(status.isOk()) << "the reference's full Newton steps should not converge here";
+      continue;
+    }
+    ASSERT_TRUE(status.isOk()) << status.message();
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_NEAR(state.x[2 * i + 1], r + thickness - g / k, 1e-6) << "disk " << i;
+      EXPECT_LT(at(state.v, i).norm(), 1e-6) << "disk " << i;
+    }
+  }
+}
+
 TEST(Simulator, NonFiniteStateIsReportedWithStepAndParticle) {
   TestScene s = testing::spring("explicit-euler", 0.01, 1.0);
   s.state.x[2] = s.state.x[0];  // coincident spring ends: the direction is 0/0
