@@ -160,7 +160,7 @@ METHODS = """\
 
 - **Integrators** (accuracy and stability): explicit Euler, symplectic Euler, implicit Euler
   (Newton's method until the update is below {newton_tolerance} of the step's velocities, at most {newton_limit}
-  iterations) and
+  iterations, each step halved while it would not lower the residual's energy) and
   linearized implicit Euler (one Newton step), as in the scene format.
 - **Collision methods** (with symplectic Euler, in the default mode): `simple` (discrete, at the
   end of the step), `continuous-time` (contacts in time order within the step, one impulse each;
@@ -260,7 +260,8 @@ NEWTON_INTRO = """\
 Two bodies (μ = {newton_mu}) started at apoapsis r = {newton_apoapsis} with eccentricities from low to \
 high, so that the periapsis r_p comes closer and its pull stiffer (ω_p = √(μ/r_p³)), each run for \
 {newton_periods} periods over a sweep of dt, with implicit Euler (Newton until the update is below \
-{newton_tolerance} of the step's velocities, at most {newton_limit} iterations) and linearized implicit Euler (one Newton step)."""
+{newton_tolerance} of the step's velocities, at most {newton_limit} iterations, each step halved while it would not \
+lower the residual's energy) and linearized implicit Euler (one Newton step)."""
 
 HYBRID_INTRO = """\
 {box_disks} disks dropped into a box (three half-planes) under gravity, COR {box_cor}, dt = {box_dt} s,
