@@ -211,7 +211,9 @@ std::vector<std::string> earlierFrameWarnings(const Options& options, long frame
   std::vector<std::string> warnings;
   const std::vector<std::pair<std::string, std::string>> folders = {
       {"-m", options.svgDir}, {"-g 1", options.pngs ? options.pngDir : std::string()}};
-  for (const auto& [option, dir] : folders) {
+  for (const auto& folder : folders) {
+    // Named, not structured bindings: C++17 lambdas cannot capture those (clang refuses).
+    const std::string &option = folder.first, &dir = folder.second;
     if (dir.empty()) continue;
     DIR* d = opendir(dir.c_str());
     if (!d) continue;  // made by the run
