@@ -32,7 +32,7 @@ Status Simulator::create(const Scene& scene, const SimulatorOptions& options,
   sim->dt_ = scene.dt;
   sim->settings_ = scene.collision;
   sim->integrator_ = integrator->make();
-  sim->integrator_->setCourseTolerances(options.handler.compat);
+  sim->integrator_->setCourseForm(options.handler.compat);
   sim->holdsResting_ = integrator->implicit;
   if (collision->make) sim->handler_ = collision->make(scene.collision, options.handler);
   sim->log_.polynomials.setEnabled(options.logPolynomials && collision->layout.polynomials);

@@ -147,7 +147,7 @@ TEST(Integrators, ImplicitEulerConvergesWhereFullNewtonStepsOvershoot) {
   const double u = 0.5 * (lo + hi);
   for (bool course : {false, true}) {
     std::unique_ptr<Integrator> integrator = findIntegrator("implicit-euler")->make();
-    integrator->setCourseTolerances(course);
+    integrator->setCourseForm(course);
     State state = s.state;
     ForceContext context;
     const Status status = integrator->step(s.scene, state, h, context);
@@ -177,7 +177,7 @@ TEST(Integrators, ImplicitEulerSettlesDisksOnAPenaltyFloor) {
   s.scene.dt = h;
   for (bool course : {false, true}) {
     std::unique_ptr<Integrator> integrator = findIntegrator("implicit-euler")->make();
-    integrator->setCourseTolerances(course);
+    integrator->setCourseForm(course);
     State state = s.state;
     ForceContext context;
     Status status = Status::ok();

@@ -27,10 +27,11 @@ class Integrator {
   /// linearized implicit Euler (one Newton step by definition), 0 for methods that solve nothing.
   /// Simulator::step copies it into StepStats::newtonIterations.
   virtual int newtonIterations() const { return 0; }
-  /// Whether iterative solves stop on the reference's absolute tolerances (--compat: the course's
-  /// iterates, bit for bit) or on tolerances relative to the scene's own scales (the default
-  /// mode, which the Simulator sets). Methods that iterate nothing ignore it.
-  virtual void setCourseTolerances(bool /*course*/) {}
+  /// Whether the method solves as the reference does (--compat: its absolute tolerances and its
+  /// systems' form, the course's iterates bit for bit) or in the scene's own units (tolerances
+  /// relative to the scene's scales, systems whose every entry has the units of its row: the
+  /// default mode, which the Simulator sets). Methods that solve nothing ignore it.
+  virtual void setCourseForm(bool /*course*/) {}
 };
 
 /// Implicit Euler's Newton iteration stops, under --compat, when the update's Euclidean norm falls

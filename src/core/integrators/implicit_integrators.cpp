@@ -47,7 +47,11 @@ Status ImplicitSystem::assemble(const Scene& scene, const VecX& x, const VecX& v
   return dense_ ? assembleDense(scene, h) : assembleSparse(scene, h);
 }
 
-// Fixed particles' velocity changes are zero: identity rows and columns, zero right-hand side.
+// Fixed particles' velocity changes are zero: rows and columns zero but for the diagonal, zero
+// right-hand side. The reference puts 1 on that diagonal; the default mode puts the particle's
+// mass there, which is the same system in exact arithmetic but keeps the matrix in the scene's
+// units: full pivoting orders its pivots by size, and 1 among masses of 10^9 (or 10^-9) changed
+// that order with the units, and with it the solve's rounding (Units tests, tests/core/units_test.cpp).
 Status ImplicitSystem::assembleDense(const Scene& scene, double h) {
   const Eigen::Index n = rhs_.size();
   for (int i = 0; i < scene.numParticles(); ++i)
@@ -63,7 +67,7 @@ Status ImplicitSystem::assembleDense(const Scene& scene, double h) {
     if (!scene.isFixed(i)) continue;
     denseMatrix_.middleRows(2 * i, 2).setZero();
     denseMatrix_.middleCols(2 * i, 2).setZero();
-    denseMatrix_.block<2, 2>(2 * i, 2 * i).setIdentity();
+    denseMatrix_.block<2, 2>(2 * i, 2 * i) = fixedDiagonal(scene, i) * Mat2::Identity();
   }
   denseLu_.compute(denseMatrix_);
   denseScale_.resize(0);
@@ -77,7 +81,7 @@ Status ImplicitSystem::assembleDense(const Scene& scene, double h) {
   // solved as the reference solves it, bit for bit.
   denseScale_.resize(n);
   for (int i = 0; i < scene.numParticles(); ++i)
-    at(denseScale_, i).setConstant(scene.isFixed(i) ? 1.0 : 1.0 / std::sqrt(scene.massOf(i)));
+    at(denseScale_, i).setConstant(1.0 / std::sqrt(scene.isFixed(i) ? fixedDiagonal(scene, i) : scene.massOf(i)));
   denseScaledLu_.compute(denseScale_.asDiagonal() * denseMatrix_ * denseScale_.asDiagonal());
   if (!denseScaledLu_.isInvertible())
     return Status::error("the implicit system (M - h dF/dv - h^2 dF/dx) is singular");
@@ -119,6 +123,8 @@ Status ImplicitSystem::assembleSparse(const Scene& scene, double h) {
     return Status::error("the implicit system (M - h dF/dv - h^2 dF/dx) is singular");
   return Status::ok();
 }
+
+double ImplicitSystem::fixedDiagonal(const Scene& scene, int i) const { return course_ ? 1.0 : scene.massOf(i); }
 
 const VecX& ImplicitSystem::solve() {
   if (dense_) {

@@ -1,7 +1,8 @@
 // Internal header: the linear system shared by both implicit integrators,
 //   (M + h dE/dv + h^2 d2E/dx2) delta = h F - M dv_current
 // (that is M - h dF/dv - h^2 dF/dx on the left), assembled at a given (x, v) with fixed
-// particles' rows and columns replaced by the identity and a zero right-hand side.
+// particles' rows and columns replaced by the identity (the default mode: their mass times the
+// identity, setCourseForm) and a zero right-hand side.
 //
 // Small systems are solved densely, assembled and factored exactly as the course's reference does
 // (sum the Hessians, scale by h^2, add h times the damping Jacobians, add M; full-pivoting LU, fixed
@@ -45,17 +46,24 @@ class ImplicitSystem {
   /// descends on it). Unit-free in the sense that matters: in J whatever the masses' spread.
   double residualEnergy(const Scene& scene) const;
 
+  /// The reference's dense system, fixed particles' rows the identity (--compat, the default), or
+  /// the same system in the scene's units, their diagonal their mass (assembleDense).
+  void setCourseForm(bool course) { course_ = course; }
+
   /// Systems with at most this many degrees of freedom (2 per particle) are solved densely.
   static constexpr Eigen::Index kMaxDenseDofs = 256;
 
  private:
   Status assembleDense(const Scene& scene, double h);
+  /// What a fixed particle's rows of the dense system hold on their diagonal (setCourseForm).
+  double fixedDiagonal(const Scene& scene, int i) const;
   /// The sparse system of the solved particles (slot_, solved_).
   Status assembleSparse(const Scene& scene, double h);
 
   /// The forces' -dF/dx and -dF/dv at (x, v), 2N x 2N, and the sparse system's entries.
   Triplets jacobianX_, jacobianV_, entries_;
   bool dense_ = true;  ///< the last system was dense (nothing held, at most kMaxDenseDofs)
+  bool course_ = true;  ///< setCourseForm
   /// For the sparse system: per particle its index among the solved particles (-1: fixed or
   /// held), the solved particles in order, and their right-hand side.
   std::vector<int> slot_, solved_;
@@ -77,7 +85,10 @@ class ImplicitEuler final : public Integrator {
   using Integrator::step;
   Status step(const Scene& scene, State& state, double dt, ForceContext& forces) override;
   int newtonIterations() const override { return iterations_; }
-  void setCourseTolerances(bool course) override { course_ = course; }
+  void setCourseForm(bool course) override {
+    course_ = course;
+    system_.setCourseForm(course);
+  }
 
  private:
   /// Assembles the system at the current guess: x + dx_, v + dv_.
@@ -100,6 +111,7 @@ class LinearizedImplicitEuler final : public Integrator {
   using Integrator::step;
   Status step(const Scene& scene, State& state, double dt, ForceContext& forces) override;
   int newtonIterations() const override { return solved_ ? 1 : 0; }
+  void setCourseForm(bool course) override { system_.setCourseForm(course); }
 
  private:
   ImplicitSystem system_;  ///< the step's one linear system
