@@ -65,13 +65,19 @@ bool isFrameName(const std::string& name, const std::string& ending) {
   return true;
 }
 
-/// A frame's partial name, "frame" + digits + ".partial" + ending: each frame is written there and
-/// renamed once whole (io::writeStaged), and a file left there (by a run killed mid-frame) is
-/// removed first.
-bool isFramePartialName(const std::string& name, const std::string& ending) {
+/// The frame whose partial name `name` is ("frame12.partial.png" -> "frame12.png"), or "" if it is
+/// none: each frame is written to "frame" + digits + ".partial" + ending and renamed once whole
+/// (io::writeStaged), and a file left there (by a run killed mid-frame) is removed first.
+std::string frameOfPartial(const std::string& name, const std::string& ending) {
   const std::string partial = ".partial" + ending;
-  return name.size() > partial.size() && name.compare(name.size() - partial.size(), partial.size(), partial) == 0 &&
-         isFrameName(name.substr(0, name.size() - partial.size()) + ending, ending);
+  if (name.size() <= partial.size() || name.compare(name.size() - partial.size(), partial.size(), partial) != 0)
+    return std::string();
+  std::string frame = name.substr(0, name.size() - partial.size()) + ending;
+  return isFrameName(frame, ending) ? frame : std::string();
+}
+
+bool isFramePartialName(const std::string& name, const std::string& ending) {
+  return !frameOfPartial(name, ending).empty();
 }
 
 /// The frames a run writes into `dir`, and their partial names, may already exist there: none of
@@ -217,7 +223,7 @@ std::vector<std::string> earlierFrameWarnings(const Options& options, long frame
     if (dir.empty()) continue;
     DIR* d = opendir(dir.c_str());
     if (!d) continue;  // made by the run
-    const std::string ending = option == "-m" ? ".svg" : ".png", partialEnding = ".partial" + ending;
+    const std::string ending = option == "-m" ? ".svg" : ".png";
     auto number = [&](const std::string& frame) {  // the digits without leading zeros, compared as numbers
       const std::string digits = frame.substr(5, frame.size() - 5 - ending.size());
       const size_t from = digits.find_first_not_of('0');
@@ -235,7 +241,8 @@ std::vector<std::string> earlierFrameWarnings(const Options& options, long frame
       std::string first, last;  // by frame number, as the file names read
     } beyondFrames, beyondPartials;
     auto frameOf = [&](const std::string& file) {  // a partial file's frame name; a frame's own
-      return isFramePartialName(file, ending) ? file.substr(0, file.size() - partialEnding.size()) + ending : file;
+      std::string frame = frameOfPartial(file, ending);
+      return frame.empty() ? file : frame;
     };
     const std::string limit = std::to_string(frames);
     while (const dirent* e = readdir(d)) {
