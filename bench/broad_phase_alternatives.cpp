@@ -105,7 +105,8 @@ std::vector<Box> stepBoxes(const std::string& scene, int n, long steps) {
   const VecX qs = state.x;
   if (!findIntegrator(s.scene.integrator)->make()->step(s.scene, state, s.scene.dt)) return boxes;
   const double scale = coordinateScale(s.scene, qs, state.x);
-  for (int p = 0; p < s.scene.numParticles(); ++p) boxes.push_back(particleBox(s.scene, qs, state.x, p, scale, 0.0));
+  for (int p = 0; p < s.scene.numParticles(); ++p)  // as the default mode's broad phase files them
+    boxes.push_back(particleBox(s.scene, qs, state.x, p, scale, 0.0, Margins::Relative));
   return boxes;
 }
 

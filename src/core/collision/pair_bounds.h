@@ -24,6 +24,14 @@
 //    (r + M)|m| with M = m + kCutoffReach / |m| (the cutoff's 2e-12 in units of |m|^2).
 //  * static pairs (penalty force, simple handler): the exact comparisons |n| < reach at the
 //    positions x; the computed |n| is off by a few ulps of S, far below the margins.
+//  * the default mode's exact queries (math::exactPP, exactPE, exactPH) and every static pair need
+//    no absolute part: their cutoffs are relative (4 eps of a polynomial's largest coefficient),
+//    so what they can report beyond reach is rounding of the pair's own magnitudes (at most about
+//    4 S plus its radii), which the relative part alone exceeds by orders of magnitude: M^2 >=
+//    (8e-6 S)^2 against a few eps S^2. Margins::Relative leaves the absolute parts out; with them,
+//    a scene drawn in micrometres had every box 4e-6 m wider than the scene, and every pair a
+//    candidate (2,000 disks of `rain` at 2^-20 m: 2.9 billion candidates, 240 s, against 4.3
+//    million and 3 s in metres).
 // Non-finite states make no bounds at all: the callers then check every pair (as the reference).
 // Boxes may be grown further (PairCandidates files them with some slack): larger boxes only add
 // candidates. tests/core/broad_phase_test.cpp builds the grazing pairs that the cutoff admits
@@ -55,7 +63,14 @@ static_assert(kCutoffReach * kCutoffReach >= 16 * 2 * math::kNegligibleLeadingCo
 /// half-plane points; infinity when some coordinate is not finite. `threads`: ranges of particles.
 double coordinateScale(const Scene& scene, const VecX& a, const VecX& b, int threads = 1);
 
-inline double margin(double scale, double radius) { return kRelativeMargin * (scale + radius) + kAbsoluteMargin; }
+/// Whether boxes carry the absolute margins (see above): the course's narrow phase needs them
+/// (its cutoff is absolute), the exact and static ones do not, and would pay for them in a scene
+/// of small units.
+enum class Margins { Course, Relative };
+
+inline double margin(double scale, double radius, Margins margins) {
+  return kRelativeMargin * (scale + radius) + (margins == Margins::Course ? kAbsoluteMargin : 0.0);
+}
 
 /// The box of particle p's centre moving from qs to qe, grown by `grow` on every side.
 inline Box sweptPointBox(const VecX& qs, const VecX& qe, int p, double grow) {
@@ -65,9 +80,10 @@ inline Box sweptPointBox(const VecX& qs, const VecX& qe, int p, double grow) {
 }
 
 /// Particle p moving from qs to qe, as a disk of its radius plus `extra`.
-inline Box particleBox(const Scene& scene, const VecX& qs, const VecX& qe, int p, double scale, double extra) {
+inline Box particleBox(const Scene& scene, const VecX& qs, const VecX& qe, int p, double scale, double extra,
+                       Margins margins) {
   const double r = scene.radius[p];
-  return sweptPointBox(qs, qe, p, r + extra + margin(scale, r));
+  return sweptPointBox(qs, qe, p, r + extra + margin(scale, r, margins));
 }
 
 /// The box of edge e's segment with both endpoints moving from qs to qe, grown by `grow`.
@@ -86,21 +102,23 @@ inline Box sweptEdgeBox(const Scene& scene, const VecX& qs, const VecX& qe, int 
 }
 
 /// Edge e with both endpoints moving from qs to qe, as a capsule of its radius plus `extra`.
-inline Box edgeBox(const Scene& scene, const VecX& qs, const VecX& qe, int e, double scale, double extra) {
+inline Box edgeBox(const Scene& scene, const VecX& qs, const VecX& qe, int e, double scale, double extra,
+                    Margins margins) {
   const double r = scene.edges[e].radius;
-  return sweptEdgeBox(scene, qs, qe, e, r + extra + margin(scale, r));
+  return sweptEdgeBox(scene, qs, qe, e, r + extra + margin(scale, r, margins));
 }
 
 /// False when particle p, moving from qs to qe, certainly stays farther than its radius plus
 /// `extra` from half-plane h's boundary line (on either side) during the whole step.
 inline bool nearHalfPlane(const Scene& scene, const VecX& qs, const VecX& qe, int p, int h, double scale,
-                          double extra) {
+                          double extra, Margins margins) {
   const HalfPlane& plane = scene.halfplanes[h];
   const double r = scene.radius[p];
   const double normal = plane.normal.norm();
   const double s0 = (at(qs, p) - plane.point).dot(plane.normal);
   const double s1 = (at(qe, p) - plane.point).dot(plane.normal);
-  const double reach = (r + extra + 2 * margin(scale, r)) * normal + kCutoffReach;
+  const double reach =
+      (r + extra + 2 * margin(scale, r, margins)) * normal + (margins == Margins::Course ? kCutoffReach : 0.0);
   return !((s0 > reach && s1 > reach) || (s0 < -reach && s1 < -reach));
 }
 

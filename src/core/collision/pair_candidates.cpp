@@ -82,11 +82,11 @@ void PairCandidates::build(const Scene& scene, const VecX& qs, const VecX& qe, d
   const int n = scene.numParticles(), edges = static_cast<int>(scene.edges.size());
   particleBoxes_.resize(n);
   forRowRanges(n, threads, [&](int, int first, int end) {
-    for (int p = first; p < end; ++p) particleBoxes_[p] = filed(particleBox(scene, qs, qe, p, scale_, extra));
+    for (int p = first; p < end; ++p) particleBoxes_[p] = filed(particleBox(scene, qs, qe, p, scale_, extra, margins_));
   });
   if (edges > 0) {  // no edge storage at all for scenes without edges
     edgeBoxes_.resize(edges);
-    for (int e = 0; e < edges; ++e) edgeBoxes_[e] = filed(edgeBox(scene, qs, qe, e, scale_, extra));
+    for (int e = 0; e < edges; ++e) edgeBoxes_[e] = filed(edgeBox(scene, qs, qe, e, scale_, extra, margins_));
     incidentStart_.assign(n + 1, 0);
     for (const Edge& e : scene.edges) ++incidentStart_[e.i + 1], ++incidentStart_[e.j + 1];
     for (int p = 0; p < n; ++p) incidentStart_[p + 1] += incidentStart_[p];
@@ -129,7 +129,7 @@ void PairCandidates::update(int p) {
   }
   // A filed box that still holds the new one stays (a particle put back at its start, a rigid
   // refit's rounding, a small impulse); else the fresh box is re-filed in the grid.
-  const Box fresh = particleBox(*scene_, *qs_, *qe_, p, scale_, extra_);
+  const Box fresh = particleBox(*scene_, *qs_, *qe_, p, scale_, extra_, margins_);
   const bool keeping = keepsLists();
   if (!contains(particleBoxes_[p], fresh)) {
     const Box old = particleBoxes_[p];
@@ -142,7 +142,7 @@ void PairCandidates::update(int p) {
   if (!scene_->edges.empty()) {
     for (int k = incidentStart_[p]; k < incidentStart_[p + 1]; ++k) {
       const int e = incident_[k];
-      const Box freshEdge = edgeBox(*scene_, *qs_, *qe_, e, scale_, extra_);
+      const Box freshEdge = edgeBox(*scene_, *qs_, *qe_, e, scale_, extra_, margins_);
       if (contains(edgeBoxes_[e], freshEdge)) continue;
       if (keeping) forgetEdgePairsNear(e, edgeBoxes_[e]);
       edgeBoxes_[e] = filed(freshEdge);

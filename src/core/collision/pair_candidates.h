@@ -73,6 +73,10 @@ class PairCandidates {
   void build(const Scene& scene, const VecX& qs, const VecX& qe, double extra = 0.0, bool updates = false,
              int threads = 1);
 
+  /// Whether the boxes carry the course's absolute margins (Margins::Course, the default) or the
+  /// relative ones only (pair_bounds.h): from the next build on.
+  void setMargins(Margins margins) { margins_ = margins; }
+
   /// Every pair is a candidate (non-finite state or forced).
   bool allPairs() const { return allPairs_; }
   /// Makes every pair a candidate until the next build (the reference's all-pairs sweep).
@@ -99,7 +103,7 @@ class PairCandidates {
   void edgesOf(int i, int after, std::vector<int>& out) const;
   /// Whether particle i may reach half-plane h.
   bool nearPlane(int i, int h) const {
-    return allPairs_ || nearHalfPlane(*scene_, *qs_, *qe_, i, h, scale_, 2 * extra_);
+    return allPairs_ || nearHalfPlane(*scene_, *qs_, *qe_, i, h, scale_, 2 * extra_, margins_);
   }
 
   /// Visits row i's candidates in the reference's order: visit(kind, other) for the particles
@@ -274,6 +278,7 @@ class PairCandidates {
   /// The build's extra reach, its coordinate scale (the largest |coordinate|, for the margins) and
   /// the filing slack (a fraction of a box's extent; 0 without updates).
   double extra_ = 0, scale_ = 0, slack_ = 0;
+  Margins margins_ = Margins::Course;  ///< setMargins
   int threads_ = 1;        ///< threads for the build's boxes and grids, and its rebuilds
   bool allPairs_ = false;  ///< every pair is a candidate until the next build (a non-finite or huge state, or forced)
   /// Per particle (N) and per edge: its box over the motion, as filed (slack included).
