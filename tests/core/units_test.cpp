@@ -41,10 +41,10 @@ struct Method {
   Failsafe failsafe = Failsafe::Projection;
 };
 
-/// A little of everything the default mode's contacts do, in 60 steps: a heap resting in a V of
-/// two half-planes (it sleeps), disks of several sizes and masses raining onto it (zones, jams,
-/// wakes), a fixed chain of thin capsules across the V, a damped chain of springs falling on it,
-/// and two fast bullets. Every number is a multiple of the units in `u`.
+/// A little of everything the default mode's contacts do, in 80 steps: a heap resting in a V of
+/// two half-planes (it sleeps), disks of several sizes and masses raining onto it after some 45
+/// steps (zones, jams, wakes), a fixed chain of thin capsules across the V, a damped chain of
+/// springs falling on it, and two fast bullets. Every number is a multiple of the units in `u`.
 TestScene unitsScene(const Method& method, const Units& u) {
   const double L = u.length, V = u.velocity();
   TestScene s = contactScene(method.collision, 0.5, 0.005 * u.time, method.failsafe);
@@ -54,7 +54,7 @@ TestScene unitsScene(const Method& method, const Units& u) {
   for (int row = 0; row < 4; ++row)
     for (int col = -row; col <= row; ++col)
       addBody(s, 1.0 * u.mass, L * Vec2(0.1 * col, 0.075 + 0.1 * row), Vec2::Zero(), 0.05 * L);
-  // The rain, just above it.
+  // The rain, about 0.5 above it.
   for (int row = 0; row < 4; ++row)
     for (int col = 0; col < 8; ++col) {
       const double m = uniform(rng, 0.5, 2.5);
