@@ -101,6 +101,7 @@ TEST(BroadPhase, GrazingPairsNeedTheMargins) {
          {math::DetectionRules{}, math::DetectionRules{math::QuinticForm::Reference}}) {
       const std::vector<Collision> found = allPairs(m.scene, m.qs, m.qe, rules);
       PairCandidates candidates;
+      candidates.setMargins(Margins::Course);  // the course's cut-off is what these pairs graze
       candidates.build(m.scene, m.qs, m.qe);
       const std::set<uint64_t> keys = candidateKeys(m.scene, candidates);
       for (const Collision& c : found) {

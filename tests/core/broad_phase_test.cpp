@@ -42,6 +42,7 @@ TEST(BroadPhase, EveryCollidingPairIsACandidate) {
     const double offset = s % 3 == 0 ? 0.0 : (s % 3 == 1 ? 1e3 : 1e6);
     Motion m = randomMotion(rng, 40 + s % 60, offset);
     PairCandidates candidates;
+    candidates.setMargins(Margins::Course);  // the course's narrow phase below (CollisionSearch's boxes)
     candidates.build(m.scene, m.qs, m.qe);
     ASSERT_FALSE(candidates.allPairs());
     const std::set<uint64_t> keys = candidateKeys(m.scene, candidates);

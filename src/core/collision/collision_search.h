@@ -36,7 +36,9 @@ class CollisionSearch {
   static constexpr size_t kKeysPerBlock = 1 << 14;
 
   explicit CollisionSearch(const math::DetectionRules& rules, bool allPairs = false, int threads = 1)
-      : detector_(rules), forceAll_(allPairs), threads_(threads) {}
+      : detector_(rules), forceAll_(allPairs), threads_(threads) {
+    candidates_.setMargins(Margins::Course);  // the course's narrow phase: its cut-off is absolute
+  }
 
   /// Every collision of qs -> qe in pair order into `out`.
   void detectAll(const Scene& scene, const VecX& qs, const VecX& qe, StepContext& ctx, std::vector<Collision>& out);

@@ -24,7 +24,6 @@ EventHandler::EventHandler(const CollisionSettings& settings, int eventsPerParti
   zones_.setHold(options.hold);
   sleepers_.setEnabled(options.sleep);
   sleepers_.setThreads(threads_);
-  candidates_.setMargins(Margins::Relative);  // exact queries only (pair_query.h): no absolute cutoff to cover
 }
 
 Status EventHandler::handle(const Scene& scene, const State& start, State& state, StepContext& ctx) {

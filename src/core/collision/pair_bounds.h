@@ -28,10 +28,11 @@
 //    no absolute part: their cutoffs are relative (4 eps of a polynomial's largest coefficient),
 //    so what they can report beyond reach is rounding of the pair's own magnitudes (at most about
 //    4 S plus its radii), which the relative part alone exceeds by orders of magnitude: M^2 >=
-//    (8e-6 S)^2 against a few eps S^2. Margins::Relative leaves the absolute parts out; with them,
-//    a scene drawn in micrometres had every box 4e-6 m wider than the scene, and every pair a
-//    candidate (2,000 disks of `rain` at 2^-20 m: 2.9 billion candidates, 240 s, against 4.3
-//    million and 3 s in metres).
+//    (8e-6 S)^2 against a few eps S^2. So PairCandidates' boxes carry the relative part only
+//    (Margins::Relative), and only CollisionSearch, the course's narrow phase, asks for the
+//    absolute parts too. With them everywhere, a scene drawn in micrometres had every box 4e-6 m
+//    wider than the scene, and every pair a candidate (2,000 disks of `rain` at 2^-20 m: 2.9
+//    billion candidates, 240 s, against 4.3 million and 3 s in metres).
 // Non-finite states make no bounds at all: the callers then check every pair (as the reference).
 // Boxes may be grown further (PairCandidates files them with some slack): larger boxes only add
 // candidates. tests/core/broad_phase_test.cpp builds the grazing pairs that the cutoff admits

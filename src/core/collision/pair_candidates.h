@@ -73,8 +73,9 @@ class PairCandidates {
   void build(const Scene& scene, const VecX& qs, const VecX& qe, double extra = 0.0, bool updates = false,
              int threads = 1);
 
-  /// Whether the boxes carry the course's absolute margins (Margins::Course, the default) or the
-  /// relative ones only (pair_bounds.h): from the next build on.
+  /// Whether the boxes carry the relative margins only (Margins::Relative, the default: exact and
+  /// static narrow phases) or also the absolute ones that the course's cut-off needs
+  /// (Margins::Course, CollisionSearch's), pair_bounds.h; from the next build on.
   void setMargins(Margins margins) { margins_ = margins; }
 
   /// Every pair is a candidate (non-finite state or forced).
@@ -278,7 +279,7 @@ class PairCandidates {
   /// The build's extra reach, its coordinate scale (the largest |coordinate|, for the margins) and
   /// the filing slack (a fraction of a box's extent; 0 without updates).
   double extra_ = 0, scale_ = 0, slack_ = 0;
-  Margins margins_ = Margins::Course;  ///< setMargins
+  Margins margins_ = Margins::Relative;  ///< setMargins
   int threads_ = 1;        ///< threads for the build's boxes and grids, and its rebuilds
   bool allPairs_ = false;  ///< every pair is a candidate until the next build (a non-finite or huge state, or forced)
   /// Per particle (N) and per edge: its box over the motion, as filed (slack included).

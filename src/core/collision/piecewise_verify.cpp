@@ -74,7 +74,6 @@ std::vector<Violation> EventHandler::unresolved(const Scene& scene, const VecX& 
   VecX lo, hi;
   paths.corners(lo, hi);
   PairCandidates candidates;
-  candidates.setMargins(Margins::Relative);  // the exact queries below
   candidates.build(scene, lo, hi);
   std::vector<double> times;
   auto check = [&](uint64_t key) {

@@ -30,7 +30,6 @@ Status SimpleHandler::handle(const Scene& scene, const State&, State& state, Ste
   // tests in the reference's order.
   {
     const StepTimer timer(ctx.timing, ctx.stats->broadPhase);
-    candidates_.setMargins(Margins::Relative);  // static overlap tests: nothing cut off (pair_bounds.h)
     candidates_.build(scene, x, x);
     if (allPairs_) candidates_.forceAllPairs();
     keys_.clear();

@@ -76,7 +76,6 @@ void forEachPenaltyPair(const Scene& scene, const VecX& x, double thickness, For
   const long restCount = rests ? std::count_if(rests, rests + n, [](char r) { return r != 0; }) : 0;
   if (restCount == n && n > 0) return;  // every pair acts on resting particles only
   // A negative thickness shrinks the reach; the boxes are then simply not widened.
-  candidates.setMargins(Margins::Relative);  // static reach tests: nothing cut off (pair_bounds.h)
   candidates.build(scene, x, x, std::max(0.0, 0.5 * thickness), false, threads);
   if (context.allPairs()) candidates.forceAllPairs();
   const char* skip = 2 * restCount >= n ? skipRows(scene, candidates, rests, threads, scratch) : nullptr;
