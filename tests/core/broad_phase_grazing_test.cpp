@@ -1,6 +1,10 @@
-// The broad phase's margins, on pairs that graze (see the test): boxes of the bare shapes miss
-// collisions that the narrow phase reports, the candidates with margins none.
+// The broad phase's margins, on pairs that graze (see the tests): boxes of the bare shapes miss
+// collisions that the narrow phase reports, the candidates with margins none. Both kinds of
+// narrow phase: the course's (absolute margins) and the default mode's exact queries (relative
+// margins), near the origin and far from it.
 #include "broad_phase_pairs.h"
+#include "core/collision/pair_bounds.h"
+#include "core/collision/pair_query.h"
 
 #include <cmath>
 #include <cstdio>
@@ -137,6 +141,108 @@ TEST(BroadPhase, GrazingPairsNeedTheMargins) {
   EXPECT_GT(missedWithoutMargins, 0) << "no grazing pair needed the margins: the test would not notice their absence";
   std::printf("grazing pairs: %ld collisions, %ld of them missed by boxes without margins\n", hits,
               missedWithoutMargins);
+}
+
+// The default mode's exact queries (pair_query.h) on pairs that graze, near the origin and far from
+// it (up to 10^7), slow and fast: every pair they report is a candidate of PairCandidates' boxes
+// (Margins::Relative, the default). Those boxes' margins follow the pairs' own sizes and motions
+// (and the coordinates only by an allowance for their rounding, kCoordinateRounding), so far from
+// the origin they are as narrow as near it. The exact queries report no pair beyond the bare
+// shapes' reach here, but many within a hair of it: boxes short of the shapes by a billionth of
+// their radii miss some (counted, to show the test would notice boxes that fall short).
+TEST(BroadPhase, PairsTheExactQueriesReportAreCandidatesAnywhere) {
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  auto u = [&](double lo, double hi) { return lo + (hi - lo) * unit(rng); };
+  auto logU = [&](double lo, double hi) { return std::pow(10.0, u(lo, hi)); };
+  auto uv = [&](double lo, double hi) {  // x drawn before y (see above)
+    const double x = u(lo, hi);
+    const double y = u(lo, hi);
+    return Vec2(x, y);
+  };
+  const double offsets[] = {0.0, 1.0, 1e3, 1e5, 1e7};
+  long hits = 0, farHits = 0, missedByShortBoxes = 0;
+  for (int sample = 0; sample < 30000; ++sample) {
+    Motion m;
+    const int kind = sample % 3;  // 0 PP, 1 PH, 2 PE
+    const int axis = static_cast<int>(u(0, 2)), other = 1 - axis;
+    const double sign = u(0, 1) < 0.5 ? -1.0 : 1.0;
+    const double offset = offsets[static_cast<int>(u(0, 5))];
+    // Gaps around the rounding of the coordinates (ulps of the offset), either side of reach.
+    const double gapSign = u(0, 1) < 0.3 ? -1.0 : 1.0;
+    const double gap = gapSign * logU(-17, -11) * std::max(offset, 1.0);
+    const double r1 = logU(-8, 0), r2 = logU(-8, 0);
+    const double motion = sample % 2 ? logU(-12, -6) : logU(-3, 0);  // slow or fast
+    Vec2 x1 = Vec2::Constant(offset) + uv(-1, 1);
+    Vec2 along = Vec2::Zero(), across = Vec2::Zero();
+    along[axis] = sign;
+    across[other] = 1.0;
+    const Vec2 d1 = motion * uv(-1, 1);
+    const double side = u(0, 1) < 0.5 ? -1.0 : 1.0;
+    const Vec2 d21 = motion * (u(-0.2, 0.2) * along + side * across);  // passing the closest point
+    const Vec2 x21 = (r1 + r2 + gap) * along - u(0, 1) * motion * side * across;
+    m.qs.resize(kind == 2 ? 6 : (kind == 0 ? 4 : 2));
+    m.qe.resize(m.qs.size());
+    addParticle(m.scene, 1.0, false, r1);
+    at(m.qs, 0) = x1;
+    at(m.qe, 0) = x1 + d1;
+    uint64_t key = 0;
+    if (kind == 0) {
+      addParticle(m.scene, 1.0, false, r2);
+      at(m.qs, 1) = x1 + x21;
+      at(m.qe, 1) = at(m.qs, 1) + d1 + d21;
+      key = pairKey(0, PairKind::ParticleParticle, 1);
+    } else if (kind == 1) {
+      const double scale = logU(-4, 4);  // the normal is not normalised
+      m.scene.halfplanes.push_back(HalfPlane{x1 - (r1 + gap) * along + u(-1, 1) * across, scale * along});
+      at(m.qe, 0) = x1 + motion * (u(-1e-3, 0) * along + side * across);
+      key = pairKey(0, PairKind::ParticleHalfPlane, 0);
+    } else {
+      addParticle(m.scene, 1.0, false, r2);
+      addParticle(m.scene, 1.0, false, r2);
+      const double length = logU(-3, 1);
+      at(m.qs, 1) = x1 + x21 - u(0, 1) * length * across;
+      at(m.qs, 2) = at(m.qs, 1) + length * across;
+      at(m.qe, 1) = at(m.qs, 1) + d1 + d21;
+      at(m.qe, 2) = at(m.qs, 2) + d1 + d21 + logU(-12, -5) * uv(-1, 1);
+      m.scene.edges.push_back(Edge{1, 2, r2});
+      key = pairKey(0, PairKind::ParticleEdge, 0);
+    }
+    // Ground truth: the exact query over the step, as the time-ordered handler asks it at t = 0.
+    math::ExactContact contact;
+    const auto stepMotion = [&](int p, Vec2& x, Vec2& d) {
+      x = at(m.qs, p);
+      d = at(m.qe, p) - at(m.qs, p);
+    };
+    if (queryPair(m.scene, key, stepMotion, contact) != math::CcdOutcome::Hit) continue;
+    ++hits;
+    farHits += offset >= 1e5;
+    PairCandidates candidates;
+    candidates.build(m.scene, m.qs, m.qe);
+    ASSERT_FALSE(candidates.allPairs());
+    EXPECT_TRUE(candidateKeys(m.scene, candidates).count(key))
+        << "sample " << sample << ": " << pairKindName(keyKind(key)) << " at offset " << offset << ", gap " << gap;
+    // Boxes (or signed distances) a billionth short of the bare shapes.
+    const double shortBy = 1.0 - 1e-9;
+    bool separated = false;
+    const Box bare = sweptPointBox(m.qs, m.qe, 0, shortBy * r1);
+    if (kind == 0) {
+      separated = !overlap(bare, sweptPointBox(m.qs, m.qe, 1, shortBy * r2));
+    } else if (kind == 1) {
+      const HalfPlane& h = m.scene.halfplanes[0];
+      const double s0 = (at(m.qs, 0) - h.point).dot(h.normal), s1 = (at(m.qe, 0) - h.point).dot(h.normal);
+      const double reach = shortBy * r1 * h.normal.norm();
+      separated = (s0 > reach && s1 > reach) || (s0 < -reach && s1 < -reach);
+    } else {
+      separated = !overlap(bare, sweptEdgeBox(m.scene, m.qs, m.qe, 0, shortBy * r2));
+    }
+    missedByShortBoxes += separated;
+  }
+  EXPECT_GT(hits, 3000);
+  EXPECT_GT(farHits, 1000);
+  EXPECT_GT(missedByShortBoxes, 0) << "no pair grazed: the test would not notice boxes that fall short";
+  std::printf("exact queries' grazing pairs: %ld hits (%ld at 10^5 or farther), %ld missed by boxes 1e-9 short\n", hits,
+              farHits, missedByShortBoxes);
 }
 
 }  // namespace

@@ -206,5 +206,32 @@ TEST(BroadPhase, CoordinatesBeyondTheGridCheckEveryPair) {
   EXPECT_TRUE(candidates.allPairs());
 }
 
+// A scene's candidates do not depend on where it sits. A square of n x n touching disks (radius
+// 0.05 on a grid of spacing 0.1, all falling by the same small step) has as candidates exactly
+// its touching pairs, along the rows and columns and along the diagonals (whose boxes touch too):
+// 2 n (n - 1) + 2 (n - 1)^2, near the origin and 2^17 m from it, whose rounding (ulps of 3e-11)
+// the margins' allowance covers. With margins of 4e-6 of the coordinates, the far square's boxes
+// were 0.5 m wider than its disks, and every disk was a candidate of some 400 others.
+TEST(BroadPhase, CandidatesDoNotDependOnWhereTheSceneSits) {
+  const int n = 30;
+  const long touching = 2L * n * (n - 1) + 2L * (n - 1) * (n - 1);
+  for (const double offset : {0.0, -1.0, 131072.0, -131072.0}) {
+    Motion m;
+    m.qs.resize(2 * n * n);
+    m.qe.resize(2 * n * n);
+    for (int row = 0; row < n; ++row)
+      for (int col = 0; col < n; ++col) {
+        const int p = row * n + col;
+        addParticle(m.scene, 1.0, false, 0.05);
+        at(m.qs, p) = Vec2(offset + 0.1 * col, offset + 0.1 * row);
+        at(m.qe, p) = at(m.qs, p) + Vec2(0.0, -2.45e-4);
+      }
+    PairCandidates candidates;
+    candidates.build(m.scene, m.qs, m.qe);
+    ASSERT_FALSE(candidates.allPairs());
+    EXPECT_EQ(static_cast<long>(candidateKeys(m.scene, candidates).size()), touching) << "offset " << offset;
+  }
+}
+
 }  // namespace
 }  // namespace fosssim

@@ -1,11 +1,13 @@
 // Internal header: the boxes the broad phase compares, and why comparing them is exact.
 //
 // The broad phase may skip a pair only when the narrow phase would certainly report nothing for
-// it, rounding and the CCD's leading-coefficient cutoff included. Every box is therefore grown
-// by a margin m = kRelativeMargin (S + r) + kAbsoluteMargin on top of the object's radius, where
-// S bounds the magnitude of every coordinate involved in the step (start and end positions,
-// half-plane points) and r is the object's radius. Two boxes that do not overlap are apart along
-// some axis by more than r1 + r2 + m1 + m2. Why that suffices, per pair kind:
+// it, rounding and the CCD's cutoffs included. Every box is therefore grown by a margin on top of
+// the object's radius. Two kinds of narrow phase need two kinds of margin (Margins):
+//
+// The course's narrow phase (Margins::Course, CollisionSearch's): m = kRelativeMargin (S + r) +
+// kAbsoluteMargin, where S bounds the magnitude of every coordinate involved in the step (start
+// and end positions, half-plane points) and r is the object's radius. Two boxes that do not
+// overlap are apart along some axis by more than r1 + r2 + m1 + m2. Why that suffices, per pair:
 //
 //  * particle-edge (swept): the narrow phase (math::detectPE without a log) first rejects pairs
 //    whose swept boxes are apart by more than rv + re + kSweptBoxMargin * scale, scale <= 4 S +
@@ -22,21 +24,42 @@
 //  * particle-half-plane (swept): the same for r^2|m|^2 - s(t)^2 with the signed distance
 //    s(t) = (x(t) - p).m linear in t; the broad phase skips the pair when |s| stays above
 //    (r + M)|m| with M = m + kCutoffReach / |m| (the cutoff's 2e-12 in units of |m|^2).
-//  * static pairs (penalty force, simple handler): the exact comparisons |n| < reach at the
-//    positions x; the computed |n| is off by a few ulps of S, far below the margins.
-//  * the default mode's exact queries (math::exactPP, exactPE, exactPH) and every static pair need
-//    no absolute part: their cutoffs are relative (4 eps of a polynomial's largest coefficient),
-//    so what they can report beyond reach is rounding of the pair's own magnitudes (at most about
-//    4 S plus its radii), which the relative part alone exceeds by orders of magnitude: M^2 >=
-//    (8e-6 S)^2 against a few eps S^2. So PairCandidates' boxes carry the relative part only
-//    (Margins::Relative), and only CollisionSearch, the course's narrow phase, asks for the
-//    absolute parts too. With them everywhere, a scene drawn in micrometres had every box 4e-6 m
-//    wider than the scene, and every pair a candidate (2,000 disks of `rain` at 2^-20 m: 2.9
-//    billion candidates, 240 s, against 4.3 million and 3 s in metres).
+//
+// The default mode's exact queries (math::exactPP, exactPE, exactPH) and the static pairs (penalty
+// force, simple handler) (Margins::Relative, PairCandidates' default): m = kRelativeMargin (E + r)
+// + kCoordinateRounding S, where E is the object's own extent over the step (for a particle
+// |dx| + |dy| of its motion; for an edge the width plus the height of its swept box, which bounds
+// its length and its endpoints' motions). Why no absolute part and no kRelativeMargin S:
+//
+//  * The exact queries work on the pair's differences only (x2 - x1, the displacements, the edge
+//    vector, each computed from the stored positions with a relative error of eps), scale them by
+//    a power of two, and judge cutoffs relative to each polynomial's largest coefficient (4 eps).
+//    What they can report beyond reach is therefore rounding relative to the pair's own
+//    magnitudes, not to where the pair sits. A pair that could come within reach has those
+//    magnitudes bounded by its two boxes: |x2 - x1| by the motions and sizes (a pair farther
+//    apart than its motions can close is farther than reach by about its own distance, which
+//    relative rounding cannot bridge), the displacements by E1 + E2, an edge vector by E. So
+//    M = m1 + m2 >= kRelativeMargin (E1 + E2 + r1 + r2) bounds a few eps of every magnitude
+//    involved by a factor of some 10^9, as (8e-6 S)^2 bounded a few eps S^2 above. Where the
+//    distance enters squared (PE's interior, R^2 |e|^2 - (w x e)^2), the pair's largest magnitude
+//    L is at most about 4 (E1 + E2 + r1 + r2), and M^2 >= (1e-6 L)^2 stays far above a few eps
+//    L^2 likewise.
+//  * Where the pair sits enters only as rounding of the positions themselves: a position at an
+//    instant of the step (x + T d) or a box bound is off by a few ulps of S, which
+//    kCoordinateRounding S exceeds by thousands.
+//  * Static pairs compare |n| < reach at the positions x: |n| is off by a few ulps of itself
+//    (at most about 3 S near reach) and the box bounds by a few ulps of S.
+//  * The zones (ContactZones::near) and sleepers' wakes (EventHandler::stepBoxesMeet) test boxes
+//    grown by the radii times 1 + kTouchingSlack (1e-6): the radius part kRelativeMargin r (4e-6)
+//    contains them, so what they find is among the candidates.
+//   With S in the relative margin, as the course's boxes have it, a scene's cost depended on
+//   where it sits: 200 disks of `rain` moved 10^5 m from the origin had boxes 0.4 m wider than
+//   their 0.05 m radius, and 42 times the candidate pairs. With an absolute part, on its units (a
+//   scene drawn in micrometres had every box 4e-6 m wider than the scene).
 // Non-finite states make no bounds at all: the callers then check every pair (as the reference).
 // Boxes may be grown further (PairCandidates files them with some slack): larger boxes only add
-// candidates. tests/core/broad_phase_test.cpp builds the grazing pairs that the cutoff admits
-// beyond reach (GrazingPairsNeedTheMargins) and shows that boxes without these margins miss some.
+// candidates. tests/core/broad_phase_grazing_test.cpp builds the grazing pairs that the cutoffs
+// admit beyond reach, for both kinds of narrow phase, near the origin and far from it.
 #pragma once
 
 #include "box_grid.h"
@@ -50,6 +73,9 @@ namespace fosssim {
 
 /// Relative part of the margin (see above): four times the narrow phase's swept-box margin.
 constexpr double kRelativeMargin = 4 * math::kSweptBoxMargin;
+/// The default mode's allowance for rounding of the coordinates themselves, as a fraction of their
+/// largest magnitude S (about 4,500 ulps of S; see above).
+constexpr double kCoordinateRounding = 1e-12;
 /// Absolute part of the margin: covers the CCD's absolute leading-coefficient cutoff (squared
 /// lengths below 1e-12) in the particle-particle position quadratic with a factor 8 to spare.
 constexpr double kAbsoluteMargin = 4e-6;
@@ -69,8 +95,16 @@ double coordinateScale(const Scene& scene, const VecX& a, const VecX& b, int thr
 /// of small units.
 enum class Margins { Course, Relative };
 
-inline double margin(double scale, double radius, Margins margins) {
-  return kRelativeMargin * (scale + radius) + (margins == Margins::Course ? kAbsoluteMargin : 0.0);
+/// The margin of an object of radius `radius` and extent `extent` over the step (see above), with
+/// S = `scale`.
+inline double margin(double scale, double radius, double extent, Margins margins) {
+  if (margins == Margins::Course) return kRelativeMargin * (scale + radius) + kAbsoluteMargin;
+  return kRelativeMargin * (extent + radius) + kCoordinateRounding * scale;
+}
+
+/// Particle p's extent over the step from qs to qe: |dx| + |dy| of its motion.
+inline double particleExtent(const VecX& qs, const VecX& qe, int p) {
+  return std::fabs(qe[2 * p] - qs[2 * p]) + std::fabs(qe[2 * p + 1] - qs[2 * p + 1]);
 }
 
 /// The box of particle p's centre moving from qs to qe, grown by `grow` on every side.
@@ -84,7 +118,7 @@ inline Box sweptPointBox(const VecX& qs, const VecX& qe, int p, double grow) {
 inline Box particleBox(const Scene& scene, const VecX& qs, const VecX& qe, int p, double scale, double extra,
                        Margins margins) {
   const double r = scene.radius[p];
-  return sweptPointBox(qs, qe, p, r + extra + margin(scale, r, margins));
+  return sweptPointBox(qs, qe, p, r + extra + margin(scale, r, particleExtent(qs, qe, p), margins));
 }
 
 /// The box of edge e's segment with both endpoints moving from qs to qe, grown by `grow`.
@@ -106,7 +140,9 @@ inline Box sweptEdgeBox(const Scene& scene, const VecX& qs, const VecX& qe, int 
 inline Box edgeBox(const Scene& scene, const VecX& qs, const VecX& qe, int e, double scale, double extra,
                     Margins margins) {
   const double r = scene.edges[e].radius;
-  return sweptEdgeBox(scene, qs, qe, e, r + extra + margin(scale, r, margins));
+  const Box bare = sweptEdgeBox(scene, qs, qe, e, 0.0);
+  const double grow = r + extra + margin(scale, r, (bare.x1 - bare.x0) + (bare.y1 - bare.y0), margins);
+  return Box{bare.x0 - grow, bare.y0 - grow, bare.x1 + grow, bare.y1 + grow};
 }
 
 /// False when particle p, moving from qs to qe, certainly stays farther than its radius plus
@@ -118,8 +154,8 @@ inline bool nearHalfPlane(const Scene& scene, const VecX& qs, const VecX& qe, in
   const double normal = plane.normal.norm();
   const double s0 = (at(qs, p) - plane.point).dot(plane.normal);
   const double s1 = (at(qe, p) - plane.point).dot(plane.normal);
-  const double reach =
-      (r + extra + 2 * margin(scale, r, margins)) * normal + (margins == Margins::Course ? kCutoffReach : 0.0);
+  const double grow = r + extra + 2 * margin(scale, r, particleExtent(qs, qe, p), margins);
+  const double reach = grow * normal + (margins == Margins::Course ? kCutoffReach : 0.0);
   return !((s0 > reach && s1 > reach) || (s0 < -reach && s1 < -reach));
 }
 
