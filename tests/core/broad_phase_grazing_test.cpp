@@ -17,6 +17,35 @@ using testing::allPairs;
 using testing::candidateKeys;
 using testing::Motion;
 
+// Adds particles 1 and 2 (radius r) and the edge between them (radius r), lying across the
+// separating axis at x1 + x21, `place` of its length below that point, both ends moving by d and
+// the second by `wobble` more.
+void addEdgeAcross(Motion& m, const Vec2& x1, const Vec2& x21, const Vec2& across, double r, double length,
+                   double place, const Vec2& d, const Vec2& wobble) {
+  addParticle(m.scene, 1.0, false, r);
+  addParticle(m.scene, 1.0, false, r);
+  at(m.qs, 1) = x1 + x21 - place * length * across;
+  at(m.qs, 2) = at(m.qs, 1) + length * across;
+  at(m.qe, 1) = at(m.qs, 1) + d;
+  at(m.qe, 2) = at(m.qs, 2) + d + wobble;
+  m.scene.edges.push_back(Edge{1, 2, r});
+}
+
+// Whether the pair of particle 0 and the other object of a sample (kind 0: particle 1; 1:
+// half-plane 0; 2: edge 0) is apart by the boxes (or signed distances) of the bare shapes, their
+// radii times `reach`.
+bool bareShapesApart(const Motion& m, int kind, double reach) {
+  const auto bare = [&](int p) { return sweptPointBox(m.qs, m.qe, p, reach * m.scene.radius[p]); };
+  if (kind == 0) return !overlap(bare(0), bare(1));
+  if (kind == 1) {
+    const HalfPlane& h = m.scene.halfplanes[0];
+    const double s0 = (at(m.qs, 0) - h.point).dot(h.normal), s1 = (at(m.qe, 0) - h.point).dot(h.normal);
+    const double r = reach * m.scene.radius[0] * h.normal.norm();
+    return (s0 > r && s1 > r) || (s0 < -r && s1 < -r);
+  }
+  return !overlap(bare(0), sweptEdgeBox(m.scene, m.qs, m.qe, 0, reach * m.scene.edges[0].radius));
+}
+
 // Pairs that graze: the closest approach lies along an axis, just outside or inside reach, with
 // displacements so small that the CCD drops leading coefficients (|c| < 1e-12) and so reports
 // collisions that exact arithmetic would not. These are the pairs the margins exist for: boxes
@@ -90,15 +119,10 @@ TEST(BroadPhase, GrazingPairsNeedTheMargins) {
         at(m.qe, 0) = x1 + delta * (slant * along + aside * across);
       }
     } else {
-      addParticle(m.scene, 1.0, false, r2);
-      addParticle(m.scene, 1.0, false, r2);
       const double length = logU(-3, 1);
-      at(m.qs, 1) = x1 + x21 - u(0, 1) * length * across;
-      at(m.qs, 2) = at(m.qs, 1) + length * across;
-      at(m.qe, 1) = at(m.qs, 1) + d1 + d21;
+      const double place = u(0, 1);
       const double wobble = logU(-10, -5);
-      at(m.qe, 2) = at(m.qs, 2) + d1 + d21 + wobble * uv(-1, 1);
-      m.scene.edges.push_back(Edge{1, 2, r2});
+      addEdgeAcross(m, x1, x21, across, r2, length, place, d1 + d21, wobble * uv(-1, 1));
     }
     // Ground truth: every pair the narrow phase reports.
     for (const math::DetectionRules& rules :
@@ -112,28 +136,7 @@ TEST(BroadPhase, GrazingPairsNeedTheMargins) {
         if (c.kind != static_cast<PairKind>(kind == 2 ? 1 : (kind == 1 ? 2 : 0))) continue;
         ++hits;
         EXPECT_TRUE(keys.count(pairKey(c))) << "sample " << sample << ": " << pairKindName(c.kind) << " gap " << gap;
-        // Without margins: boxes (or signed distances) of the bare shapes.
-        bool separated = false;
-        auto bare = [&](int p) {
-          const double r = m.scene.radius[p];
-          return Box{std::min(m.qs[2 * p], m.qe[2 * p]) - r, std::min(m.qs[2 * p + 1], m.qe[2 * p + 1]) - r,
-                     std::max(m.qs[2 * p], m.qe[2 * p]) + r, std::max(m.qs[2 * p + 1], m.qe[2 * p + 1]) + r};
-        };
-        if (kind == 0) {
-          separated = !overlap(bare(0), bare(1));
-        } else if (kind == 1) {
-          const HalfPlane& h = m.scene.halfplanes[0];
-          const double s0 = (at(m.qs, 0) - h.point).dot(h.normal), s1 = (at(m.qe, 0) - h.point).dot(h.normal);
-          const double reach = r1 * h.normal.norm();
-          separated = (s0 > reach && s1 > reach) || (s0 < -reach && s1 < -reach);
-        } else {
-          Box edge = bare(1);
-          const Box b2 = bare(2);
-          edge = Box{std::min(edge.x0, b2.x0), std::min(edge.y0, b2.y0), std::max(edge.x1, b2.x1),
-                     std::max(edge.y1, b2.y1)};
-          separated = !overlap(bare(0), edge);
-        }
-        missedWithoutMargins += separated;
+        missedWithoutMargins += bareShapesApart(m, kind, 1.0);  // boxes without margins
       }
     }
   }
@@ -198,14 +201,10 @@ TEST(BroadPhase, PairsTheExactQueriesReportAreCandidatesAnywhere) {
       at(m.qe, 0) = x1 + motion * (u(-1e-3, 0) * along + side * across);
       key = pairKey(0, PairKind::ParticleHalfPlane, 0);
     } else {
-      addParticle(m.scene, 1.0, false, r2);
-      addParticle(m.scene, 1.0, false, r2);
       const double length = logU(-3, 1);
-      at(m.qs, 1) = x1 + x21 - u(0, 1) * length * across;
-      at(m.qs, 2) = at(m.qs, 1) + length * across;
-      at(m.qe, 1) = at(m.qs, 1) + d1 + d21;
-      at(m.qe, 2) = at(m.qs, 2) + d1 + d21 + logU(-12, -5) * uv(-1, 1);
-      m.scene.edges.push_back(Edge{1, 2, r2});
+      const double place = u(0, 1);
+      const double wobble = logU(-12, -5);
+      addEdgeAcross(m, x1, x21, across, r2, length, place, d1 + d21, wobble * uv(-1, 1));
       key = pairKey(0, PairKind::ParticleEdge, 0);
     }
     // Ground truth: the exact query over the step, as the time-ordered handler asks it at t = 0.
@@ -222,21 +221,7 @@ TEST(BroadPhase, PairsTheExactQueriesReportAreCandidatesAnywhere) {
     ASSERT_FALSE(candidates.allPairs());
     EXPECT_TRUE(candidateKeys(m.scene, candidates).count(key))
         << "sample " << sample << ": " << pairKindName(keyKind(key)) << " at offset " << offset << ", gap " << gap;
-    // Boxes (or signed distances) a billionth short of the bare shapes.
-    const double shortBy = 1.0 - 1e-9;
-    bool separated = false;
-    const Box bare = sweptPointBox(m.qs, m.qe, 0, shortBy * r1);
-    if (kind == 0) {
-      separated = !overlap(bare, sweptPointBox(m.qs, m.qe, 1, shortBy * r2));
-    } else if (kind == 1) {
-      const HalfPlane& h = m.scene.halfplanes[0];
-      const double s0 = (at(m.qs, 0) - h.point).dot(h.normal), s1 = (at(m.qe, 0) - h.point).dot(h.normal);
-      const double reach = shortBy * r1 * h.normal.norm();
-      separated = (s0 > reach && s1 > reach) || (s0 < -reach && s1 < -reach);
-    } else {
-      separated = !overlap(bare, sweptEdgeBox(m.scene, m.qs, m.qe, 0, shortBy * r2));
-    }
-    missedByShortBoxes += separated;
+    missedByShortBoxes += bareShapesApart(m, kind, 1.0 - 1e-9);  // a billionth short of the shapes
   }
   EXPECT_GT(hits, 3000);
   EXPECT_GT(farHits, 1000);
