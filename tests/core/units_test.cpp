@@ -13,8 +13,8 @@
 //
 // The same holds for the scene's orientation: turned by a quarter turn or mirrored, every vector
 // of the scene has its components swapped or negated, every operation of a step is the original's
-// with its operands swapped or negated (a sum x1 y1 + x2 y2 becomes x2 y2 + x1 y1, which rounds
-// alike), so the turned run must be the original turned, bit for bit. Not for the implicit
+// with its operands swapped or negated (a dot product a.x b.x + a.y b.y becomes a.y b.y + a.x b.x,
+// which rounds alike), so the turned run must be the original turned, bit for bit. Not for the implicit
 // integrators under a quarter turn: their linear solve eliminates a particle's x before its y,
 // and a spring that is not along an axis couples the two (the solve's rounding then differs in its
 // last bits, as for any reordering of the unknowns); a mirror or a half turn keeps that order,
@@ -33,7 +33,8 @@
 namespace fosssim::testing {
 namespace {
 
-/// The scaled run's units against the unit run's, and the half-planes' normal magnitude.
+/// The scaled run's units against the unit run's, the half-planes' normal magnitude, and the
+/// scene's orientation (the Frame tests turn it and keep the units).
 struct Units {
   const char* name = "SI";
   double length = 1.0, mass = 1.0, time = 1.0, normal = 1.0;

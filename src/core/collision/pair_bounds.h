@@ -52,14 +52,17 @@
 //  * The zones (ContactZones::near) and sleepers' wakes (EventHandler::stepBoxesMeet) test boxes
 //    grown by the radii times 1 + kTouchingSlack (1e-6): the radius part kRelativeMargin r (4e-6)
 //    contains them, so what they find is among the candidates.
-//   With S in the relative margin, as the course's boxes have it, a scene's cost depended on
-//   where it sits: 200 disks of `rain` moved 10^5 m from the origin had boxes 0.4 m wider than
-//   their 0.05 m radius, and 42 times the candidate pairs. With an absolute part, on its units (a
-//   scene drawn in micrometres had every box 4e-6 m wider than the scene).
+//
+// With S in the relative margin, as the course's boxes have it, a scene's cost depended on where
+// it sits: 200 disks of `rain` moved 10^5 m from the origin had boxes 0.4 m wider than their
+// 0.05 m radius, and 42 times the candidate pairs. With an absolute part, it depended on the
+// scene's units: a scene drawn in micrometres had every box 4e-6 m wider than the scene.
+//
 // Non-finite states make no bounds at all: the callers then check every pair (as the reference).
 // Boxes may be grown further (PairCandidates files them with some slack): larger boxes only add
-// candidates. tests/core/broad_phase_grazing_test.cpp builds the grazing pairs that the cutoffs
-// admit beyond reach, for both kinds of narrow phase, near the origin and far from it.
+// candidates. tests/core/broad_phase_grazing_test.cpp builds grazing pairs for both kinds of
+// narrow phase, near the origin and far from it: the course's cutoff admits some beyond reach,
+// which boxes without margins miss; the exact queries report pairs within a hair of reach.
 #pragma once
 
 #include "box_grid.h"
