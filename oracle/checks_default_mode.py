@@ -49,7 +49,9 @@ def generic(sc, tr, notes):
 #     acted in that step. Resting contact does not bounce: below COR 1, an impulse whose contact
 #     closes no faster than twice the step's kicks along its normal (each side's |kick . n|
 #     summed, a kick being the velocity change the integrator's prediction made, 0 for a fixed
-#     particle) takes COR 0;
+#     particle) takes COR 0. Hits of one instant act together: consecutive impulses of one time
+#     whose contacts all close faster than that at the first one's turn are a round, and hits of
+#     a round that share a movable particle leave by Moreau's law (replay_step);
 #   - contacts are time-ordered, nothing ends a step deeper than it began, no response adds kinetic
 #     energy, momentum and angular momentum are kept for free scenes, and along every replayed path
 #     no pair passes into another (no tunnelling).
@@ -142,10 +144,66 @@ def _closest_param(p, a, b):
     return 0.0 if ee == 0 else max(0.0, min(1.0, dot(sub(p, a), e) / ee))
 
 
+def _solve(a, b):
+    """Gaussian elimination with partial pivoting; None when a is singular."""
+    n = len(b)
+    m = [list(row) + [rhs] for row, rhs in zip(a, b)]
+    for c in range(n):
+        piv = max(range(c, n), key=lambda r: abs(m[r][c]))
+        if abs(m[piv][c]) < 1e-300:
+            return None
+        m[c], m[piv] = m[piv], m[c]
+        for r in range(c + 1, n):
+            f = m[r][c] / m[c][c]
+            for k in range(c, n + 1):
+                m[r][k] -= f * m[c][k]
+    x = [0.0] * n
+    for r in reversed(range(n)):
+        x[r] = (m[r][n] - sum(m[r][k] * x[k] for k in range(r + 1, n))) / m[r][r]
+    return x
+
+
+def _project(rows, inv, u):
+    """The inelastic projection of velocities u (a dict particle -> velocity) onto the rows
+    (each a list of (particle, coefficient) with sum coef . v >= 0), closest in the kinetic-energy
+    norm, by enumerating active sets (KKT: lambda >= 0, every row satisfied; the optimum is unique
+    in the velocities). Returns v* as a dict, or None."""
+    scale = max(norm(x) for x in u.values()) or 1.0
+    rowv = lambda row, v: sum(dot(c, v[p]) for p, c in row)
+    for size in range(1, len(rows) + 1):
+        for active in _subsets(len(rows), size):
+            g = [rows[k] for k in active]
+            a = [[sum(inv(p) * dot(c, c2) for p, c in r1 for p2, c2 in r2 if p == p2) for r2 in g] for r1 in g]
+            lam = _solve(a, [-rowv(r, u) for r in g])
+            if lam is None or min(lam) < 0.0:
+                continue
+            v = dict(u)
+            for r, l in zip(g, lam):
+                for p, c in r:
+                    v[p] = add(v[p], mul(inv(p) * l, c))
+            if all(rowv(r, v) >= -1e-12 * scale for r in rows):
+                return v
+    return None
+
+
+def _subsets(n, size, first=0):
+    if size == 0:
+        yield []
+        return
+    for k in range(first, n - size + 1):
+        for rest in _subsets(n, size - 1, k + 1):
+            yield [k] + rest
+
+
 def replay_step(sc, start, end, pred_x, pred_v):
     """Replays the step's logged impulses in time order from the predicted motion. Returns
     (pieces, x, v): pieces lists (t0, positions at t0, rates) for every straight piece of the
-    paths (a rate is a displacement per whole step), x and v the replayed end state."""
+    paths (a rate is a displacement per whole step), x and v the replayed end state.
+
+    Hits of one instant act together: consecutive impulses of one time whose contacts all close
+    faster than resting contact at the round's start are one round, and hits of a round that share
+    a movable particle leave by Moreau's law, v + (1 + COR)(P v - v) with P v the inelastic
+    projection onto their rows (a hit alone: its standard impulse)."""
     h, e = sc.dt, sc.cor
     x = [start.pos(i) for i in range(sc.n)]
     rate = [sub(pred_x[i], start.pos(i)) for i in range(sc.n)]
@@ -154,36 +212,73 @@ def replay_step(sc, start, end, pred_x, pred_v):
     kick = [(0.0, 0.0) if sc.fixed[p] else sub(pred_v[p], start.vel(p)) for p in range(sc.n)]
     along = lambda p, nh: abs(dot(kick[p], nh))
     # COR 0 for resting contact (see the section comment): closing (m/s) against the kicks.
-    cor = lambda closing, kicks: 0.0 if e < 1 and closing <= 2.0 * kicks else e
-    t, pieces = 0.0, []
-    for (kind, i, j, n, tau) in end.impulses:
-        if tau > t:
-            pieces.append((t, list(x), list(rate)))
-            x = [add(x[p], mul(tau - t, rate[p])) for p in range(sc.n)]
-            t = tau
+    resting = lambda closing, kicks: closing <= 2.0 * kicks
+    cor = lambda closing, kicks: 0.0 if e < 1 and resting(closing, kicks) else e
+    u = lambda p: mul(1.0 / h, rate[p])   # the velocity the path moves with
+
+    def contact(im):
+        """The impulse's row (n . relative velocity >= 0), closing speed and kicks along it."""
+        kind, i, j, n, tau = im
         nh = unit(n)
-        u = lambda p: mul(1.0 / h, rate[p])   # the velocity the path moves with
         if kind == PP:
-            w = inv(i) + inv(j)
-            c = dot(sub(u(j), u(i)), nh)
-            N = (1 + cor(-c, along(i, nh) + along(j, nh))) * c
-            dv = [(i, mul(N * inv(i) / w, nh)), (j, mul(-N * inv(j) / w, nh))]
+            row, kicks = [(i, mul(-1, nh)), (j, nh)], along(i, nh) + along(j, nh)
         elif kind == PE:
             a, b, _ = sc.edges[j]
             al = _closest_param(x[i], x[a], x[b])
-            w = inv(i) + (1 - al) ** 2 * inv(a) + al ** 2 * inv(b)
-            ve = add(mul(1 - al, u(a)), mul(al, u(b)))
-            c = dot(sub(ve, u(i)), nh)
-            N = (1 + cor(-c, along(i, nh) + (1 - al) * along(a, nh) + al * along(b, nh))) * c
-            dv = [(i, mul(N * inv(i) / w, nh)), (a, mul(-(1 - al) * N * inv(a) / w, nh)),
-                  (b, mul(-al * N * inv(b) / w, nh))]
+            row = [(i, mul(-1, nh)), (a, mul(1 - al, nh)), (b, mul(al, nh))]
+            kicks = along(i, nh) + (1 - al) * along(a, nh) + al * along(b, nh)
         else:
-            c = dot(u(i), nh)
-            dv = [(i, mul(-(1 + cor(c, along(i, nh))) * c, nh))]
+            row, kicks = [(i, mul(-1, nh))], along(i, nh)
+        return row, -sum(dot(c, u(p)) for p, c in row), kicks
+
+    def change(dv):
         for p, d in dv:
             if not sc.fixed[p]:
                 v[p] = add(v[p], d)
                 rate[p] = add(rate[p], mul(h, d))
+
+    def alone(row, closing, kicks):
+        w = sum(inv(p) * dot(c, c) for p, c in row)
+        N = (1 + cor(closing, kicks)) * closing / w
+        change([(p, mul(N * inv(p), c)) for p, c in row])
+
+    t, pieces, ims, q = 0.0, [], end.impulses, 0
+    while q < len(ims):
+        tau = ims[q][4]
+        if tau > t:
+            pieces.append((t, list(x), list(rate)))
+            x = [add(x[p], mul(tau - t, rate[p])) for p in range(sc.n)]
+            t = tau
+        # The round: this impulse and the next ones of its time whose contacts close as hits now.
+        rnd = [contact(ims[q])]
+        while (q + len(rnd) < len(ims) and ims[q + len(rnd)][4] == tau and rnd[0][1] > 0 and
+               not resting(rnd[0][1], rnd[0][2])):
+            c = contact(ims[q + len(rnd)])
+            if c[1] <= 0 or resting(c[1], c[2]):
+                break
+            rnd.append(c)
+        q += len(rnd) if len(rnd) > 1 else 1
+        if len(rnd) == 1:
+            alone(*rnd[0])
+            continue
+        # Its groups, joined through movable particles.
+        groups = []
+        for c in rnd:
+            mine = {p for p, _ in c[0] if not sc.fixed[p]}
+            joined = [g for g in groups if mine & g[0]]
+            for g in joined:
+                groups.remove(g)
+            groups.append((mine.union(*[g[0] for g in joined]), [c] + [m for g in joined for m in g[1]]))
+        for _, members in groups:
+            if len(members) == 1:
+                alone(*members[0])
+                continue
+            rows = [m[0] for m in members]
+            uu = {p: u(p) for r in rows for p, _ in r}
+            vs = _project(rows, inv, uu)
+            if vs is None:
+                return pieces + [(t, list(x), list(rate))], [(math.nan, math.nan)] * sc.n, v
+            change([(p, mul(1 + e, sub(vs[p], uu[p]))) for p in uu])
     pieces.append((t, list(x), list(rate)))
     x = [add(x[p], mul(1.0 - t, rate[p])) for p in range(sc.n)]
     return pieces, x, v

@@ -88,31 +88,16 @@ def _(sc, tr, notes):
     notes.append('tunnelling scene; one PP impulse at the predicted step %d, tau %.3f (1e-9); velocities exactly exchanged (1e-12)' % (step, hits[0][1][4]))
 
 
-def gauss_seidel_1d(m, v, pairs, e=1.0):
-    """Sequential 1D impulses at one instant: the first approaching pair (in pair order) gets an
-    impulse with restitution e, again and again, until no pair of `pairs` approaches."""
-    v = list(v)
-    order = []
-    while True:
-        hit = next(((i, j) for (i, j) in pairs if v[i] > v[j]), None)
-        if hit is None:
-            return v, order
-        i, j = hit
-        u = v[j] - v[i]
-        v[i] += (1 + e) * u * m[j] / (m[i] + m[j])
-        v[j] -= (1 + e) * u * m[i] / (m[i] + m[j])
-        order.append(hit)
-
-
 @check('t2m2/ContinuousTimeTests/simultaneous.xml')
 def _(sc, tr, notes):
     # The course applied the two contacts once each, one after the other, from positions moved as
     # if the new velocities held for the whole step, so the middle ball met the left one again a few
-    # steps later. The default mode brings all three balls to the contact instant and applies
-    # impulses against the current velocities until no pair of that instant approaches: after
-    # (0,1) and (1,2) the middle ball moves left faster than the left ball while still touching
-    # it, so (0,1) is hit again at the same instant. Checked: the contact instant predicted from
-    # the initial conditions, the impulse order, and the sequential 1D elastic result.
+    # steps later. The default mode brings all three balls to the contact instant, where both
+    # contacts close at once: they are one round of hits, answered together by Moreau's law,
+    # v+ = P v + e (P v - v) with P v the inelastic projection. Both rows are active in P v (the
+    # three balls' common velocity V = sum m v / sum m closes neither contact, and the multipliers
+    # that reach it are positive), so every ball leaves at V + e (V - v): the symmetric scene stays
+    # symmetric (the middle ball keeps still, the light balls bounce back at their speed).
     ct_common(sc, tr)
     conserved_momentum(sc, tr, notes)
     conserved_kinetic(sc, tr)
@@ -122,17 +107,19 @@ def _(sc, tr, notes):
     t_hit2 = (sc.x0[2][0] - sc.x0[1][0] - sc.r[1] - sc.r[2]) / (sc.v0[1][0] - sc.v0[2][0])
     close(t_hit, t_hit2, 1e-12, 'both balls reach the middle one at once')
     step = math.floor(t_hit / h) + 1
-    want_v, order = gauss_seidel_1d(sc.m, [sc.v0[i][0] for i in range(3)], [(0, 1), (1, 2)])
-    expect([im[:3] for k, im in hits] == [(PP, i, j) for (i, j) in order] and all(k == step for k, im in hits),
-           'impulses %s, expected %s all in step %d' % (hits, order, step))
+    v0 = [sc.v0[i][0] for i in range(3)]
+    V = sum(m * v for m, v in zip(sc.m, v0)) / sum(sc.m)
+    want_v = [V + sc.cor * (V - v) for v in v0]
+    expect([im[:3] for k, im in hits] == [(PP, 0, 1), (PP, 1, 2)] and all(k == step for k, im in hits),
+           'impulses %s, expected (0, 1) and (1, 2), once each, in step %d' % (hits, step))
     for k, im in hits:
         close(im[4], t_hit / h - (step - 1), 1e-9, 'contact instant within the step')
     for i in range(3):
         close2(tr.ends[step].vel(i), (want_v[i], 0.0), 1e-9, 'velocity of ball %d after the contact instant' % i)
-    expect(want_v[2] > 0 and want_v[1] < 0 and want_v[0] < want_v[1] and want_v[2] > -want_v[0],
-           'not the asymmetric outcome: %s' % want_v)
-    notes.append('all contacts at the predicted instant of step %d (tau %.3f, 1e-9), in the order %s (Gauss-Seidel until no pair approaches); velocities %s equal the sequential 1D elastic result (1e-9); the right ball flies off fastest; momentum (1e-12) and kinetic energy (1e-12) conserved'
-                 % (step, hits[0][1][4], order, ', '.join('%.3f' % x for x in want_v)))
+    for k in range(step, len(tr.ends)):
+        close(tr.ends[k].vel(0)[0], -tr.ends[k].vel(2)[0], 1e-12, 'step %d: the outer balls mirror each other' % k)
+    notes.append('both contacts at the predicted instant of step %d (tau %.3f, 1e-9), once each; velocities %s equal Moreau\'s law for the two hits together (1e-9): the outer balls bounce back mirrored, the middle one keeps still; momentum (1e-12) and kinetic energy (1e-12) conserved'
+                 % (step, hits[0][1][4], ', '.join('%.3f' % x for x in want_v)))
 
 
 def halfplane_cor(sc, tr, notes):

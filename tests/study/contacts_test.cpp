@@ -53,7 +53,8 @@ TEST(StudyContacts, JointDropReboundsAtTheImpactSpeedInTheDefaultMode) {
 }
 
 // Touching rack: free balls, COR 1, no external force: kinetic energy, momentum and angular
-// momentum are invariants.
+// momentum are invariants. The cue's momentum reaches the rack's fifth row only through at least
+// one contact per row (whether a row's contacts act one by one or together as one instant's hits).
 TEST(StudyContacts, TouchingRackKeepsEnergyAndMomentaInTheDefaultMode) {
   for (const char* type : kTypes) {
     const ContactResult r = run("touching-rack", ContactMode::Default, type);
@@ -61,7 +62,7 @@ TEST(StudyContacts, TouchingRackKeepsEnergyAndMomentaInTheDefaultMode) {
     EXPECT_LE(r.energyGain, 1 + 1e-9) << type;
     EXPECT_LE(r.momentumDrift, 1e-12) << type;
     EXPECT_LE(r.angularDrift, 1e-9) << type;
-    EXPECT_GT(r.contacts, 15) << type << ": the cue's momentum should spread through the rack";
+    EXPECT_GE(r.contacts, 5) << type << ": the cue's momentum should spread through the rack";
   }
 }
 

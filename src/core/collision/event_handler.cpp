@@ -66,7 +66,11 @@ Status EventHandler::handle(const Scene& scene, const State& start, State& state
     heap_.pop_back();
     if (!stale(scene, e)) {
       if (++processed > budget) return Status::error("contact events do not settle (internal error: budget exceeded)");
-      respond(scene, e, state, ctx);  // times itself: response, or failsafe for the zones
+      // Hits of this instant that share particles with e are answered with it (simultaneous_hits.cpp).
+      long taken = 0;
+      if (heap_.empty() || heap_.front().t > e.t + kSimultaneousHits || !respondTogether(scene, e, state, ctx, taken))
+        respond(scene, e, state, ctx);  // times itself: response, or failsafe for the zones
+      processed += taken;
     }
     // Contacts that reach the zones at one instant join them before they are solved: a resting
     // pile's contacts all come at t = 0, and solving the zone once per contact cost hundreds of
@@ -190,24 +194,23 @@ bool EventHandler::stale(const Scene& scene, const Event& e) const {
   return false;
 }
 
-void EventHandler::respond(const Scene& scene, const Event& e, State& state, StepContext& ctx) {
-  const double h = ctx.dt;
+EventHandler::Assessment EventHandler::assess(const Scene& scene, const Event& e, double h, StepStats& stats,
+                                              bool wake) {
+  Assessment a;
   auto rate = [&](int p) { return motion_.rate(p); };
   double scale = 0;
-  const double closing = closingSpeed(scene, e.key, e.normal, e.alpha, rate, scale);
+  a.closing = closingSpeed(scene, e.key, e.normal, e.alpha, rate, scale);
   // A contact that does not close now yet deepens later in the step (an edge rotating under a
   // resting disk: the overlap grows at second order) is one that impulses cannot settle: it goes
   // to the zones, whose projection uses the normals where the overlap would be. One that does not
   // deepen beyond rounding is resolved already.
-  // deepest: the step fraction where a curving contact would overlap deepest (-1: not curving).
   const auto deepestTime = [&] {
-    return deepeningTime(scene, e.key, [&](int p, double t) { return motion_.at(p, t); }, closing, e.t);
+    return deepeningTime(scene, e.key, [&](int p, double t) { return motion_.at(p, t); }, a.closing, e.t);
   };
-  double deepest = -1.0;
-  if (closing <= kRestingClosingFraction * scale && (deepest = deepestTime()) < 0.0) return;
-  const bool curving = deepest >= 0.0;
+  if (a.closing <= kRestingClosingFraction * scale && (a.deepest = deepestTime()) < 0.0) return a;
+  const bool curving = a.deepest >= 0.0;
   // closing is a rate (displacement per step); the wake rule compares speeds.
-  if (sleepers_.any()) wakeIfHit(scene, e, curving ? 0.0 : closing / h, *ctx.stats);
+  if (wake && sleepers_.any()) wakeIfHit(scene, e, curving ? 0.0 : a.closing / h, stats);
 
   // A contact is inside one rigid zone (exempt) only if every particle of it moves with that zone:
   // a half-plane or a fixed particle met by a rigid zone is an obstacle, which joins the zone. A
@@ -228,26 +231,37 @@ void EventHandler::respond(const Scene& scene, const Event& e, State& state, Ste
     sameZone = sameZone && z >= 0 && (zone == -2 || zone == z);
     zone = z;
   }
-  if (sameRigidZone) return;  // rigid to first order inside: exempt
-  if (zone == -2) return;     // nothing of the pair can move
+  if (sameRigidZone) return a;  // rigid to first order inside: exempt
+  if (zone == -2) return a;     // nothing of the pair can move
   // Inside one zone that its projection solved, closing speeds within the projection's tolerance
   // of the zone's speeds are what the solve leaves, not new approaches (solving again would
   // change nothing but the count that sends the zone to rigid motion).
   // Unless it deepens later in the step all the same (an edge rotating into a particle: the
   // overlap grows at second order while the normal at T sees almost no approach); the zone then
   // takes its row with the normal where it would overlap deepest, as for a curving contact.
-  if (sameZone && !curving && closing <= kZoneClosingFraction * zones_.rateScale(zone) &&
-      (deepest = deepestTime()) < 0.0)
-    return;
-  if (toZones) {
+  if (sameZone && !curving && a.closing <= kZoneClosingFraction * zones_.rateScale(zone) &&
+      (a.deepest = deepestTime()) < 0.0)
+    return a;
+  a.route = toZones ? Route::Zones : Route::Impulse;
+  return a;
+}
+
+void EventHandler::respond(const Scene& scene, const Event& e, State& state, StepContext& ctx) {
+  const double h = ctx.dt;
+  const Assessment a = assess(scene, e, h, *ctx.stats, /*wake=*/true);
+  if (a.route == Route::Zones) {
     const StepTimer timer(ctx.timing, ctx.stats->failsafe);
-    const int z = zones_.absorb(scene, motion_, candidates_, e.key, e.t, h, deepest);
+    const int z = zones_.absorb(scene, motion_, candidates_, e.key, e.t, h, a.deepest);
     if (z >= 0) pendingZones_.push_back(z);
     return;
   }
+  if (a.route == Route::Impulse) impulse(scene, e, a.closing, state, ctx);
+}
 
-  // One impulse against the current velocities (the paths' rates over h). A particle of a zone
-  // that stopped for the rest of the step is an obstacle, as a fixed particle is.
+// One impulse against the current velocities (the paths' rates over h). A particle of a zone
+// that stopped for the rest of the step is an obstacle, as a fixed particle is.
+void EventHandler::impulse(const Scene& scene, const Event& e, double closing, State& state, StepContext& ctx) {
+  const double h = ctx.dt;
   const StepTimer timer(ctx.timing, ctx.stats->response);
   const int i = keyParticle(e.key), other = keyOther(e.key);
   const auto v = [&](int p) -> Vec2 { return motion_.rate(p) / h; };
@@ -275,21 +289,22 @@ void EventHandler::respond(const Scene& scene, const Event& e, State& state, Ste
   }
   ++ctx.stats->collisions;
   ctx.log->impulses.push_back(Impulse{keyKind(e.key), i, other, e.normal, e.t});
-  for (int k = 0; k < change.count; ++k) {
-    const int p = change.particle[k];
-    InstantEvents& now = atInstant_[p];
-    // Its quota counts its first event and those close on its last, in time or in the distance it
-    // travelled since (kContinuousEventsPerParticle, kQuotaFreeTravel).
-    const double since = now.t < 0.0 ? 0.0 : e.t - now.t;
-    if (now.t < 0.0 || since < 1.0 / eventsPerParticle_ ||
-        since * motion_.rate(p).norm() < kQuotaFreeTravel * scene.radius[p])
-      ++events_[p];
-    at(state.v, p) += change.dv[k];
-    motion_.setRate(p, e.t, motion_.rate(p) + h * change.dv[k]);
-    now.count = now.t == e.t ? now.count + 1 : 1;
-    now.t = e.t;
-    changed_.push_back(p);
-  }
+  for (int k = 0; k < change.count; ++k) applyChange(scene, change.particle[k], change.dv[k], e.t, state, h);
+}
+
+void EventHandler::applyChange(const Scene& scene, int p, const Vec2& dv, double T, State& state, double h) {
+  InstantEvents& now = atInstant_[p];
+  // Its quota counts its first event and those close on its last, in time or in the distance it
+  // travelled since (kContinuousEventsPerParticle, kQuotaFreeTravel).
+  const double since = now.t < 0.0 ? 0.0 : T - now.t;
+  if (now.t < 0.0 || since < 1.0 / eventsPerParticle_ ||
+      since * motion_.rate(p).norm() < kQuotaFreeTravel * scene.radius[p])
+    ++events_[p];
+  at(state.v, p) += dv;
+  motion_.setRate(p, T, motion_.rate(p) + h * dv);
+  now.count = now.t == T ? now.count + 1 : 1;
+  now.t = T;
+  changed_.push_back(p);
 }
 
 // The trajectory file's polynomial log: every pair's polynomials over the predicted motion, in

@@ -4,11 +4,11 @@
 //   detect   every candidate pair over the whole step (broad phase, then the scale-invariant
 //            capsule query); each hit is an event (time, pair) in a min-heap;
 //   respond  events in time order: bring the pair's particles to the event time, apply one
-//            impulse against their current velocities (so simultaneous impacts are resolved one
-//            after another, Gauss-Seidel, never summed from stale velocities), bend their paths
-//            there, and query again only the pairs of the particles that changed, over the rest
-//            of the step; stale events (a particle changed since) are dropped; resting contact
-//            (closing at about the step's kick) takes COR 0 (kRestingBounceKicks);
+//            impulse against their current velocities (hits of one instant together, by
+//            Moreau's law, never summed from stale velocities: simultaneous_hits.cpp), bend their
+//            paths there, and query again only the pairs of the particles that changed, over the
+//            rest of the step; stale events (a particle changed since) are dropped; resting
+//            contact (closing at about the step's kick) takes COR 0 (kRestingBounceKicks);
 //   failsafe a particle that has taken its quota of impulse events in this step (a resting pile,
 //            a ball in a wedge: the Zeno cascades of event-driven methods) hands its contacts to
 //            the impact zones of contact_zones.h, which stop them approaching without a loop;
@@ -63,6 +63,14 @@ constexpr double kQuotaFreeTravel = 0.5;
 /// (their runs are the same to the bit with and without). The projection settles the rest.
 constexpr int kEventsPerInstant = 32;
 
+/// Hits closer in time than this fraction of the step are one instant, answered together
+/// (simultaneous_hits.cpp). Contact times carry rounding: two contacts that mirror each other
+/// meet at times apart by a few ulps once a response before them rounded differently on the two
+/// sides, and a tie broken so was answered one contact at a time, in pair order, which made the
+/// mirror images part at full size (the touching rack of tests/core/simultaneous_hits_test.cpp at
+/// COR 0.5: 0.025 m/s within a step). Far below what distinct contacts need: disks 1e-12 of their
+/// step's travel apart meet 1e-12 of a step apart.
+constexpr double kSimultaneousHits = 1e-12;
 
 class EventHandler final : public CollisionHandler {
  public:
@@ -120,8 +128,34 @@ class EventHandler final : public CollisionHandler {
   bool stepBoxesMeet(const Scene& scene, uint64_t key) const;
   /// Wakes every sleeper among the candidates of a particle that moved in the last step.
   void wakeNearMoving(const Scene& scene, StepStats& stats);
+  /// What an event asks for, read from the current motions and zones (assess).
+  enum class Route { Resolved, Zones, Impulse };
+  struct Assessment {
+    Route route = Route::Resolved;
+    double closing = 0;   ///< its closing rate (displacement per step along its normal, closingSpeed's)
+    double deepest = -1;  ///< the step fraction where a curving contact overlaps deepest (-1: not curving)
+  };
+  /// Where event e goes: resolved already (nothing to do), to the zones, or an impulse. With
+  /// `wake`, the sleepers it hits wake first (wakeIfHit), as its response needs; without, it is a
+  /// look that changes nothing (respondTogether's choice of the hits to solve together).
+  Assessment assess(const Scene& scene, const Event& e, double h, StepStats& stats, bool wake);
   /// Applies the event's impulse (or hands it to the zones); fills changed_.
   void respond(const Scene& scene, const Event& e, State& state, StepContext& ctx);
+  /// Applies event e's impulse (closing: its closing rate, assess's).
+  void impulse(const Scene& scene, const Event& e, double closing, State& state, StepContext& ctx);
+  /// Adds velocity change dv to particle p at step fraction T (state, path, quota, changed_).
+  void applyChange(const Scene& scene, int p, const Vec2& dv, double T, State& state, double h);
+  /// Event e is a hit, and its instant holds other hits: they are answered together, as one
+  /// round (simultaneous_hits.cpp). Returns false, having changed nothing but what assess(wake)
+  /// changes, when e is to be answered alone (respond); `taken` counts the other events it
+  /// answered.
+  bool respondTogether(const Scene& scene, const Event& e, State& state, StepContext& ctx, long& taken);
+  /// Answers the hits group_ names in tied_ together at step fraction T (simultaneous_hits.cpp);
+  /// false, nothing changed, when its exact solve cannot take them.
+  bool respondAsOne(const Scene& scene, double T, State& state, StepContext& ctx);
+  /// Whether event e, assessed as a, is a hit: an impulse closing harder than resting contact,
+  /// which bounces at the scene's COR.
+  bool isHit(const Scene& scene, const Event& e, const Assessment& a, double h) const;
   /// The sizes of what this step's forces gave the event's two sides along its normal, summed
   /// (m/s; sleepers.h's kicks; an obstacle's is 0, an edge's is its contact point's).
   void logReferencePolynomials(const Scene& scene, const State& start, const State& state, StepContext& ctx);
@@ -153,6 +187,9 @@ class EventHandler final : public CollisionHandler {
   std::vector<Worker> workers_;    ///< one per row range of the last detectAll (grown, never shrunk)
   std::vector<int> pendingZones_;  ///< zones contacts joined at the current instant, not solved yet
   std::vector<Event> found_;      ///< scratch: detectChanged's events before they join the heap
+  std::vector<Event> tied_;       ///< scratch: respondTogether's events of one instant (a hit's, then the rest)
+  std::vector<int> group_;        ///< scratch: respondTogether's hits (indices into tied_), by group
+  std::vector<int> bodies_;       ///< scratch: respondTogether's particles, in the order of its solve's bodies
   std::vector<int> events_;       ///< N: each particle's impulse events in this step that count toward its quota
   /// A particle's impulse events at the instant of its last one (kEventsPerInstant).
   struct InstantEvents {
