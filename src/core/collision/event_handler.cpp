@@ -66,11 +66,7 @@ Status EventHandler::handle(const Scene& scene, const State& start, State& state
     heap_.pop_back();
     if (!stale(scene, e)) {
       if (++processed > budget) return Status::error("contact events do not settle (internal error: budget exceeded)");
-      // Hits of this instant that share particles with e are answered with it (simultaneous_hits.cpp).
-      long taken = 0;
-      if (heap_.empty() || heap_.front().t > e.t + kSimultaneousHits || !respondTogether(scene, e, state, ctx, taken))
-        respond(scene, e, state, ctx);  // times itself: response, or failsafe for the zones
-      processed += taken;
+      processed += respond(scene, e, state, ctx);  // times itself: response, or failsafe for the zones
     }
     // Contacts that reach the zones at one instant join them before they are solved: a resting
     // pile's contacts all come at t = 0, and solving the zone once per contact cost hundreds of
@@ -246,16 +242,24 @@ EventHandler::Assessment EventHandler::assess(const Scene& scene, const Event& e
   return a;
 }
 
-void EventHandler::respond(const Scene& scene, const Event& e, State& state, StepContext& ctx) {
+long EventHandler::respond(const Scene& scene, const Event& e, State& state, StepContext& ctx) {
   const double h = ctx.dt;
   const Assessment a = assess(scene, e, h, *ctx.stats, /*wake=*/true);
   if (a.route == Route::Zones) {
     const StepTimer timer(ctx.timing, ctx.stats->failsafe);
     const int z = zones_.absorb(scene, motion_, candidates_, e.key, e.t, h, a.deepest);
     if (z >= 0) pendingZones_.push_back(z);
-    return;
+    return 0;
   }
-  if (a.route == Route::Impulse) impulse(scene, e, a.closing, state, ctx);
+  if (a.route != Route::Impulse) return 0;
+  // A hit with other events at its instant answers the instant's other hits with it, as one
+  // round (simultaneous_hits.cpp).
+  long taken = 0;
+  if (!heap_.empty() && heap_.front().t <= e.t + kSimultaneousHits && isHit(scene, e, a, h) &&
+      respondTogether(scene, e, state, ctx, taken))
+    return taken;
+  impulse(scene, e, a.closing, state, ctx);
+  return 0;
 }
 
 // One impulse against the current velocities (the paths' rates over h). A particle of a zone

@@ -139,16 +139,17 @@ class EventHandler final : public CollisionHandler {
   /// `wake`, the sleepers it hits wake first (wakeIfHit), as its response needs; without, it is a
   /// look that changes nothing (respondTogether's choice of the hits to solve together).
   Assessment assess(const Scene& scene, const Event& e, double h, StepStats& stats, bool wake);
-  /// Applies the event's impulse (or hands it to the zones); fills changed_.
-  void respond(const Scene& scene, const Event& e, State& state, StepContext& ctx);
+  /// Applies the event's impulse (or hands it to the zones, or answers the hits of its instant
+  /// with it); fills changed_. Returns how many other events it answered.
+  long respond(const Scene& scene, const Event& e, State& state, StepContext& ctx);
   /// Applies event e's impulse (closing: its closing rate, assess's).
   void impulse(const Scene& scene, const Event& e, double closing, State& state, StepContext& ctx);
   /// Adds velocity change dv to particle p at step fraction T (state, path, quota, changed_).
   void applyChange(const Scene& scene, int p, const Vec2& dv, double T, State& state, double h);
-  /// Event e is a hit, and its instant holds other hits: they are answered together, as one
-  /// round (simultaneous_hits.cpp). Returns false, having changed nothing but what assess(wake)
-  /// changes, when e is to be answered alone (respond); `taken` counts the other events it
-  /// answered.
+  /// Event e is a hit (its sleepers woken), and if its instant holds other hits they are answered
+  /// together, as one round (simultaneous_hits.cpp). Returns false, having changed nothing but
+  /// what assess(wake) changes, when e is to be answered alone; `taken` counts the other events
+  /// it answered.
   bool respondTogether(const Scene& scene, const Event& e, State& state, StepContext& ctx, long& taken);
   /// Answers the hits group_ names in tied_ together at step fraction T (simultaneous_hits.cpp);
   /// false, nothing changed, when its exact solve cannot take them.
