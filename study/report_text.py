@@ -24,8 +24,10 @@ contacts as README.md ("Contacts in the default mode") promises, and this run me
 - **Time order.** Within a step, contacts are resolved one at a time in the order they happen,
   each with one impulse against the current velocities, and the particles fly on from the contact
   time: {promise_order}
-- **No energy gained with COR ≤ 1.** Impulses that meet at one instant are applied one after
-  another, never summed from stale velocities, and the failsafe (projection of a zone's velocities,
+- **No energy gained with COR ≤ 1.** Hits that meet at one instant are answered together by
+  Moreau's law (the inelastic projection of their velocities, then the COR's share of its change
+  again), never summed from stale velocities, so that a symmetric impact stays symmetric whatever
+  the numbering; resting contacts are answered one after another; and the failsafe (projection of a zone's velocities,
   then the COR's restitution for hits where it adds no energy; warm starts that a solve leaves
   adding energy are scaled back) can only take energy away: {promise_energy}
 - **No tunnelling.** Every candidate pair is queried over the whole step, again after every
@@ -52,8 +54,9 @@ BILLIARD_SUMMED = """\
 BILLIARD_PENALTY = """\
 - **On the billiard break the hybrid handler's penalty layer changes the kinetic energy (about
   +{hybrid_gain}, at every dt)**; without it (k = 0) the hybrid keeps the energy to
-  {hybrid_k0_gain}, as `continuous-time` does: the default mode resolves the rack's simultaneous
-  contacts one after another (section 6), and what remains is the work of the penalty force,
+  {hybrid_k0_gain}, as `continuous-time` does: the default mode answers the rack's simultaneous
+  contacts together by Moreau's law, which keeps the energy at COR 1 (section 6), and what remains
+  is the work of the penalty force,
   which symplectic Euler does not integrate exactly."""
 
 ODDITY_SUMMED = """\
@@ -104,8 +107,10 @@ CONTACTS_WORDS = """\
   times the start (its positions move as if the new velocity had held for the whole step).
 - **Touching rack**: in the default mode the kinetic energy at the end differs from its start by
   {rack_default_energy}, momentum by {rack_default_momentum} and angular momentum by
-  {rack_default_angular} of their scales. `--compat`'s energy peaks at {rack_compat_gain} times
-  its start.
+  {rack_default_angular} of their scales. Its hits of one instant are answered together, so the
+  rack breaks symmetric about its axis, as it is built (`tests/core/simultaneous_hits_test.cpp`
+  checks every disk against its mirror image at every step). `--compat`'s energy peaks at
+  {rack_compat_gain} times its start.
 - **Corridor**: in the default mode the particle escapes in {corridor_default_escapes} of the
   runs, keeps its speed {corridor_default_speed} and bounces {corridor_default_bounces} times per
   step on average. With `--compat`, continuous-time {corridor_compat_ct}; the hybrid
