@@ -109,7 +109,6 @@ bool EventHandler::respondTogether(const Scene& scene, const Event& e, State& st
   for (size_t k = 1; k < tied_.size(); ++k)
     if (!stale(scene, tied_[k]) && isHit(scene, tied_[k], assess(scene, tied_[k], h, stats, false), h))
       std::swap(tied_[hits++], tied_[k]);
-  std::sort(tied_.begin() + static_cast<long>(hits), tied_.end(), Later{});  // any order: the heap sorts
   putBack(hits);
   if (hits == 1) return false;
   // The hits wake the sleepers they hit, as respond's do; if one is then no longer a hit (a
