@@ -21,8 +21,8 @@ Sections 1 to 5 run the default mode, the one every scene gets without `--compat
 the multi-contact problems in both. Without `--compat`, `continuous-time` and `hybrid` handle
 contacts as README.md ("Contacts in the default mode") promises, and this run measured:
 
-- **Time order.** Within a step, contacts are resolved one at a time in the order they happen,
-  each with one impulse against the current velocities, and the particles fly on from the contact
+- **Time order.** Within a step, contacts are resolved in the order they happen (hits of one
+  instant together), each with one impulse against the current velocities, and the particles fly on from the contact
   time: {promise_order}
 - **No energy gained with COR ≤ 1.** Hits that meet at one instant are answered together by
   Moreau's law (the inelastic projection of their velocities, then the COR's share of its change
@@ -76,7 +76,7 @@ CONTACTS_INTRO = """\
 ## 6. Multi-contact problems: the default mode next to --compat
 
 Seven scenes where several contacts meet in one step, each run with the default mode (contacts in
-time order, sequential impulses, the projection failsafe with the COR's restitution for hits; as its last resort a contact
+time order, one impulse per contact and the hits of one instant together, the projection failsafe with the COR's restitution for hits; as its last resort a contact
 still closing after its zone was solved again and again welds its particles and locks them
 against its obstacles for the rest of the step, and a zone touching nothing moves rigidly) and with `--compat` (the course's formulation: impulses of a pass summed, continuous-time
 in one pass, rigid impact zones that freeze against walls), for `continuous-time` and `hybrid`
