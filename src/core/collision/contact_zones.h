@@ -57,6 +57,11 @@
 
 namespace fosssim {
 
+/// The row of pair `key`, n . (relative velocity) >= 0, along unit normal n (from the particle
+/// toward the other object; alpha: an edge's parameter), over the pair's particle ids
+/// (zone_rows.cpp has its forms). The zones' rows and the simultaneous hits' rounds.
+math::ConstraintRow contactRowAlong(const Scene& scene, uint64_t key, const Vec2& n, double alpha);
+
 class ContactZones {
  public:
   /// No zones; storage for n particles.
@@ -150,6 +155,7 @@ class ContactZones {
   /// already, >= 0); returns whether a row was added.
   bool setRow(const Scene& scene, const StepMotion& motion, int zone, uint64_t key, double T, double deepest = -1.0);
   /// The row of `key` with its particles at position(p), and its normal (zero: none).
+  /// (contactRowAlong's with that normal.)
   template <class Position>
   math::ConstraintRow contactRow(const Scene& scene, uint64_t key, Position&& position, Vec2& normal) const;
   bool near(const Scene& scene, const StepMotion& motion, uint64_t key, double T) const;

@@ -50,36 +50,6 @@ namespace {
 /// instant, and each look took 6 to 8 events.) A symmetric impact of a few bodies has a few.
 constexpr size_t kTiedEventsLooked = 64;
 
-/// The event's row, n . (relative velocity) >= 0 with n its normal (from the particle toward the
-/// other object), over slots into `bodies` (added as they come).
-math::ConstraintRow hitRow(const Scene& scene, uint64_t key, const Vec2& n, double alpha, std::vector<int>& bodies) {
-  const auto slot = [&](int p) {
-    const auto at = std::find(bodies.begin(), bodies.end(), p);
-    if (at != bodies.end()) return static_cast<int>(at - bodies.begin());
-    bodies.push_back(p);
-    return static_cast<int>(bodies.size()) - 1;
-  };
-  const int i = keyParticle(key), other = keyOther(key);
-  math::ConstraintRow row;
-  row.count = 1;
-  row.body[0] = slot(i), row.coef[0] = -n;
-  switch (keyKind(key)) {
-    case PairKind::ParticleParticle:
-      row.count = 2;
-      row.body[1] = slot(other), row.coef[1] = n;
-      break;
-    case PairKind::ParticleEdge: {
-      const Edge& e = scene.edges[other];
-      row.count = 3;
-      row.body[1] = slot(e.i), row.coef[1] = (1.0 - alpha) * n;
-      row.body[2] = slot(e.j), row.coef[2] = alpha * n;
-      break;
-    }
-    case PairKind::ParticleHalfPlane: break;
-  }
-  return row;
-}
-
 }  // namespace
 
 bool EventHandler::isHit(const Scene& scene, const Event& e, const Assessment& a, double h) const {
@@ -137,6 +107,7 @@ bool EventHandler::respondTogether(const Scene& scene, const Event& e, State& st
         const int from = groupOf[b], into = groupOf[a];
         for (int& g : groupOf) g = g == from ? into : g;
       }
+  long answered = 0;  // hits answered in this round, e's included
   for (int first = 0; first < count; ++first) {
     if (groupOf[first] != first) continue;  // not a group's first hit
     group_.clear();
@@ -152,10 +123,12 @@ bool EventHandler::respondTogether(const Scene& scene, const Event& e, State& st
         heap_.push_back(tied_[group_[k]]);
         std::push_heap(heap_.begin(), heap_.end(), Later{});
       }
-      taken -= static_cast<long>(group_.size()) - 1;
+      answered += 1;
+    } else {
+      answered += static_cast<long>(group_.size());
     }
   }
-  taken += count - 1;
+  taken = answered - 1;  // e's own is the caller's
   return true;
 }
 
@@ -166,7 +139,16 @@ bool EventHandler::respondAsOne(const Scene& scene, double T, State& state, Step
   const double h = ctx.dt;
   bodies_.clear();
   std::vector<math::ConstraintRow> rows;
-  for (int k : group_) rows.push_back(hitRow(scene, tied_[k].key, tied_[k].normal, tied_[k].alpha, bodies_));
+  for (int k : group_) {
+    math::ConstraintRow row = contactRowAlong(scene, tied_[k].key, tied_[k].normal, tied_[k].alpha);
+    for (int m = 0; m < row.count; ++m) {  // particle ids to the solve's body slots, added as they come
+      const int p = row.body[m];
+      const auto at = std::find(bodies_.begin(), bodies_.end(), p);
+      row.body[m] = static_cast<int>(at - bodies_.begin());
+      if (at == bodies_.end()) bodies_.push_back(p);
+    }
+    rows.push_back(row);
+  }
   std::vector<double> inverseMass, impulses;
   std::vector<Vec2> v;
   for (int p : bodies_) {

@@ -143,35 +143,43 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
 //   particle-particle (i, j):       n·(v_j - v_i)                       >= 0
 //   particle-edge (p; a, b; alpha): n·((1 - alpha) v_a + alpha v_b - v_p) >= 0
 //   particle-half-plane (p):        -n·v_p = m^·v_p                     >= 0
-template <class Position>
-math::ConstraintRow ContactZones::contactRow(const Scene& scene, uint64_t key, Position&& position, Vec2& n) const {
+math::ConstraintRow contactRowAlong(const Scene& scene, uint64_t key, const Vec2& n, double alpha) {
   const int i = keyParticle(key), other = keyOther(key);
-  const Vec2 x = position(i);
   math::ConstraintRow row;
+  row.count = 1;
+  row.body[0] = i, row.coef[0] = -n;
   switch (keyKind(key)) {
     case PairKind::ParticleParticle:
-      n = unit(position(other) - x);
       row.count = 2;
-      row.body[0] = i, row.coef[0] = -n;
       row.body[1] = other, row.coef[1] = n;
       break;
     case PairKind::ParticleEdge: {
       const Edge& e = scene.edges[other];
-      double alpha = 0;
-      n = unit(math::segmentContactVector(x, position(e.i), position(e.j), &alpha));
       row.count = 3;
-      row.body[0] = i, row.coef[0] = -n;
       row.body[1] = e.i, row.coef[1] = (1.0 - alpha) * n;
       row.body[2] = e.j, row.coef[2] = alpha * n;
       break;
     }
-    case PairKind::ParticleHalfPlane:
-      n = -unit(scene.halfplanes[other].normal);
-      row.count = 1;
-      row.body[0] = i, row.coef[0] = -n;
-      break;
+    case PairKind::ParticleHalfPlane: break;
   }
   return row;
+}
+
+template <class Position>
+math::ConstraintRow ContactZones::contactRow(const Scene& scene, uint64_t key, Position&& position, Vec2& n) const {
+  const int i = keyParticle(key), other = keyOther(key);
+  const Vec2 x = position(i);
+  double alpha = 0;
+  switch (keyKind(key)) {
+    case PairKind::ParticleParticle: n = unit(position(other) - x); break;
+    case PairKind::ParticleEdge: {
+      const Edge& e = scene.edges[other];
+      n = unit(math::segmentContactVector(x, position(e.i), position(e.j), &alpha));
+      break;
+    }
+    case PairKind::ParticleHalfPlane: n = -unit(scene.halfplanes[other].normal); break;
+  }
+  return contactRowAlong(scene, key, n, alpha);
 }
 
 double ContactZones::kicksAlong(const Scene& scene, uint64_t key, const Vec2& n, double alpha) const {
