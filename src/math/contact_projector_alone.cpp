@@ -49,7 +49,7 @@ bool ContactProjector::solveAlone(int k, bool refreshing) {
   body_[b].forEachRow([&](int q) {
     const Row& rq = row_[q];
     Vec2 gq = Vec2::Zero();
-    double cq = 0;
+    double cq = -rq.r.bias;  // the row reads gq . v + cq >= 0
     bool mine = false;
     for (int m = 0; m < rq.r.count; ++m) {
       const int s = rq.r.body[m];

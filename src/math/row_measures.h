@@ -12,11 +12,12 @@
 
 namespace fosssim::math::measure {
 
-/// G_k v: the row's velocity (>= 0 when the contact does not close); v indexed by body.
+/// G_k v - b_k: the row's velocity past its bias (>= 0 when the contact does not close faster
+/// than its row allows); v indexed by body.
 inline double rowVelocity(const ConstraintRow& row, const Vec2* v) {
   double w = 0.0;
   for (int j = 0; j < row.count; ++j) w += row.coef[j].dot(v[row.body[j]]);
-  return w;
+  return w - row.bias;  // exact for bias 0: the rows of contacts read as they always did
 }
 inline double rowVelocity(const ConstraintRow& row, const std::vector<Vec2>& v) { return rowVelocity(row, v.data()); }
 

@@ -176,7 +176,8 @@ bool projectByEnumeration(const std::vector<double>& inverseMass, const std::vec
   for (int k = 0; k < m; ++k)
     for (int j = 0; j < rows[k].count; ++j) G.block<1, 2>(k, 2 * rows[k].body[j]) += rows[k].coef[j].transpose();
   const Square A = G * minv.asDiagonal() * G.transpose();
-  const RowVector b = G * vt;
+  RowVector b = G * vt;
+  for (int k = 0; k < m; ++k) b(k) -= rows[k].bias;  // the rows' velocities past their biases
 
   const double speed = measure::zoneSpeed(rows, v);
   if (speed == 0.0) return true;
@@ -211,7 +212,8 @@ bool projectByEnumeration(const std::vector<double>& inverseMass, const std::vec
     // different masses A's entries are huge and their products cancel to w, rounding to far more
     // than the slack (a disk 10^6 times lighter than its neighbour: 1e-10 of the speeds).
     const DimVector vs = vt + minv.asDiagonal() * (G.transpose() * lambda);
-    const RowVector w = G * vs;
+    RowVector w = G * vs;
+    for (int k = 0; k < m; ++k) w(k) -= rows[k].bias;
     bool feasible = true;
     for (int k = 0; k < m && feasible; ++k) feasible = w(k) >= -scale(k);
     if (!feasible) continue;

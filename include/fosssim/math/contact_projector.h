@@ -154,12 +154,13 @@ class ContactProjector : public ExactSolveLimits {
   bool sameBody(int a, int b) const { return slot_[a] == slot_[b]; }
   /// Row k's coefficient on body b: the sum of its entries on b's body (welded bodies share one).
   Vec2 coefficientOn(int k, int b) const;
-  /// Row k at the current velocities: G_k v (negative: its contact closes), and |G_k|.
+  /// Row k at the current velocities: G_k v - b_k (negative: its contact closes faster than the
+  /// row allows; ConstraintRow::bias), and |G_k|.
   double rowVelocity(int k) const {
     const ConstraintRow& r = row_[k].r;
     double w = 0.0;
     for (int m = 0; m < r.count; ++m) w += r.coef[m].dot(velocity_[r.body[m]]);
-    return w;
+    return w - r.bias;
   }
   double rowNorm(int k) const { return row_[k].norm; }
   /// Row k at the velocities its bodies had before the changes since the last takeChanged.
@@ -170,7 +171,7 @@ class ContactProjector : public ExactSolveLimits {
       const int s = r.body[m];
       w += r.coef[m].dot(changedFlag_[s] ? startVelocity_[s] : velocity_[s]);
     }
-    return w;
+    return w - r.bias;
   }
   /// Row k's A_kk = G_k M^-1 G_k^T: the row's velocity change per unit of its impulse.
   double rowDiagonal(int k) const { return row_[k].diag; }

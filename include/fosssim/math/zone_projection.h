@@ -36,15 +36,20 @@
 
 namespace fosssim::math {
 
-/// One non-penetration constraint: sum_k coef[k] . v[body[k]] >= 0 (a row of G), 1 to 3 bodies.
+/// One non-penetration constraint: sum_k coef[k] . v[body[k]] >= bias (a row of G), 1 to 3 bodies.
 /// particle-particle (i, j), n from i to j:   {i: -n, j: n}
 /// particle-edge (p; a, b; alpha):             {p: n, a: -(1 - alpha) n, b: -alpha n}
 /// particle-half-plane (p; n):                 {p: n}
 /// A body may appear twice in one row (its coefficients then add).
+/// bias <= 0 (a speed): how fast the row may close. 0 for a contact; a pair still apart by a gap
+/// may close it by the end of the step, -gap / (time left), and no faster (a speculative row).
+/// The set of allowed velocities still contains v = 0, so a projection onto it never adds
+/// kinetic energy (it is non-expansive about 0, as the projection onto the cone bias = 0 is).
 struct ConstraintRow {
   int count = 0;
   int body[3] = {0, 0, 0};
   Vec2 coef[3] = {Vec2::Zero(), Vec2::Zero(), Vec2::Zero()};
+  double bias = 0.0;
 };
 
 /// Relative stopping tolerance (see ProjectionSettings::tolerance). 1e-10 leaves six orders of
