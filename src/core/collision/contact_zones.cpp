@@ -49,6 +49,8 @@ void ContactZones::reset(int n) {
   requeried_.clear();
   broughtForward_.clear();
   curving_.clear();
+  speculative_.clear();
+  meets_.clear();
   rowKey_.clear();
   instant_ = -1;
   solvedRows_ = 0;
@@ -143,7 +145,11 @@ int ContactZones::absorb(const Scene& scene, const StepMotion& motion, const Pai
   const bool solved = known && *known < solvedRows_;
   int jammed = -1;       // a movable particle of a jammed contact (weldJammed)
   bool welded = false;   // whether that jam welded bodies that were apart
-  if (solved && !requeried_[*known]) {
+  // Nor one whose row let its pair, apart when the row was set, close the gap (contactRow's
+  // bias): that is the meeting the row deferred to, once.
+  const bool met = solved && meets_[*known];
+  if (met) meets_[*known] = 0;
+  if (solved && !requeried_[*known] && !met) {
     ZoneRecord& z = record_[root(zone)];
     // A bounce back at the instant of the one before has not moved the rattle on (a capsule
     // pinned between fixed disks, bouncing from one to the other at one instant, took 600 solves a

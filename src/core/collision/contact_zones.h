@@ -155,9 +155,13 @@ class ContactZones {
   /// already, >= 0); returns whether a row was added.
   bool setRow(const Scene& scene, const StepMotion& motion, int zone, uint64_t key, double T, double deepest = -1.0);
   /// The row of `key` with its particles at position(p), and its normal (zero: none).
-  /// (contactRowAlong's with that normal.)
+  /// (contactRowAlong's with that normal.) With timeLeft > 0 (seconds: the rest of the step), a
+  /// pair apart by more than kTouchingSlack of its radius sum may close its gap in that time and
+  /// no faster (ConstraintRow::bias): a zone's row for a neighbour it has not met yet must not stop
+  /// the pair before it meets (two disks stopped 2 cm apart moved on as one, for ever).
   template <class Position>
-  math::ConstraintRow contactRow(const Scene& scene, uint64_t key, Position&& position, Vec2& normal) const;
+  math::ConstraintRow contactRow(const Scene& scene, uint64_t key, Position&& position, Vec2& normal,
+                                 double timeLeft = 0.0) const;
   bool near(const Scene& scene, const StepMotion& motion, uint64_t key, double T) const;
   /// Rows set from here on are of instant T (the projector's beginInstant when T is new).
   void atInstant(double T) {
@@ -302,6 +306,12 @@ class ContactZones {
   /// Per projector row: its normal is where its contact would overlap deepest (a contact that
   /// deepens without closing: an edge rotating into a particle). See resolve.
   std::vector<char> curving_;
+  /// Per projector row: an inelastic row, which may close the gap of a pair still apart by the
+  /// step's end (contactRow's bias); a row that bounces or curves keeps bias 0.
+  std::vector<char> speculative_;
+  /// Per projector row: set with a gap to close (a bias), and its pair has not met yet: its first
+  /// event is that meeting, not a comeback (absorb does not count it toward a jam).
+  std::vector<char> meets_;
   std::vector<uint64_t> rowKey_;  ///< per projector row: its pair
   double instant_ = -1;           ///< the instant rows are set at now (atInstant); -1: none yet this step
   std::vector<int> queue_;                 ///< grow()'s worklist: particles whose near pairs are still to be looked at

@@ -1,0 +1,41 @@
+// A zone's rows for neighbours it has not met yet (src/core/collision/zone_rows.cpp, contactRow's
+// bias): a pair still apart closes its gap by the step's end instead of stopping where it is.
+// Expected positions and velocities come from momentum and the geometry, derived below.
+#include "contact_physics.h"
+
+namespace fosssim::testing {
+namespace {
+
+// Four disks of radius r and mass 1 in a row along x, without forces: disk 0 at u = 10 m/s
+// touches disk 1; disk 2 is g1 = 1 cm further, disk 3 g2 = 2 cm beyond it. At COR 0 the pairs
+// meet one after another and move on as one: 0 and 1 at u/2 from t = 0, close g1 by t = 2 ms,
+// 0-2 at u/3 close g2 by t = 8 ms, and all four at u/4 from there. With hybrid handling and
+// maxiters 1 the second contact (t = 2 ms) goes to the zones, whose solve finds the pair 2-3
+// near: a row stopping it there left the four moving together 2 cm apart for ever. Whatever the
+// method, momentum fixes the centre of mass, x_c(t) = x_c(0) + (u/4) t, and once the four touch
+// they sit at x_c + (2k - 3) r. By the end of the first step (10 ms) they touch; from the second
+// on they move at u/4.
+TEST(ZoneGaps, AChainPushedThroughAZoneEndsTouchingNotApart) {
+  const double r = 0.1, u = 10.0, g1 = 0.01, g2 = 0.02, h = 0.01;
+  for (const char* type : kEventTypes) {
+    SCOPED_TRACE(type);
+    TestScene s = contactScene(type, 0.0, h, Failsafe::Projection, /*maxIterations=*/1);
+    const double x[4] = {0.0, 2 * r, 4 * r + g1, 6 * r + g1 + g2};
+    for (int k = 0; k < 4; ++k) addBody(s, 1.0, Vec2(x[k], 0.0), Vec2(k == 0 ? u : 0.0, 0.0), r);
+    const double centre = (x[0] + x[1] + x[2] + x[3]) / 4;
+    auto sim = defaultModeSimulator(s);
+    for (int step = 1; step <= 5; ++step) {
+      ASSERT_TRUE(stepClean(*sim, s));
+      for (int k = 0; k < 4; ++k) {
+        const Vec2 want(centre + u / 4 * h * step + (2 * k - 3) * r, 0.0);
+        EXPECT_LT((at(s.state.x, k) - want).norm(), 1e-9) << "step " << step << ", disk " << k;
+        if (step >= 2) {
+          EXPECT_LT((at(s.state.v, k) - Vec2(u / 4, 0.0)).norm(), 1e-9) << "step " << step << ", disk " << k;
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace fosssim::testing
