@@ -6,7 +6,9 @@
 // particle that could touch one of them before the step ends (transitively). Each contact of a
 // zone is a row n·(relative velocity) >= 0, and the zone's velocities become the closest ones,
 // in the kinetic-energy norm, that satisfy every row (Harmon, Vouga, Tamstorf and Grinspun 2008):
-// contacts stop closing, tangential motion is kept, kinetic energy can only fall. Later contacts
+// contacts stop closing, tangential motion is kept, kinetic energy can only fall. A pair still
+// apart (by more than the step's kicks close) may close its gap by the step's end and no faster,
+// n·(relative velocity) >= -gap / (time left): it is not stopped before it meets (contactRow). Later contacts
 // of a zone's particles in the same step add rows (and particles) and the zone is solved again at
 // their time. All zones of a step share one math::ContactProjector, whose worklist makes a solve
 // cost what the new rows disturb, not the size of the zone (a disk landing on a pile of
