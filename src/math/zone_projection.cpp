@@ -19,7 +19,10 @@
 // 1/2 |v~ - v*|_M^2 >= 0. Stronger, and what makes a non-converged result safe: for ANY lambda,
 // |v|_M^2 = |v~|_M^2 + 2 f(lambda) (expand v = v~ + M^-1 G^T lambda; b has no contribution from
 // resting immovable bodies), and PGS starts at f(0) = 0 and never increases f. So every sweep's
-// v has at most the energy of v~.
+// v has at most the energy of v~. Rows with a bias b_k <= 0 (G_k v >= b_k: a pair still apart,
+// ConstraintRow::bias) keep this: their dual objective is f(lambda) = 1/2 lambda^T A lambda +
+// lambda^T (G v~ - b), so |v|_M^2 = |v~|_M^2 + 2 f(lambda) + 2 lambda^T b <= |v~|_M^2 + 2 f(lambda)
+// (lambda >= 0 >= b): K is no longer a cone, but it still holds v = 0.
 //
 // Why tangential motion is kept. v* - v~ = M^-1 G^T lambda: each body's velocity changes only
 // along the coefficients (contact normals) of its own rows. A disk sliding along a wall keeps its

@@ -11,10 +11,11 @@
 // what moves, not the size of the zone.
 //
 // Rows added after a solve project the velocities that solve left, not the original v~: the
-// result is a sequence of projections onto shrinking cones through v = 0, so kinetic energy
-// still never grows (each projection is an M-orthogonal projection onto a cone containing 0) and
-// tangential motion is still kept, but it is not the single projection of v~ onto the final
-// cone. A batch (all rows, then one solve) is exactly that single projection.
+// result is a sequence of projections onto shrinking cones through v = 0 (convex sets holding it,
+// when rows have biases: ConstraintRow::bias), so kinetic energy still never grows (each
+// projection is an M-orthogonal projection onto a convex set containing 0, and so no longer than
+// what it projects) and tangential motion is still kept, but it is not the single projection of
+// v~ onto the final set. A batch (all rows, then one solve) is exactly that single projection.
 #pragma once
 
 #include <vector>

@@ -158,9 +158,10 @@ class ContactZones {
   bool setRow(const Scene& scene, const StepMotion& motion, int zone, uint64_t key, double T, double deepest = -1.0);
   /// The row of `key` with its particles at position(p), and its normal (zero: none).
   /// (contactRowAlong's with that normal.) With timeLeft > 0 (seconds: the rest of the step), a
-  /// pair apart by more than kTouchingSlack of its radius sum may close its gap in that time and
-  /// no faster (ConstraintRow::bias): a zone's row for a neighbour it has not met yet must not stop
-  /// the pair before it meets (two disks stopped 2 cm apart moved on as one, for ever).
+  /// pair apart by more than kTouchingSlack of its radius sum and more than the step's kicks close
+  /// (kicksAlong over the step) may close its gap in that time and no faster (ConstraintRow::bias):
+  /// a zone's row for a neighbour it has not met yet must not stop the pair before it meets (four
+  /// disks pushed through a zone went on as one with the last 2 cm apart, for ever).
   template <class Position>
   math::ConstraintRow contactRow(const Scene& scene, uint64_t key, Position&& position, Vec2& normal,
                                  double timeLeft = 0.0) const;
