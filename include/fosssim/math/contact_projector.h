@@ -225,6 +225,8 @@ class ContactProjector : public ExactSolveLimits {
     restitution_[k] = hit;
     loadedRestitution_[k] = loaded;
   }
+  /// Whether row k has a coefficient of restitution, as a hit or when loaded (setRestitution).
+  bool restitutes(int k) const { return restitution_[k] > 0.0 || loadedRestitution_[k] > 0.0; }
   /// Moreau's restitution, after a solve: every row k with a coefficient e_k > 0 pushes again by
   /// e_k times the impulse it applied since the last takeChanged, along its normal, outside its
   /// multiplier (later solves cannot take it back as they can an impulse; the multiplier so far

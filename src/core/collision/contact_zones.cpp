@@ -49,7 +49,6 @@ void ContactZones::reset(int n) {
   requeried_.clear();
   broughtForward_.clear();
   curving_.clear();
-  speculative_.clear();
   meets_.clear();
   rowKey_.clear();
   instant_ = -1;

@@ -8,11 +8,11 @@
 // in the kinetic-energy norm, that satisfy every row (Harmon, Vouga, Tamstorf and Grinspun 2008):
 // contacts stop closing, tangential motion is kept, kinetic energy can only fall. A pair still
 // apart (by more than the step's kicks close) may close its gap by the step's end and no faster,
-// n·(relative velocity) >= -gap / (time left): it is not stopped before it meets (contactRow). Later contacts
-// of a zone's particles in the same step add rows (and particles) and the zone is solved again at
-// their time. All zones of a step share one math::ContactProjector, whose worklist makes a solve
-// cost what the new rows disturb, not the size of the zone (a disk landing on a pile of
-// thousands).
+// n·(relative velocity) >= -gap / (time left): it is not stopped before it meets (contactRow).
+// Later contacts of a zone's particles in the same step add rows (and particles) and the zone is
+// solved again at their time. All zones of a step share one math::ContactProjector, whose
+// worklist makes a solve cost what the new rows disturb, not the size of the zone (a disk landing
+// on a pile of thousands).
 //
 // Last resort, when a contact keeps closing although its zone was solved for it again and again
 // (more than kMaxZoneProjections times in a step: Gauss-Seidel stalls on a pile jammed against a
@@ -309,9 +309,6 @@ class ContactZones {
   /// Per projector row: its normal is where its contact would overlap deepest (a contact that
   /// deepens without closing: an edge rotating into a particle). See resolve.
   std::vector<char> curving_;
-  /// Per projector row: an inelastic row, which may close the gap of a pair still apart by the
-  /// step's end (contactRow's bias); a row that bounces or curves keeps bias 0.
-  std::vector<char> speculative_;
   /// Per projector row: set with a gap to close (a bias), and its pair has not met yet: its first
   /// event is that meeting, not a comeback (absorb does not count it toward a jam).
   std::vector<char> meets_;

@@ -122,7 +122,6 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
     projector_.setRestitution(*known, restitution, loaded);
     requeried_[*known] = 0;
     curving_[*known] = curving;
-    speculative_[*known] = speculative;
     unsolved_.push_back(key);
     return false;
   }
@@ -140,7 +139,6 @@ bool ContactZones::setRow(const Scene& scene, const StepMotion& motion, int zone
   requeried_.push_back(0);
   broughtForward_.push_back(0);
   curving_.push_back(curving);
-  speculative_.push_back(speculative);
   meets_.push_back(row.bias < 0.0);
   unsolved_.push_back(key);
   return true;
@@ -193,7 +191,7 @@ math::ConstraintRow ContactZones::contactRow(const Scene& scene, uint64_t key, P
     }
     case PairKind::ParticleHalfPlane: {
       const HalfPlane& h = scene.halfplanes[other];
-      n = -unit(h.normal), distance = (x - h.point).dot(unit(h.normal));
+      n = -unit(h.normal), distance = -(x - h.point).dot(n);
       break;
     }
   }
@@ -245,7 +243,8 @@ bool ContactZones::resting(const Scene& scene, uint64_t key, const Vec2& n, doub
 bool ContactZones::RowsAt::rowNow(int index, math::ConstraintRow& out) {
   if (zones_.curving_[index]) return false;  // its normal is where it deepens, on purpose
   Vec2 n = Vec2::Zero();
-  const double timeLeft = zones_.speculative_[index] ? (1.0 - T_) * zones_.h_ : 0.0;
+  // A row that bounces keeps bias 0 (setRow); a curving one returned above.
+  const double timeLeft = zones_.projector_.restitutes(index) ? 0.0 : (1.0 - T_) * zones_.h_;
   out = zones_.contactRow(scene_, zones_.rowKey_[index], [&](int p) { return motion_.at(p, T_); }, n, timeLeft);
   return n != Vec2::Zero();
 }
